@@ -1,0 +1,25 @@
+#include "skylit/spectrum/spectrum.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace skylit {
+
+std::vector<double> bin_averages(const Tabulated& table, const WavelengthGrid& grid) {
+  std::vector<double> out(static_cast<size_t>(grid.bins));
+  for (int i = 0; i < grid.bins; ++i)
+    out[static_cast<size_t>(i)] = table.average(grid.lower_nm(i), grid.lower_nm(i + 1));
+  return out;
+}
+
+Spectrum Spectrum::from_bins(const std::vector<double>& bin_values) {
+  if (bin_values.size() != static_cast<size_t>(kSpectralBins))
+    throw std::logic_error("Spectrum::from_bins: wrong number of bins");
+  Spectrum s;
+  for (int i = 0; i < kSpectralBins; ++i) s[i] = static_cast<float>(bin_values[static_cast<size_t>(i)]);
+  return s;
+}
+
+float Spectrum::max_value() const { return *std::max_element(values_.begin(), values_.end()); }
+
+}  // namespace skylit
