@@ -1,1 +1,32 @@
-int main() { return 0; }
+// skylit: the command-line program. It parses arguments and hands over to one
+// subcommand (commands.h). Exit status: 0 done, 2 a problem with the input (one line
+// on stderr names the file and the place), 1 an internal error.
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "exit_status.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "skylit: spectral renderer of outdoor scenes under real atmospheric conditions.\n"
+      "Images hold absolute luminance (cd/m²). Units: metres, degrees, nanometres."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "skylit 0.1.0");
+  const std::vector<skylit::cli::CommandRunner> commands = {
+      skylit::cli::add_render_command(app),
+  };
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int status = app.exit(e);
+    return status == 0 ? 0 : skylit::cli::kExitInputError;
+  }
+  return skylit::cli::run_with_exit_status([&] {
+    // Each runner returns -1 when its subcommand was not the one given.
+    for (const auto& run : commands)
+      if (const int status = run(); status >= 0) return status;
+    return 0;
+  });
+}

@@ -27,7 +27,7 @@ struct WavelengthGrid {
 // 380–780 nm: outside it the CIE 1931 observer's weights add less than 0.01 % to Y.
 inline constexpr double kVisibleMinNm = 380.0;
 inline constexpr double kVisibleMaxNm = 780.0;
-inline constexpr int kSpectralBins = 20;
+inline constexpr int kSpectralBins = 40;
 inline constexpr WavelengthGrid kGrid{kSpectralBins, kVisibleMinNm, kVisibleMaxNm};
 
 // Means of a tabulated function over each bin of a grid.

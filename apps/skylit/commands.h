@@ -1,0 +1,17 @@
+// The program's subcommands. Each registers itself on the CLI11 app and returns the
+// function that runs it once the arguments are parsed (exit status as exit_status.h).
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace skylit::cli {
+
+using CommandRunner = std::function<int()>;
+
+// `skylit render SCENE -o OUT ...`
+CommandRunner add_render_command(CLI::App& app);
+
+
+}  // namespace skylit::cli

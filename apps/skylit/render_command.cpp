@@ -1,0 +1,70 @@
+// `skylit render`: a scene file into one or more images.
+#include <unistd.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "progress_bar.h"
+#include "skylit/io/image.h"
+#include "skylit/io/scene_loader.h"
+#include "skylit/render/renderer.h"
+#include "skylit/util/error.h"
+
+namespace skylit::cli {
+
+namespace {
+
+struct RenderArguments {
+  std::string scene_file;
+  std::vector<std::string> outputs;
+  std::vector<std::string> overrides;
+  int threads = 0;
+  bool quiet = false;
+};
+
+int run_render(const RenderArguments& args) {
+  // Check every output's format and folder before the work, so a typo costs nothing.
+  for (const std::string& out : args.outputs) {
+    image_format_from_path(out);
+    const std::filesystem::path dir = std::filesystem::path(out).parent_path();
+    if (!dir.empty() && !std::filesystem::is_directory(dir))
+      throw InputError(out + ": the folder " + dir.string() + " does not exist");
+  }
+  const Scene scene = load_scene(args.scene_file, args.overrides);
+  const Renderer renderer(scene);
+  ProgressBar progress(!args.quiet && isatty(STDERR_FILENO) != 0);
+  RenderOptions options;
+  options.threads = args.threads;
+  options.on_progress = [&progress](int done, int total) { progress.update(done, total); };
+  const XyzImage image = renderer.render(options);
+  DisplayOptions display;
+  display.exposure_ev = scene.render.exposure_ev;
+  for (const std::string& out : args.outputs) write_image(image, out, display);
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner add_render_command(CLI::App& app) {
+  auto args = std::make_shared<RenderArguments>();
+  CLI::App* render = app.add_subcommand("render", "Render a scene file into one or more images.");
+  render->add_option("scene", args->scene_file, "Scene file (JSON; see docs/scene-format.md)")->required();
+  render->add_option("-o,--output", args->outputs,
+                     "Output image; repeat for several. By extension: .exr and .pfm hold linear RGB "
+                     "(sRGB primaries) scaled so 0.2126R+0.7152G+0.0722B is luminance in cd/m² "
+                     "(EXR adds a Y channel in cd/m²); .hdr is Radiance RGBE (luminance = 179 × "
+                     "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image")
+      ->required();
+  render->add_option("--set", args->overrides,
+                     "Override a scene value: PATH=VALUE, e.g. --set sun.altitude_deg=4 "
+                     "--set render.width=640 (degrees, metres and pixels as in the scene file)");
+  render->add_option("--threads", args->threads, "Worker threads (0: all cores); the image does not depend on it")
+      ->check(CLI::Range(0, 1024));
+  render->add_flag("-q,--quiet", args->quiet, "No progress bar");
+  return [render, args] { return render->parsed() ? run_render(*args) : -1; };
+}
+
+}  // namespace skylit::cli

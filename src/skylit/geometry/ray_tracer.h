@@ -1,0 +1,75 @@
+// Ray queries against the scene's triangle meshes: nearest hit for camera and
+// bounce rays, any hit for shadow and sky-occlusion rays. Embree does the work
+// behind this interface, so no Embree header is seen by users of the library.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+
+#include "skylit/geometry/triangle_mesh.h"
+#include "skylit/geometry/vec3.h"
+
+namespace skylit {
+
+// A ray segment origin + t direction for t in [t_min, t_max]. The direction need
+// not be unit; t is then in units of its length. Embree traces in single
+// precision, so keep t_min a little above 0 for rays leaving a surface. A ray with
+// a non-finite origin or direction, or t_min > t_max, hits nothing.
+struct Ray {
+  Vec3 origin;
+  Vec3 direction;
+  double t_min = 0;
+  double t_max = std::numeric_limits<double>::infinity();
+};
+
+struct Hit {
+  double t;
+  // Unit normal of the triangle in world space, cross(v1 - v0, v2 - v0) normalised
+  // (counter-clockwise side); not flipped toward the ray.
+  Vec3 geometric_normal;
+  uint32_t mesh_id;   // as returned by RayTracer::add_mesh
+  uint32_t triangle;  // index into that mesh's triangles
+  // Barycentrics: the hit point is (1 - u - v) v0 + u v1 + v v2.
+  float u, v;
+};
+
+class RayTracer {
+ public:
+  // Throws std::runtime_error if Embree cannot start.
+  RayTracer();
+  ~RayTracer();
+  RayTracer(const RayTracer&) = delete;
+  RayTracer& operator=(const RayTracer&) = delete;
+  RayTracer(RayTracer&&) noexcept;
+  RayTracer& operator=(RayTracer&&) noexcept;
+
+  // Adds a mesh (world coordinates) and returns its id: 0, 1, 2, ... in call order.
+  // An empty mesh gets an id and contributes nothing. Degenerate triangles are
+  // kept (so triangle indices match the mesh) and are never hit. Throws
+  // std::invalid_argument for an index out of range or a coordinate that is not a
+  // finite single-precision number, std::runtime_error if Embree fails.
+  uint32_t add_mesh(const TriangleMesh& mesh);
+
+  // Builds the acceleration structure. After this, intersect / occluded may be
+  // called from any number of threads at once. Adding meshes afterwards needs
+  // another commit before the next query.
+  void commit();
+
+  // Nearest hit with t in [t_min, t_max]. Throws std::logic_error before commit().
+  std::optional<Hit> intersect(const Ray& ray) const;
+  // Whether anything is hit with t in [t_min, t_max]; cheaper than intersect.
+  // Throws std::logic_error before commit().
+  bool occluded(const Ray& ray) const;
+
+  size_t triangle_count() const;
+  size_t mesh_count() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace skylit

@@ -1,0 +1,35 @@
+// An indexed triangle mesh in world (or object) coordinates: the form every
+// geometry source (primitives, OBJ, glTF) is turned into before ray tracing.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "skylit/geometry/vec3.h"
+
+namespace skylit {
+
+struct TriangleMesh {
+  std::vector<Vec3> vertices;
+  // Indices into `vertices`; counter-clockwise seen from the outside (the side the
+  // geometric normal cross(v1 - v0, v2 - v0) points to).
+  std::vector<std::array<uint32_t, 3>> triangles;
+
+  bool empty() const { return triangles.empty(); }
+
+  // Adds `other`'s vertices and triangles, re-indexing its triangles.
+  void append(const TriangleMesh& other) {
+    // Indices are 32-bit because Embree takes 32-bit indices; refuse to wrap.
+    if (vertices.size() + other.vertices.size() > std::numeric_limits<uint32_t>::max())
+      throw std::length_error("TriangleMesh::append: more than 2^32-1 vertices");
+    const auto offset = static_cast<uint32_t>(vertices.size());
+    vertices.insert(vertices.end(), other.vertices.begin(), other.vertices.end());
+    triangles.reserve(triangles.size() + other.triangles.size());
+    for (const auto& t : other.triangles) triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+};
+
+}  // namespace skylit

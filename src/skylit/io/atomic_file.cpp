@@ -1,0 +1,91 @@
+// AtomicFile (atomic_file.h): temporary file beside the target, write, fsync, rename.
+// POSIX calls rather than iostreams because we need O_EXCL (never clobber someone
+// else's file that happens to have the temporary's name), errno for messages that say
+// why, and fsync so a crash after the rename cannot leave an empty file behind.
+#include "skylit/io/atomic_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include "skylit/util/error.h"
+
+namespace skylit {
+namespace {
+
+std::string quoted(const std::filesystem::path& p) {
+  std::string s = p.string();  // see the temporary's name below for why not '"' + s + '"'
+  s.insert(s.begin(), '"');
+  s.push_back('"');
+  return s;
+}
+
+[[noreturn]] void fail(const std::filesystem::path& target, const std::string& why) {
+  throw InputError("cannot write " + quoted(target) + ": " + why);
+}
+
+std::filesystem::path folder_of(const std::filesystem::path& target) {
+  return target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+}
+
+// Writes all bytes to fd, retrying short writes and signals; returns errno or 0.
+int write_all(int fd, std::span<const uint8_t> bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  const std::filesystem::path folder = folder_of(target_);
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec))
+    fail(target_, "folder " + quoted(folder) + " does not exist");
+  if (target_.filename().empty()) fail(target_, "the path names a folder, not a file");
+  // pid and a per-process counter keep concurrent writers (threads or processes) apart.
+  static std::atomic<unsigned> counter{0};
+  // Appended piece by piece: "." + std::string trips GCC 12's false -Wrestrict warning.
+  std::string name(1, '.');  // hidden, so a listing of the folder does not show it
+  name += target_.filename().string();
+  name += '.';
+  name += std::to_string(::getpid());
+  name += '-';
+  name += std::to_string(counter++);
+  name += ".tmp";
+  temporary_ = folder / name;
+  const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) fail(target_, "cannot create a file in folder " + quoted(folder) + ": " +
+                                std::strerror(errno));
+  ::close(fd);
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) ::unlink(temporary_.c_str());
+}
+
+void AtomicFile::commit(std::span<const uint8_t> bytes) {
+  const int fd = ::open(temporary_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) fail(target_, std::string("cannot reopen the temporary file: ") + std::strerror(errno));
+  int error = write_all(fd, bytes);
+  if (error == 0 && ::fsync(fd) != 0) error = errno;
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) fail(target_, std::strerror(error));
+  if (std::rename(temporary_.c_str(), target_.c_str()) != 0) fail(target_, std::strerror(errno));
+  committed_ = true;
+}
+
+}  // namespace skylit

@@ -1,0 +1,35 @@
+// Writing a file so that readers only ever see the old file or the complete new one:
+// the bytes go to a temporary file in the target's own folder (so the final rename
+// stays on one file system and is atomic, POSIX rename(2)), are flushed to disk, and
+// the temporary is renamed over the target. If anything fails, or the AtomicFile is
+// destroyed uncommitted (an exception on the way), the temporary is removed.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+
+namespace skylit {
+
+class AtomicFile {
+ public:
+  // Creates the temporary ".<name>.<pid>-<n>.tmp" beside `target`. InputError naming
+  // the target if its folder is missing or not writable.
+  explicit AtomicFile(std::filesystem::path target);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  const std::filesystem::path& target() const { return target_; }
+  const std::filesystem::path& temporary() const { return temporary_; }
+
+  // Writes all of `bytes` to the temporary, flushes it to disk and renames it into
+  // place. InputError naming the target if any step fails (e.g. disk full).
+  void commit(std::span<const uint8_t> bytes);
+
+ private:
+  std::filesystem::path target_, temporary_;
+  bool committed_ = false;
+};
+
+}  // namespace skylit

@@ -1,0 +1,18 @@
+// The readers of each part of a scene file, used by scene_loader.cpp. Each takes the
+// JSON value of its part and throws InputError naming the path of what is wrong.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "skylit/io/json_reader.h"
+#include "skylit/render/scene.h"
+
+namespace skylit {
+
+std::vector<NamedMaterial> read_materials(const JsonReader& materials);
+Spectrum read_reflectance(const JsonReader& reflectance);
+std::vector<SceneObject> read_objects(const JsonReader& objects, const std::vector<NamedMaterial>& materials,
+                                      const std::filesystem::path& base_dir);
+
+}  // namespace skylit

@@ -1,0 +1,52 @@
+// A scene as the renderer sees it: everything in SI units in the world frame
+// (x east, y north, z up, metres), already validated by the loader (io/scene_loader.h).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "skylit/geometry/triangle_mesh.h"
+#include "skylit/geometry/vec3.h"
+#include "skylit/material/material.h"
+
+namespace skylit {
+
+// A pinhole camera.
+struct Camera {
+  Vec3 position;
+  Vec3 look_at;
+  Vec3 up{0, 0, 1};
+  double vertical_fov_deg = 50.0;
+};
+
+// Where the sun stands, seen from the site.
+struct Sun {
+  double altitude_deg = 45.0;  // above the horizon
+  double azimuth_deg = 180.0;  // clockwise from north
+};
+
+struct RenderSettings {
+  int width = 1280;
+  int height = 720;
+  std::optional<double> exposure_ev;  // empty: automatic from the log-average luminance
+  int samples_per_axis = 2;           // a regular grid of n × n samples per pixel
+};
+
+struct SceneObject {
+  std::string name;
+  TriangleMesh mesh;        // in world coordinates
+  uint32_t material_index;  // into Scene::materials
+};
+
+struct Scene {
+  Camera camera;
+  Sun sun;
+  std::vector<NamedMaterial> materials;
+  std::vector<SceneObject> objects;
+  RenderSettings render;
+};
+
+}  // namespace skylit

@@ -1,0 +1,105 @@
+// The program as a user runs it: exit statuses, one-line errors, no partial output,
+// and images that do not depend on the number of threads.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "../../apps/skylit/exit_status.h"
+#include "../test_support.h"
+
+namespace skylit {
+namespace {
+
+using testing::run_skylit;
+using testing::TempDir;
+
+std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+TEST(Cli, RendersEveryFormat) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json());
+  const auto r = run_skylit("render " + quoted(scene) + " --quiet -o " + quoted(dir.path() / "a.png") + " -o " +
+                            quoted(dir.path() / "a.exr") + " -o " + quoted(dir.path() / "a.pfm") + " -o " +
+                            quoted(dir.path() / "a.hdr"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  for (const char* name : {"a.png", "a.exr", "a.pfm", "a.hdr"})
+    EXPECT_GT(std::filesystem::file_size(dir.path() / name), 100u) << name;
+}
+
+TEST(Cli, OutputDoesNotDependOnThreadCount) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(97, 61));  // tiles cut at odd edges
+  const auto one = run_skylit("render " + quoted(scene) + " --threads 1 -o " + quoted(dir.path() / "one.pfm"));
+  const auto two = run_skylit("render " + quoted(scene) + " --threads 2 -o " + quoted(dir.path() / "two.pfm"));
+  const auto many = run_skylit("render " + quoted(scene) + " --threads 7 -o " + quoted(dir.path() / "many.pfm"));
+  ASSERT_EQ(one.exit_status, 0) << one.output;
+  ASSERT_EQ(two.exit_status, 0) << two.output;
+  ASSERT_EQ(many.exit_status, 0) << many.output;
+  const std::string a = testing::read_file(dir.path() / "one.pfm");
+  EXPECT_GT(a.size(), 97u * 61u * 12u);
+  EXPECT_EQ(a, testing::read_file(dir.path() / "two.pfm"));
+  EXPECT_EQ(a, testing::read_file(dir.path() / "many.pfm"));
+}
+
+TEST(Cli, BadSceneExitsTwoWithOneLineAndNoOutput) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", "{\"camera\": [1,2,\n");
+  const auto out = dir.path() / "x.png";
+  const auto r = run_skylit("render " + quoted(scene) + " -o " + quoted(out));
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.output.find("scene.json:2:1: invalid JSON"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), std::filesystem::directory_iterator()), 1);
+}
+
+TEST(Cli, OverrideThatBreaksTheSceneExitsTwo) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json());
+  const auto r = run_skylit("render " + quoted(scene) + " --set render.width=-3 -o " + quoted(dir.path() / "x.png"));
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.output.find("render.width: expected an integer from 1 to 16384"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.png"));
+}
+
+TEST(Cli, UnknownOutputFormatExitsTwoBeforeRendering) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json());
+  const auto r = run_skylit("render " + quoted(scene) + " -o " + quoted(dir.path() / "x.jpg"));
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.output.find("x.jpg"), std::string::npos) << r.output;
+}
+
+TEST(Cli, MissingOutputFolderExitsTwo) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json());
+  const auto r = run_skylit("render " + quoted(scene) + " -o " + quoted(dir.path() / "no_dir" / "x.png"));
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadArgumentsExitTwoAndHelpExitsZero) {
+  EXPECT_EQ(run_skylit("render").exit_status, 2);
+  EXPECT_EQ(run_skylit("render x.json -o a.png --threads lots").exit_status, 2);
+  const auto help = run_skylit("render --help");
+  EXPECT_EQ(help.exit_status, 0);
+  EXPECT_NE(help.output.find("cd/m"), std::string::npos) << help.output;
+  EXPECT_NE(help.output.find("--set"), std::string::npos) << help.output;
+}
+
+TEST(ExitStatus, InputErrorsAreTwoAndInternalErrorsOne) {
+  std::FILE* sink = std::tmpfile();
+  EXPECT_EQ(cli::run_with_exit_status([]() -> int { throw InputError("scene.json: x: bad"); }, sink), 2);
+  EXPECT_EQ(cli::run_with_exit_status([]() -> int { throw std::logic_error("bug"); }, sink), 1);
+  EXPECT_EQ(cli::run_with_exit_status([] { return 0; }, sink), 0);
+  std::rewind(sink);
+  char line[200] = {};
+  ASSERT_NE(std::fgets(line, sizeof line, sink), nullptr);
+  EXPECT_STREQ(line, "skylit: scene.json: x: bad\n");
+  ASSERT_NE(std::fgets(line, sizeof line, sink), nullptr);
+  EXPECT_STREQ(line, "skylit: internal error: bug\n");
+  std::fclose(sink);
+}
+
+}  // namespace
+}  // namespace skylit

@@ -1,0 +1,148 @@
+// Scene files: valid ones load with the values they state; every kind of mistake a
+// user can make is an InputError whose one line names the file and the place.
+#include "skylit/io/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../test_support.h"
+#include "skylit/util/error.h"
+
+namespace skylit {
+namespace {
+
+using testing::TempDir;
+
+// The message of the InputError that loading `text` throws ("" if none).
+std::string load_error(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  TempDir dir;
+  const auto file = dir.write("scene.json", text);
+  try {
+    load_scene(file, overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(SceneLoader, LoadsTheValuesItStates) {
+  TempDir dir;
+  const Scene scene = load_scene(dir.write("scene.json", testing::small_scene_json(48, 32)));
+  EXPECT_EQ(scene.render.width, 48);
+  EXPECT_EQ(scene.render.height, 32);
+  EXPECT_DOUBLE_EQ(scene.sun.altitude_deg, 40);
+  EXPECT_DOUBLE_EQ(scene.camera.vertical_fov_deg, 60);
+  ASSERT_EQ(scene.objects.size(), 2u);
+  EXPECT_EQ(scene.materials[scene.objects[1].material_index].name, "red");
+  EXPECT_EQ(scene.objects[1].mesh.triangles.size(), 12u);
+  EXPECT_FALSE(scene.render.exposure_ev.has_value());
+}
+
+TEST(SceneLoader, FocalLengthGivesTheFieldOfView) {
+  TempDir dir;
+  const std::string text = replace(testing::small_scene_json(), "\"vertical_fov_deg\": 60",
+                                   "\"focal_length_mm\": 35, \"sensor_height_mm\": 24");
+  const Scene scene = load_scene(dir.write("scene.json", text));
+  // 2·atan(12/35) = 37.849°
+  EXPECT_NEAR(scene.camera.vertical_fov_deg, 2 * std::atan(12.0 / 35.0) * 180 / 3.14159265358979, 1e-9);
+}
+
+TEST(SceneLoader, SyntaxErrorNamesFileLineAndColumn) {
+  // Line 3 lacks the comma after its value; the parser stops at the end of the next
+  // token, the key "x" on line 4, columns 3 to 5.
+  const std::string msg = load_error("{\n  \"camera\": {},\n  \"sun\": {}\n  \"x\": 1\n}\n");
+  EXPECT_NE(msg.find("scene.json:4:5: invalid JSON"), std::string::npos) << msg;
+}
+
+TEST(SceneLoader, UnknownKeyIsNamedWithItsPath) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "\"vertical_fov_deg\"", "\"fov\""));
+  EXPECT_NE(msg.find("scene.json: camera.fov: unknown key"), std::string::npos) << msg;
+}
+
+TEST(SceneLoader, UnknownTopLevelKeyIsAnError) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "\"render\"", "\"rendr\""));
+  EXPECT_NE(msg.find("rendr: unknown key"), std::string::npos) << msg;
+}
+
+TEST(SceneLoader, WrongTypeNamesPathAndExpectation) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "[0, -20, 2]", "[0, \"a\", 2]"));
+  EXPECT_NE(msg.find("camera.position[1]: expected a number, found \"a\""), std::string::npos) << msg;
+}
+
+TEST(SceneLoader, OutOfRangeValueIsRejected) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "\"altitude_deg\": 40", "\"altitude_deg\": 95"));
+  EXPECT_NE(msg.find("sun.altitude_deg: expected a number from -90 to 90"), std::string::npos) << msg;
+}
+
+TEST(SceneLoader, MissingRequiredPartIsNamed) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "\"sun\"", "\"_sun\""));
+  EXPECT_NE(msg.find("_sun: unknown key"), std::string::npos) << msg;
+  const std::string msg2 = load_error(R"({"camera": {"position": [0,0,1], "look_at": [0,1,1]}})");
+  EXPECT_NE(msg2.find("missing required key 'sun'"), std::string::npos) << msg2;
+}
+
+TEST(SceneLoader, UnknownMaterialListsTheKnownOnes) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "\"material\": \"red\"", "\"material\": \"bricks\""));
+  EXPECT_NE(msg.find("objects[1].material: unknown material 'bricks'; known materials: red, white"),
+            std::string::npos) << msg;
+}
+
+TEST(SceneLoader, MissingMeshFileNamesItsPath) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "{\"type\": \"plane\", \"material\": \"white\", \"size_m\": 200}",
+                                             "{\"type\": \"mesh\", \"material\": \"white\", \"file\": \"no_such_tower.obj\"}"));
+  EXPECT_NE(msg.find("no_such_tower.obj"), std::string::npos) << msg;
+}
+
+TEST(SceneLoader, BadReflectanceIsRejected) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "\"reflectance\": 0.8", "\"reflectance\": 1.5"));
+  EXPECT_NE(msg.find("materials.white.reflectance: expected a number from 0 to 1"), std::string::npos) << msg;
+  const std::string msg2 = load_error(replace(testing::small_scene_json(), "\"reflectance\": 0.8", "\"reflectance\": \"#12345\""));
+  EXPECT_NE(msg2.find("expected a colour '#rrggbb'"), std::string::npos) << msg2;
+}
+
+TEST(SceneLoader, DegenerateCameraIsRejected) {
+  const std::string msg = load_error(replace(testing::small_scene_json(), "[0, 0, 3], \"vertical", "[0, -20, 2], \"vertical"));
+  EXPECT_NE(msg.find("camera.look_at: look_at must differ from position"), std::string::npos) << msg;
+}
+
+TEST(SceneLoader, OverridesChangeValuesBeforeValidation) {
+  TempDir dir;
+  const auto file = dir.write("scene.json", testing::small_scene_json());
+  const Scene scene = load_scene(file, {"sun.altitude_deg=4", "render.width=640", "objects.1.material=white",
+                                        "render.exposure_ev=2.5"});
+  EXPECT_DOUBLE_EQ(scene.sun.altitude_deg, 4);
+  EXPECT_EQ(scene.render.width, 640);
+  EXPECT_EQ(scene.materials[scene.objects[1].material_index].name, "white");
+  EXPECT_EQ(scene.render.exposure_ev, 2.5);
+}
+
+TEST(SceneLoader, BadOverridesAreErrors) {
+  EXPECT_NE(load_error(testing::small_scene_json(), {"sun.altitude_deg"}).find("--set sun.altitude_deg: expected path=value"),
+            std::string::npos);
+  EXPECT_NE(load_error(testing::small_scene_json(), {"objects.7.material=white"}).find("not an index of an array of 2"),
+            std::string::npos);
+  // An override is validated like the file's own values.
+  EXPECT_NE(load_error(testing::small_scene_json(), {"sun.altitude_deg=high"}).find("sun.altitude_deg: expected a number"),
+            std::string::npos);
+  EXPECT_NE(load_error(testing::small_scene_json(), {"sun.elevation=3"}).find("sun.elevation: unknown key"),
+            std::string::npos);
+}
+
+TEST(SceneLoader, UnreadableFileIsNamed) {
+  try {
+    load_scene("/nonexistent/scene.json");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.json"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace skylit
