@@ -13,5 +13,7 @@ using CommandRunner = std::function<int()>;
 // `skylit render SCENE -o OUT ...`
 CommandRunner add_render_command(CLI::App& app);
 
+// `skylit sun --lat DEG --lon DEG --time ISO8601 [--json]`
+CommandRunner add_sun_command(CLI::App& app);
 
 }  // namespace skylit::cli

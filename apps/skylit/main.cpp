@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "skylit 0.1.0");
   const std::vector<skylit::cli::CommandRunner> commands = {
       skylit::cli::add_render_command(app),
+      skylit::cli::add_sun_command(app),
   };
   try {
     app.parse(argc, argv);

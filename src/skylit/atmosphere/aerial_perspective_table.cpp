@@ -1,0 +1,52 @@
+#include "skylit/atmosphere/aerial_perspective_table.h"
+
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+namespace skylit {
+
+namespace {
+// Distance of slice k: quadratic, so that near surfaces (tens of metres to a few km,
+// most of a street scene) get most of the slices. Slice 0 is the observer itself.
+double slice_distance(int k) {
+  const double u = static_cast<double>(k) / (AerialPerspectiveTable::kDistanceSize - 1);
+  return AerialPerspectiveTable::kMaxDistanceM * u * u;
+}
+}  // namespace
+
+AerialPerspectiveTable::AerialPerspectiveTable(const ScatteringIntegrator& integrator, const Spectrum& sun_irradiance,
+                                               double observer_radius_m, double ground_radius_m,
+                                               double sun_elevation_rad)
+    : mapping_(observer_radius_m, ground_radius_m),
+      in_scattered_(kAzimuthSize, kElevationSize, kDistanceSize),
+      transmittance_(kAzimuthSize, kElevationSize, kDistanceSize) {
+  std::vector<double> stops;
+  for (int k = 1; k < kDistanceSize; ++k) stops.push_back(slice_distance(k));
+  const double mu_sun = std::sin(sun_elevation_rad), cos_sun = std::cos(sun_elevation_rad);
+  tbb::parallel_for(0, kElevationSize, [&](int j) {
+    for (int i = 0; i < kAzimuthSize; ++i) {
+      const RelativeDirection d =
+          mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1), static_cast<double>(j) / (kElevationSize - 1));
+      const double mu = std::sin(d.elevation_rad);
+      const double nu = mu * mu_sun + std::cos(d.elevation_rad) * cos_sun * std::cos(d.azimuth_from_sun_rad);
+      const std::vector<ScatteredLight> light = integrator.up_to(observer_radius_m, mu, mu_sun, nu, stops);
+      in_scattered_.at(i, j, 0) = Spectrum(0.0f);
+      transmittance_.at(i, j, 0) = Spectrum(1.0f);
+      for (int k = 1; k < kDistanceSize; ++k) {
+        in_scattered_.at(i, j, k) = light[static_cast<size_t>(k - 1)].radiance * sun_irradiance;
+        transmittance_.at(i, j, k) = light[static_cast<size_t>(k - 1)].transmittance;
+      }
+    }
+  });
+}
+
+ScatteredLight AerialPerspectiveTable::at(const RelativeDirection& direction, double distance_m) const {
+  double u_azimuth, u_elevation;
+  mapping_.to_unit(direction, u_azimuth, u_elevation);
+  const double fx = u_azimuth * (kAzimuthSize - 1), fy = u_elevation * (kElevationSize - 1);
+  const double fz = std::sqrt(std::clamp(distance_m / kMaxDistanceM, 0.0, 1.0)) * (kDistanceSize - 1);
+  return {in_scattered_.interpolate(fx, fy, fz), transmittance_.interpolate(fx, fy, fz)};
+}
+
+}  // namespace skylit

@@ -1,0 +1,72 @@
+#include "skylit/atmosphere/atmosphere.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "skylit/atmosphere/sun_disc.h"
+
+namespace skylit {
+
+namespace {
+// Surfaces within this height of the ground share the ground's sky; an observer higher
+// up gets a sky-view table of its own.
+constexpr double kGroundLayerM = 50.0;
+}  // namespace
+
+Atmosphere::Atmosphere(const AtmosphereSettings& settings, const SpectralBands& bands)
+    : settings_(settings),
+      bands_(bands),
+      medium_(settings, bands),
+      transmittance_(medium_, settings.earth_radius_m + settings.site_elevation_m,
+                     settings.earth_radius_m + settings.top_altitude_m),
+      extraterrestrial_(skylit::extraterrestrial_irradiance(bands, settings.earth_sun_distance_au)) {
+  if (settings.model == AtmosphereModel::full)
+    multiple_ = std::make_unique<MultipleScatteringTable>(medium_, transmittance_, settings.ground_albedo);
+  sky_only_ = std::make_unique<ScatteringIntegrator>(medium_, transmittance_, multiple_.get(), nullptr,
+                                                     settings.aerosol, settings.ground_albedo);
+  ground_sky_ = std::make_unique<GroundIrradianceTable>(ScatteringIntegrator::ground_irradiance(*sky_only_));
+  integrator_ = std::make_unique<ScatteringIntegrator>(medium_, transmittance_, multiple_.get(), ground_sky_.get(),
+                                                       settings.aerosol, settings.ground_albedo);
+}
+
+Atmosphere::~Atmosphere() = default;
+
+Spectrum Atmosphere::direct_sun(double height_m, double sun_elevation_rad) const {
+  return extraterrestrial_ * transmittance_.to_top(ground_radius() + std::max(0.0, height_m), std::sin(sun_elevation_rad));
+}
+
+SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double observer_height_m)
+    : atmosphere_(atmosphere),
+      to_sun_(normalize(to_sun)),
+      sun_elevation_(std::asin(std::clamp(to_sun_.z, -1.0, 1.0))),
+      observer_radius_(atmosphere.ground_radius() + std::clamp(observer_height_m, 0.0, 0.9 * atmosphere.settings().top_altitude_m)),
+      sun_angular_radius_(kSunAngularRadiusAt1AuRad / atmosphere.settings().earth_sun_distance_au) {
+  const double ground = atmosphere.ground_radius();
+  const Spectrum& sun = atmosphere.extraterrestrial_irradiance();
+  sun_through_air_ = sun * atmosphere.transmittance().to_top(observer_radius_, to_sun_.z);
+  observer_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
+  if (observer_radius_ - ground > kGroundLayerM)
+    ground_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, ground + 1.0, ground, sun_elevation_);
+  aerial_ = std::make_unique<AerialPerspectiveTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
+  ground_sky_irradiance_ = std::make_unique<SkyIrradianceTable>(ground_view_ ? *ground_view_ : *observer_view_, to_sun_);
+}
+
+Spectrum SkyModel::sky_radiance(const Vec3& direction) const {
+  return observer_view_->radiance(relative_direction(direction, to_sun_));
+}
+
+Spectrum SkyModel::sun_radiance(const Vec3& direction) const {
+  const double angle = std::acos(std::clamp(dot(normalize(direction), to_sun_), -1.0, 1.0));
+  if (angle >= sun_angular_radius_) return Spectrum(0.0f);
+  return sun_disc_radiance(sun_through_air_, atmosphere_.bands(), sun_angular_radius_, angle);
+}
+
+ScatteredLight SkyModel::aerial_perspective(const Vec3& direction, double distance_m) const {
+  return aerial_->at(relative_direction(direction, to_sun_), distance_m);
+}
+
+Spectrum SkyModel::diffuse_horizontal_at_observer() const {
+  return SkyIrradianceTable::integrate(*observer_view_, {kPi / 2, 0.0});
+}
+
+}  // namespace skylit

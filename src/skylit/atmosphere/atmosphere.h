@@ -1,0 +1,84 @@
+// The atmosphere of a scene: what the sun and sky look like from any point in it.
+//
+// `Atmosphere` holds what does not depend on the sun's position (optical properties,
+// transmittance and multiple-scattering tables, the ground's sky irradiance);
+// `SkyModel` adds what does, for one sun and one observer (the sky-view table, aerial
+// perspective, sky irradiance on surfaces). Both are built once per scene and then only
+// read, by any number of threads. The model and its constants: docs/atmosphere.md.
+#pragma once
+
+#include <memory>
+
+#include "skylit/atmosphere/aerial_perspective_table.h"
+#include "skylit/atmosphere/atmosphere_settings.h"
+#include "skylit/atmosphere/sky_irradiance_table.h"
+#include "skylit/atmosphere/sky_view_table.h"
+
+namespace skylit {
+
+class Atmosphere {
+ public:
+  explicit Atmosphere(const AtmosphereSettings& settings, const SpectralBands& bands = SpectralBands::render_bins());
+  ~Atmosphere();
+
+  const AtmosphereSettings& settings() const { return settings_; }
+  const SpectralBands& bands() const { return bands_; }
+  const AtmosphereMedium& medium() const { return medium_; }
+  const TransmittanceTable& transmittance() const { return transmittance_; }
+  const ScatteringIntegrator& integrator() const { return *integrator_; }
+  // The scene's ground (z = 0) as a sphere about the Earth's centre.
+  double ground_radius() const { return transmittance_.ground_radius(); }
+  // W m⁻² nm⁻¹ at the top of the atmosphere, for the date's Earth–Sun distance.
+  const Spectrum& extraterrestrial_irradiance() const { return extraterrestrial_; }
+  // Direct sunlight on a plane normal to the sun at `height_m` above the ground; 0 when
+  // the sun's centre is below the horizon there.
+  Spectrum direct_sun(double height_m, double sun_elevation_rad) const;
+
+ private:
+  AtmosphereSettings settings_;
+  SpectralBands bands_;
+  AtmosphereMedium medium_;
+  TransmittanceTable transmittance_;
+  std::unique_ptr<MultipleScatteringTable> multiple_;
+  std::unique_ptr<ScatteringIntegrator> sky_only_;  // without the ground's sky irradiance
+  std::unique_ptr<GroundIrradianceTable> ground_sky_;
+  std::unique_ptr<ScatteringIntegrator> integrator_;
+  Spectrum extraterrestrial_;
+};
+
+class SkyModel {
+ public:
+  SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double observer_height_m);
+
+  const Atmosphere& atmosphere() const { return atmosphere_; }
+  const Vec3& to_sun() const { return to_sun_; }
+
+  // Radiance of the sky (and of the ground far below the horizon) seen by the
+  // observer, without the sun's disc.
+  Spectrum sky_radiance(const Vec3& direction) const;
+  // The sun's disc as the observer sees it (limb-darkened, attenuated); 0 off the disc.
+  Spectrum sun_radiance(const Vec3& direction) const;
+  // What the air adds and lets through between the observer and a surface.
+  ScatteredLight aerial_perspective(const Vec3& direction, double distance_m) const;
+  // Unobstructed sky and ground irradiance on a plane near the ground with this normal.
+  Spectrum sky_irradiance(const Vec3& normal) const { return ground_sky_irradiance_->at(normal); }
+  // The sun's direct normal irradiance at a height above the ground.
+  Spectrum direct_sun(double height_m) const { return atmosphere_.direct_sun(height_m, sun_elevation_); }
+  // Diffuse irradiance on a horizontal plane at the observer.
+  Spectrum diffuse_horizontal_at_observer() const;
+  double sun_angular_radius_rad() const { return sun_angular_radius_; }
+
+ private:
+  const Atmosphere& atmosphere_;
+  Vec3 to_sun_;
+  double sun_elevation_;
+  double observer_radius_;
+  double sun_angular_radius_;
+  Spectrum sun_through_air_;  // extraterrestrial × transmittance from the observer
+  std::unique_ptr<SkyViewTable> observer_view_;
+  std::unique_ptr<SkyViewTable> ground_view_;  // the same table when the observer is near the ground
+  std::unique_ptr<AerialPerspectiveTable> aerial_;
+  std::unique_ptr<SkyIrradianceTable> ground_sky_irradiance_;
+};
+
+}  // namespace skylit

@@ -1,0 +1,108 @@
+#include "skylit/atmosphere/multiple_scattering_table.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "skylit/atmosphere/phase_functions.h"
+#include "skylit/atmosphere/shell_geometry.h"
+#include "skylit/geometry/vec3.h"
+#include "skylit/spectrum/spectral_math.h"
+
+namespace skylit {
+
+namespace {
+
+// Directions spread evenly over the sphere (a spherical Fibonacci lattice): a fixed,
+// deterministic quadrature with equal weights 4π/n.
+Vec3 fibonacci_direction(int i, int n) {
+  const double golden = kPi * (3.0 - std::sqrt(5.0));
+  const double z = 1.0 - (2.0 * i + 1.0) / n;
+  const double radius = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return {radius * std::cos(golden * i), radius * std::sin(golden * i), z};
+}
+
+// Table coordinates: altitude crowded toward the ground, where the density is; μ_s linear.
+double altitude_from_unit(double x, double top) { return top * x * x; }
+double unit_from_altitude(double h, double top) { return std::sqrt(std::clamp(h / top, 0.0, 1.0)); }
+
+}  // namespace
+
+MultipleScatteringTable::Factors MultipleScatteringTable::factors_at(const AtmosphereMedium& medium,
+                                                                      const TransmittanceTable& transmittance,
+                                                                      double ground_albedo, double r, double mu_sun,
+                                                                      int directions, int segments) {
+  const double rg = transmittance.ground_radius(), rt = transmittance.top_radius();
+  const float isotropic = static_cast<float>(1.0 / kFourPi);
+  const double sin_sun = std::sqrt(std::max(0.0, 1.0 - mu_sun * mu_sun));
+  Spectrum second_order, transfer;
+  for (int d = 0; d < directions; ++d) {
+    // The sun lies in the x–z plane; ν is the cosine between view and sun.
+    const Vec3 dir = fibonacci_direction(d, directions);
+    const double mu = dir.z, nu = dir.x * sin_sun + dir.z * mu_sun;
+    const bool ground = shell::hits_ground(r, mu, rg);
+    const double length = ground ? shell::distance_to_ground(r, mu, rg) : shell::distance_to_outer_sphere(r, mu, rt);
+    Spectrum throughput(1.0f), light, energy;
+    const double dt = length / segments;
+    for (int s = 0; s < segments; ++s) {
+      const double t = (s + 0.5) * dt;
+      const double r_t = shell::radius_at(r, mu, t);
+      const double mu_s_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
+      const double h = r_t - medium.earth_radius_m;
+      const double rho_r = medium.rayleigh_density(h), rho_a = medium.aerosol_density(h);
+      const Spectrum extinction = medium.extinction(rho_r, rho_a, medium.ozone_density(h));
+      const Spectrum scattering =
+          medium.rayleigh_scattering * static_cast<float>(rho_r) + medium.aerosol_scattering * static_cast<float>(rho_a);
+      const Spectrum segment_transmittance = transmittance_of(extinction * static_cast<float>(dt));
+      const Spectrum sun = transmittance.to_top(r_t, mu_s_t);
+      for (int k = 0; k < kSpectralBins; ++k) {
+        // ∫ over the segment of T·σ_s·(source) = T·σ_s·source·(1 − e^(−σ_t·dt))/σ_t.
+        const float integral = extinction[k] > 0 ? (1.0f - segment_transmittance[k]) / extinction[k] : static_cast<float>(dt);
+        light[k] += throughput[k] * scattering[k] * isotropic * sun[k] * integral;
+        energy[k] += throughput[k] * scattering[k] * integral;
+        throughput[k] *= segment_transmittance[k];
+      }
+    }
+    if (ground) {
+      // Light the sun puts on the ground, reflected (Lambert) toward the point.
+      const double r_g = rg;
+      const double mu_s_g = std::clamp((r * mu_sun + length * nu) / r_g, -1.0, 1.0);
+      if (mu_s_g > 0) {
+        const Spectrum sun = transmittance.to_top(r_g, mu_s_g);
+        for (int k = 0; k < kSpectralBins; ++k)
+          light[k] += throughput[k] * sun[k] * static_cast<float>(mu_s_g * ground_albedo / kPi);
+      }
+    }
+    second_order += light;
+    transfer += energy;
+  }
+  // Average over the sphere of directions, times 4π·(1/4π) for the isotropic phase.
+  const float weight = 1.0f / static_cast<float>(directions);
+  return {second_order * weight, transfer * weight};
+}
+
+MultipleScatteringTable::MultipleScatteringTable(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
+                                                 double ground_albedo)
+    : ground_radius_(transmittance.ground_radius()),
+      top_radius_(transmittance.top_radius()),
+      table_(kMuSunSize, kAltitudeSize) {
+  tbb::parallel_for(0, kAltitudeSize, [&](int j) {
+    const double r = ground_radius_ + altitude_from_unit(static_cast<double>(j) / (kAltitudeSize - 1), top_radius_ - ground_radius_);
+    for (int i = 0; i < kMuSunSize; ++i) {
+      const double mu_sun = -1.0 + 2.0 * i / (kMuSunSize - 1);
+      const Factors f = factors_at(medium, transmittance, ground_albedo, r, mu_sun);
+      Spectrum psi;
+      for (int k = 0; k < kSpectralBins; ++k) psi[k] = f.second_order[k] / (1.0f - std::min(f.transfer[k], 0.999f));
+      table_.at(i, j) = psi;
+    }
+  });
+}
+
+Spectrum MultipleScatteringTable::psi(double r, double mu_sun) const {
+  const double fi = (std::clamp(mu_sun, -1.0, 1.0) + 1.0) * 0.5 * (kMuSunSize - 1);
+  const double fj = unit_from_altitude(r - ground_radius_, top_radius_ - ground_radius_) * (kAltitudeSize - 1);
+  return table_.interpolate(fi, fj);
+}
+
+}  // namespace skylit

@@ -1,0 +1,152 @@
+#include "skylit/atmosphere/scattering_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "skylit/atmosphere/phase_functions.h"
+#include "skylit/atmosphere/shell_geometry.h"
+#include "skylit/geometry/vec3.h"
+#include "skylit/spectrum/spectral_math.h"
+
+namespace skylit {
+
+Spectrum GroundIrradianceTable::at(double mu_sun) const {
+  const double f = (std::clamp(mu_sun, -1.0, 1.0) + 1.0) * 0.5 * (kSize - 1);
+  const int i = std::min(static_cast<int>(f), kSize - 2);
+  const float a = static_cast<float>(f - i);
+  return irradiance_[static_cast<size_t>(i)] * (1 - a) + irradiance_[static_cast<size_t>(i + 1)] * a;
+}
+
+ScatteringIntegrator::ScatteringIntegrator(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
+                                           const MultipleScatteringTable* multiple,
+                                           const GroundIrradianceTable* ground_sky, const AerosolSettings& aerosol,
+                                           double ground_albedo)
+    : medium_(medium),
+      transmittance_(transmittance),
+      multiple_(multiple),
+      ground_sky_(ground_sky),
+      aerosol_(aerosol),
+      ground_albedo_(ground_albedo) {}
+
+ScatteringIntegrator::Phases ScatteringIntegrator::phases(double nu) const {
+  const double aerosol = aerosol_.phase == AerosolPhase::cornette_shanks ? cornette_shanks_phase(nu, aerosol_.asymmetry)
+                                                                         : henyey_greenstein_phase(nu, aerosol_.asymmetry);
+  return {static_cast<float>(rayleigh_phase(nu, medium_.rayleigh_gamma)), static_cast<float>(aerosol)};
+}
+
+double ScatteringIntegrator::ray_length(double r, double mu, bool& ends_on_ground) const {
+  ends_on_ground = shell::hits_ground(r, mu, transmittance_.ground_radius());
+  return ends_on_ground ? shell::distance_to_ground(r, mu, transmittance_.ground_radius())
+                        : shell::distance_to_outer_sphere(r, mu, transmittance_.top_radius());
+}
+
+void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, double nu, double t0, double t1,
+                                       const Phases& phase, ScatteredLight& light) const {
+  const double dt = t1 - t0;
+  if (dt <= 0) return;
+  // Sources at the segment's midpoint; the attenuation across it is integrated exactly.
+  const double t = 0.5 * (t0 + t1);
+  const double r_t = shell::radius_at(r, mu, t);
+  const double mu_sun_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
+  const double h = r_t - medium_.earth_radius_m;
+  const double rho_r = medium_.rayleigh_density(h), rho_a = medium_.aerosol_density(h);
+  const Spectrum extinction = medium_.extinction(rho_r, rho_a, medium_.ozone_density(h));
+  const Spectrum segment = transmittance_of(extinction * static_cast<float>(dt));
+  const Spectrum sun = transmittance_.to_top(r_t, mu_sun_t);
+  const Spectrum psi = multiple_ ? multiple_->psi(r_t, mu_sun_t) : Spectrum(0.0f);
+  const float fr = static_cast<float>(rho_r), fa = static_cast<float>(rho_a), fdt = static_cast<float>(dt);
+  for (int k = 0; k < kSpectralBins; ++k) {
+    const float sigma_r = medium_.rayleigh_scattering[k] * fr, sigma_a = medium_.aerosol_scattering[k] * fa;
+    const float source = (sigma_r * phase.rayleigh + sigma_a * phase.aerosol) * sun[k] + (sigma_r + sigma_a) * psi[k];
+    const float integral = extinction[k] > 1e-12f ? (1.0f - segment[k]) / extinction[k] : fdt;
+    light.radiance[k] += light.transmittance[k] * source * integral;
+    light.transmittance[k] *= segment[k];
+  }
+}
+
+void ScatteringIntegrator::add_ground(double r, double mu_sun, double nu, double length, ScatteredLight& light) const {
+  const double rg = transmittance_.ground_radius();
+  const double mu_sun_g = std::clamp((r * mu_sun + length * nu) / rg, -1.0, 1.0);
+  Spectrum irradiance = mu_sun_g > 0 ? transmittance_.to_top(rg, mu_sun_g) * static_cast<float>(mu_sun_g) : Spectrum(0.0f);
+  if (ground_sky_) irradiance += ground_sky_->at(mu_sun_g);
+  for (int k = 0; k < kSpectralBins; ++k)
+    light.radiance[k] += light.transmittance[k] * irradiance[k] * static_cast<float>(ground_albedo_ / kPi);
+}
+
+ScatteredLight ScatteringIntegrator::along_ray(double r, double mu, double mu_sun, double nu, int segments) const {
+  bool ground = false;
+  const double length = ray_length(r, mu, ground);
+  const Phases phase = phases(nu);
+  ScatteredLight light{Spectrum(0.0f), Spectrum(1.0f)};
+  // Boundaries t = t_low ± (distance)·u², crowded at the ray's lowest point t_low.
+  const double t_low = std::clamp(-r * mu, 0.0, length);
+  const int before = t_low > 0 ? std::max(1, static_cast<int>(segments * t_low / length)) : 0;
+  const int after = std::max(1, segments - before);
+  double t_prev = 0.0;
+  for (int k = 1; k <= before; ++k) {
+    const double u = 1.0 - static_cast<double>(k) / before;
+    const double t = t_low - t_low * u * u;
+    add_segment(r, mu, mu_sun, nu, t_prev, t, phase, light);
+    t_prev = t;
+  }
+  for (int k = 1; k <= after; ++k) {
+    const double u = static_cast<double>(k) / after;
+    const double t = t_low + (length - t_low) * u * u;
+    add_segment(r, mu, mu_sun, nu, t_prev, t, phase, light);
+    t_prev = t;
+  }
+  if (ground) add_ground(r, mu_sun, nu, length, light);
+  return light;
+}
+
+std::vector<ScatteredLight> ScatteringIntegrator::up_to(double r, double mu, double mu_sun, double nu,
+                                                        const std::vector<double>& stops) const {
+  bool ground = false;
+  const double length = ray_length(r, mu, ground);
+  const Phases phase = phases(nu);
+  ScatteredLight light{Spectrum(0.0f), Spectrum(1.0f)};
+  std::vector<ScatteredLight> out;
+  out.reserve(stops.size());
+  double t_prev = 0.0;
+  for (double stop : stops) {
+    const double t = std::min(stop, length);
+    // Two segments per interval between stops keep the midpoint rule accurate where
+    // the stops are far apart.
+    const double mid = 0.5 * (t_prev + t);
+    add_segment(r, mu, mu_sun, nu, t_prev, mid, phase, light);
+    add_segment(r, mu, mu_sun, nu, mid, t, phase, light);
+    t_prev = t;
+    out.push_back(light);
+  }
+  return out;
+}
+
+GroundIrradianceTable ScatteringIntegrator::ground_irradiance(const ScatteringIntegrator& sky) {
+  // ∫ L cos θ dω over the upper hemisphere: midpoint rule in cos θ (which absorbs the
+  // cos θ sin θ dθ weight as ½ d(cos²θ)) and in azimuth, mirrored about the sun's plane.
+  constexpr int kZenith = 8, kAzimuth = 8, kSegments = 24;
+  const double r = sky.transmittance_.ground_radius();
+  std::vector<Spectrum> table(static_cast<size_t>(GroundIrradianceTable::kSize));
+  tbb::parallel_for(0, GroundIrradianceTable::kSize, [&](int i) {
+    const double mu_sun = -1.0 + 2.0 * i / (GroundIrradianceTable::kSize - 1);
+    const double sin_sun = std::sqrt(std::max(0.0, 1.0 - mu_sun * mu_sun));
+    Spectrum sum;
+    for (int z = 0; z < kZenith; ++z) {
+      // Equal steps in cos²θ: each band carries the same weight of the cosine law.
+      const double mu = std::sqrt((z + 0.5) / kZenith);
+      const double sin_view = std::sqrt(1.0 - mu * mu);
+      for (int a = 0; a < kAzimuth; ++a) {
+        const double phi = kPi * (a + 0.5) / kAzimuth;
+        const double nu = mu * mu_sun + sin_view * sin_sun * std::cos(phi);
+        sum += sky.along_ray(r, mu, mu_sun, nu, kSegments).radiance;
+      }
+    }
+    // Each sample stands for π/(kZenith·kAzimuth) of the cosine-weighted hemisphere (π in all).
+    table[static_cast<size_t>(i)] = sum * static_cast<float>(kPi / (kZenith * kAzimuth));
+  });
+  return GroundIrradianceTable(std::move(table));
+}
+
+}  // namespace skylit

@@ -1,0 +1,76 @@
+// Light scattered toward the origin of a ray through the atmosphere (the paper's §3.1
+// sky light; Bruneton & Neyret 2008 and Hillaire 2020 in today's form): along the ray,
+// sunlight attenuated on its way to each point is scattered by molecules (Rayleigh) and
+// aerosols (Mie) toward the origin, and attenuated again on the way there; multiple
+// scattering adds σ_s·Ψ_ms (multiple_scattering_table.h); a ray that ends on the ground
+// adds the ground's Lambertian reflection. Everything is per unit extraterrestrial
+// solar irradiance: multiply by the sun's spectrum to get radiance.
+#pragma once
+
+#include <vector>
+
+#include "skylit/atmosphere/multiple_scattering_table.h"
+#include "skylit/atmosphere/transmittance_table.h"
+
+namespace skylit {
+
+struct ScatteredLight {
+  Spectrum radiance;       // sr⁻¹, per unit solar irradiance
+  Spectrum transmittance;  // from the origin to the end of the integrated part
+};
+
+// Sky irradiance on the ground (per unit solar irradiance) against the sun's zenith
+// cosine, for the ground's reflection at the end of rays. It counts the sky as seen
+// from the ground, without the ground's own reflection lighting the sky again.
+class GroundIrradianceTable {
+ public:
+  static constexpr int kSize = 32;
+  explicit GroundIrradianceTable(std::vector<Spectrum> irradiance) : irradiance_(std::move(irradiance)) {}
+  Spectrum at(double mu_sun) const;
+
+ private:
+  std::vector<Spectrum> irradiance_;  // μ_s from −1 to 1
+};
+
+class ScatteringIntegrator {
+ public:
+  // `multiple` and `ground_sky` may be null (the paper's model has neither).
+  ScatteringIntegrator(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
+                       const MultipleScatteringTable* multiple, const GroundIrradianceTable* ground_sky,
+                       const AerosolSettings& aerosol, double ground_albedo);
+
+  // Along the ray (r, μ) to where it leaves the atmosphere or meets the ground, with the
+  // sun at zenith cosine μ_s and ν = cos(angle between ray and sun). `segments` steps,
+  // crowded where the ray is lowest.
+  ScatteredLight along_ray(double r, double mu, double mu_sun, double nu, int segments) const;
+
+  // The same, reporting the light gathered up to each of the increasing distances
+  // `stops` (m); a stop beyond the ray's end gets the whole ray, without the ground.
+  std::vector<ScatteredLight> up_to(double r, double mu, double mu_sun, double nu,
+                                    const std::vector<double>& stops) const;
+
+  // The sky irradiance table for the ground, built with this integrator.
+  static GroundIrradianceTable ground_irradiance(const ScatteringIntegrator& sky_only);
+
+  // Length of the ray (r, μ) inside the atmosphere, and whether it ends on the ground.
+  double ray_length(double r, double mu, bool& ends_on_ground) const;
+
+ private:
+  struct Phases {
+    float rayleigh, aerosol;
+  };
+  Phases phases(double nu) const;
+  // Adds one segment [t0, t1] of the ray to `light`.
+  void add_segment(double r, double mu, double mu_sun, double nu, double t0, double t1, const Phases& phase,
+                   ScatteredLight& light) const;
+  void add_ground(double r, double mu_sun, double nu, double length, ScatteredLight& light) const;
+
+  const AtmosphereMedium& medium_;
+  const TransmittanceTable& transmittance_;
+  const MultipleScatteringTable* multiple_;
+  const GroundIrradianceTable* ground_sky_;
+  AerosolSettings aerosol_;
+  double ground_albedo_;
+};
+
+}  // namespace skylit

@@ -1,0 +1,65 @@
+#include "skylit/atmosphere/sky_view_table.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+namespace skylit {
+
+namespace {
+constexpr double kHalfPi = kPi / 2.0;
+}
+
+SkyDirectionMapping::SkyDirectionMapping(double observer_radius_m, double ground_radius_m)
+    : horizon_(-std::acos(std::clamp(ground_radius_m / observer_radius_m, 0.0, 1.0))) {}
+
+void SkyDirectionMapping::to_unit(const RelativeDirection& d, double& u_azimuth, double& u_elevation) const {
+  u_azimuth = std::clamp(d.azimuth_from_sun_rad / kPi, 0.0, 1.0);
+  const double e = std::clamp(d.elevation_rad, -kHalfPi, kHalfPi);
+  // Square-root crowding toward the horizon on both sides.
+  u_elevation = e >= horizon_ ? 0.5 + 0.5 * std::sqrt((e - horizon_) / (kHalfPi - horizon_))
+                              : 0.5 - 0.5 * std::sqrt((horizon_ - e) / (kHalfPi + horizon_));
+}
+
+RelativeDirection SkyDirectionMapping::from_unit(double u_azimuth, double u_elevation) const {
+  const double above = 2.0 * u_elevation - 1.0;
+  const double e = above >= 0 ? horizon_ + (kHalfPi - horizon_) * above * above
+                              : horizon_ - (kHalfPi + horizon_) * above * above;
+  return {e, u_azimuth * kPi};
+}
+
+RelativeDirection relative_direction(const Vec3& direction, const Vec3& to_sun) {
+  const double elevation = std::asin(std::clamp(direction.z / length(direction), -1.0, 1.0));
+  const double horizontal = std::hypot(direction.x, direction.y);
+  const double sun_horizontal = std::hypot(to_sun.x, to_sun.y);
+  double azimuth = 0.0;
+  if (horizontal > 1e-12 && sun_horizontal > 1e-12) {
+    const double c = (direction.x * to_sun.x + direction.y * to_sun.y) / (horizontal * sun_horizontal);
+    azimuth = std::acos(std::clamp(c, -1.0, 1.0));
+  }
+  return {elevation, azimuth};
+}
+
+SkyViewTable::SkyViewTable(const ScatteringIntegrator& integrator, const Spectrum& sun_irradiance,
+                           double observer_radius_m, double ground_radius_m, double sun_elevation_rad)
+    : mapping_(observer_radius_m, ground_radius_m), table_(kAzimuthSize, kElevationSize) {
+  const double mu_sun = std::sin(sun_elevation_rad), cos_sun = std::cos(sun_elevation_rad);
+  tbb::parallel_for(0, kElevationSize, [&](int j) {
+    for (int i = 0; i < kAzimuthSize; ++i) {
+      const RelativeDirection d =
+          mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1), static_cast<double>(j) / (kElevationSize - 1));
+      const double mu = std::sin(d.elevation_rad);
+      const double nu = mu * mu_sun + std::cos(d.elevation_rad) * cos_sun * std::cos(d.azimuth_from_sun_rad);
+      table_.at(i, j) = integrator.along_ray(observer_radius_m, mu, mu_sun, nu, kSegments).radiance * sun_irradiance;
+    }
+  });
+}
+
+Spectrum SkyViewTable::radiance(const RelativeDirection& direction) const {
+  double u_azimuth, u_elevation;
+  mapping_.to_unit(direction, u_azimuth, u_elevation);
+  return table_.interpolate(u_azimuth * (kAzimuthSize - 1), u_elevation * (kElevationSize - 1));
+}
+
+}  // namespace skylit

@@ -1,0 +1,52 @@
+// Sky radiance seen from one observer for one sun, tabulated over view directions as
+// in Hillaire (2020, §5.3): elevation crowded toward the horizon (where the sky changes
+// fastest and meets the ground), azimuth measured from the sun's vertical plane (the
+// sky is symmetric about it). Directions below the horizon see the ground through the
+// air. Built once per scene; rendering only reads it.
+#pragma once
+
+#include "skylit/atmosphere/scattering_integrator.h"
+#include "skylit/geometry/vec3.h"
+#include "skylit/spectrum/spectrum_grid.h"
+
+namespace skylit {
+
+// A direction seen from an observer, relative to the sun.
+struct RelativeDirection {
+  double elevation_rad;         // above the local horizontal
+  double azimuth_from_sun_rad;  // in [0, π], the angle between the horizontal projections
+};
+
+// Maps relative directions to table coordinates in [0, 1]² and back. u_elevation = ½
+// is the horizon's dip angle at the observer's radius (the direction that grazes the
+// ground); the sky lies above, the ground below.
+class SkyDirectionMapping {
+ public:
+  SkyDirectionMapping(double observer_radius_m, double ground_radius_m);
+  void to_unit(const RelativeDirection& d, double& u_azimuth, double& u_elevation) const;
+  RelativeDirection from_unit(double u_azimuth, double u_elevation) const;
+  double horizon_elevation_rad() const { return horizon_; }
+
+ private:
+  double horizon_;  // ≤ 0
+};
+
+RelativeDirection relative_direction(const Vec3& direction, const Vec3& to_sun);
+
+class SkyViewTable {
+ public:
+  static constexpr int kAzimuthSize = 96, kElevationSize = 128, kSegments = 32;
+
+  // `sun_irradiance` scales the integrator's per-unit results into radiance.
+  SkyViewTable(const ScatteringIntegrator& integrator, const Spectrum& sun_irradiance, double observer_radius_m,
+               double ground_radius_m, double sun_elevation_rad);
+
+  Spectrum radiance(const RelativeDirection& direction) const;
+  const SkyDirectionMapping& mapping() const { return mapping_; }
+
+ private:
+  SkyDirectionMapping mapping_;
+  SpectrumGrid2D table_;
+};
+
+}  // namespace skylit
