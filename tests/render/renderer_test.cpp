@@ -1,6 +1,7 @@
-// The foundation's light: the extraterrestrial sun as a directional light, Lambertian
-// surfaces, hard shadows and the uniform placeholder sky. Pixel luminances are checked
-// against the same quantities computed independently at 1 nm from the data tables.
+// The renderer's light: the sun through the air with hard shadows, the unobstructed sky
+// on Lambertian surfaces, the sky and sun where no object is seen, and aerial
+// perspective. Pixel luminances are checked against the atmosphere model's own
+// illuminances, computed independently of the image.
 #include "skylit/render/renderer.h"
 
 #include <gtest/gtest.h>
@@ -8,58 +9,47 @@
 #include <cmath>
 
 #include "skylit/geometry/primitives.h"
-#include "skylit/render/placeholder_sky.h"
 #include "skylit/spectrum/cie.h"
-#include "skylit/spectrum/illuminants.h"
 
 namespace skylit {
 namespace {
-
-// 683 lm/W × ∫ E(λ) ȳ(λ) dλ over 360–830 nm at 1 nm: the extraterrestrial solar
-// illuminance, about 133 klx (Gueymard 2004's spectrum).
-double solar_illuminance_1nm() {
-  const Tabulated& sun = solar_extraterrestrial_table();
-  const Tabulated& y = cie1931().y;
-  double sum = 0;
-  for (int nm = 360; nm <= 830; ++nm) sum += sun(nm) * y(nm);
-  return kMaxLuminousEfficacy * sum;
-}
 
 Scene open_plane_scene(double sun_altitude_deg, float reflectance) {
   Scene scene;
   scene.camera = Camera{{0, 0, 10}, {0, 0.001, 0}, {0, 1, 0}, 20.0};  // looking straight down
   scene.sun = Sun{sun_altitude_deg, 200};
   scene.materials.push_back({"white", DiffuseMaterial{Spectrum(reflectance)}});
+  scene.materials.push_back({"black", DiffuseMaterial{Spectrum(0.0f)}});
   scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 1000), 0});
   scene.render = RenderSettings{8, 8, std::nullopt, 1};
   return scene;
 }
 
-TEST(Renderer, ExtraterrestrialIlluminanceIsThePublishedValue) {
-  // The solar illuminance constant is about 133 klx at 1366 W/m² (Darula, Kittler &
-  // Gueymard 2005, Leukos 1(3)); the ±1.5 klx band catches unit and scale mistakes.
-  EXPECT_NEAR(solar_illuminance_1nm(), 133.3e3, 1.5e3);
-}
+// Illuminance (lx) of a spectral irradiance.
+double lux(const Spectrum& irradiance) { return xyz_from_spectrum(irradiance).y; }
 
 TEST(Renderer, HorizontalPlaneHasLambertLuminance) {
-  // L = ρ (E_sun sin(a) + π L_sky) / π with both illuminances from 1 nm integration.
-  // Binning the sun's spectrum into kSpectralBins bins changes the illuminance by less
-  // than 0.3 % (the bin-count study); allow 0.5 %.
+  // L = ρ (E_direct sin a + E_sky) / π with both illuminances from the atmosphere
+  // model; 10 m of air between camera and plane change it by well under 0.1 %: 0.5 %.
   for (double altitude : {10.0, 35.0, 70.0}) {
     const Scene scene = open_plane_scene(altitude, 0.6f);
     const Renderer renderer(scene);
     const XyzImage image = renderer.render();
-    const double expected =
-        0.6 * (solar_illuminance_1nm() * std::sin(radians(altitude)) + kPi * kPlaceholderSkyLuminance) / kPi;
+    const double e_direct = lux(renderer.sky().direct_sun(0.0)) * std::sin(radians(altitude));
+    const double e_sky = lux(renderer.sky().sky_irradiance({0, 0, 1}));
+    const double expected = 0.6 * (e_direct + e_sky) / kPi;
     for (int y = 0; y < 8; y += 7)
       for (int x = 0; x < 8; x += 7) EXPECT_NEAR(image.at(x, y).y, expected, 0.005 * expected) << altitude;
+    EXPECT_GT(e_direct, e_sky);  // a clear sky: the sun dominates above 10°
   }
 }
 
 TEST(Renderer, SunBelowHorizonLeavesOnlySkyLight) {
-  const Scene scene = open_plane_scene(-5.0, 1.0f);
-  const XyzImage image = Renderer(scene).render();
-  EXPECT_NEAR(image.at(4, 4).y, kPlaceholderSkyLuminance, 1e-3 * kPlaceholderSkyLuminance);
+  const Scene scene = open_plane_scene(-3.0, 1.0f);
+  const Renderer renderer(scene);
+  const double sky_only = lux(renderer.sky().sky_irradiance({0, 0, 1})) / kPi;
+  EXPECT_GT(sky_only, 1.0);  // civil twilight still lights the ground
+  EXPECT_NEAR(renderer.render().at(4, 4).y, sky_only, 0.005 * sky_only);
 }
 
 TEST(Renderer, BoxCastsAHardShadowWhereGeometrySays) {
@@ -74,24 +64,47 @@ TEST(Renderer, BoxCastsAHardShadowWhereGeometrySays) {
     const Ray down{{0.0, y, 50.0}, {0, 0, -1}};
     return luminance(renderer.radiance(down, rays));
   };
-  const double sky_only = 0.5 * kPlaceholderSkyLuminance;
-  const double lit = 0.5 * (solar_illuminance_1nm() * std::sin(radians(45.0)) + kPi * kPlaceholderSkyLuminance) / kPi;
-  EXPECT_NEAR(ground_luminance(10.0), sky_only, 0.01 * sky_only);   // in the shadow
-  EXPECT_NEAR(ground_luminance(14.5), sky_only, 0.01 * sky_only);   // just inside its edge
-  EXPECT_NEAR(ground_luminance(15.5), lit, 0.01 * lit);             // just outside
-  EXPECT_NEAR(ground_luminance(-10.0), lit, 0.01 * lit);            // on the sunny side
+  const double sky_only = 0.5 * lux(renderer.sky().sky_irradiance({0, 0, 1})) / kPi;
+  const double lit = sky_only + 0.5 * lux(renderer.sky().direct_sun(0.0)) * std::sin(radians(45.0)) / kPi;
+  // The camera's 50 m of air adds ~0.1 %; 1 %.
+  EXPECT_NEAR(ground_luminance(10.0), sky_only, 0.01 * sky_only);  // in the shadow
+  EXPECT_NEAR(ground_luminance(14.5), sky_only, 0.01 * sky_only);  // just inside its edge
+  EXPECT_NEAR(ground_luminance(15.5), lit, 0.01 * lit);            // just outside
+  EXPECT_NEAR(ground_luminance(-10.0), lit, 0.01 * lit);           // on the sunny side
   EXPECT_GT(rays, 0u);
 }
 
-TEST(Renderer, SkyPixelsShowThePlaceholderSky) {
-  Scene scene = open_plane_scene(30.0, 0.5f);
+TEST(Renderer, SkyPixelsShowTheSkyAndTheSun) {
+  Scene scene = open_plane_scene(60.0, 0.5f);
   scene.camera = Camera{{0, 0, 10}, {0, 0, 20}, {0, 1, 0}, 20.0};  // looking straight up
-  const XyzImage image = Renderer(scene).render();
-  EXPECT_NEAR(image.at(3, 3).y, kPlaceholderSkyLuminance, 1e-3 * kPlaceholderSkyLuminance);
-  // D65 chromaticity (x, y) = (0.3127, 0.3290).
-  const Xyz c = image.at(3, 3);
-  EXPECT_NEAR(c.x / (c.x + c.y + c.z), 0.3127, 2e-3);
-  EXPECT_NEAR(c.y / (c.x + c.y + c.z), 0.3290, 2e-3);
+  scene.render = RenderSettings{1, 1, std::nullopt, 1};  // one sample, at the zenith
+  const Renderer renderer(scene);
+  const XyzImage image = renderer.render();
+  const Vec3 up{0, 0, 1};
+  const double zenith = luminance(renderer.sky().sky_radiance(up));
+  EXPECT_NEAR(image.at(0, 0).y, zenith, 1e-4 * zenith);
+  // The sun's disc: looking at it, luminance of order 1e9 cd/m² (1.6e9 at noon).
+  uint64_t rays = 0;
+  const double sun = luminance(renderer.radiance(Ray{{0, 0, 10}, renderer.sky().to_sun()}, rays));
+  EXPECT_GT(sun, 3e8);
+  EXPECT_LT(sun, 3e9);
+}
+
+TEST(Renderer, DistantObjectsAreSeenThroughTheAir) {
+  // A black wall adds no light of its own: what the camera sees of it is the air in
+  // between, more of it the farther the wall.
+  Scene scene = open_plane_scene(30.0, 0.5f);
+  scene.camera = Camera{{0, 0, 2}, {0, 100, 2}, {0, 0, 1}, 20.0};
+  scene.objects.push_back({"near wall", make_box({-50, 50, 0}, {-1, 60, 40}), 1});
+  scene.objects.push_back({"far wall", make_box({1, 5000, 0}, {3000, 5100, 4000}), 1});
+  const Renderer renderer(scene);
+  uint64_t rays = 0;
+  const double near = luminance(renderer.radiance(Ray{{0, 0, 2}, normalize(Vec3{-0.2, 1, 0.1})}, rays));
+  const double far = luminance(renderer.radiance(Ray{{0, 0, 2}, normalize(Vec3{0.2, 1, 0.05})}, rays));
+  const double horizon = luminance(renderer.sky().sky_radiance(normalize(Vec3{0.2, 1, 0.0})));
+  EXPECT_GT(near, 0.0);
+  EXPECT_GT(far, 10 * near);
+  EXPECT_LT(far, horizon);  // 5 km of air is not yet the whole horizon's
 }
 
 }  // namespace

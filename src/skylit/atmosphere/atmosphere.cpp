@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/atmosphere/sun_disc.h"
+#include "skylit/spectrum/spectral_math.h"
 
 namespace skylit {
 
@@ -43,12 +45,32 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
       sun_angular_radius_(kSunAngularRadiusAt1AuRad / atmosphere.settings().earth_sun_distance_au) {
   const double ground = atmosphere.ground_radius();
   const Spectrum& sun = atmosphere.extraterrestrial_irradiance();
-  sun_through_air_ = sun * atmosphere.transmittance().to_top(observer_radius_, to_sun_.z);
+  // Direct sunlight against height, with exact column densities toward the sun.
+  for (int k = 0; k < kDirectSunProfileSize; ++k) {
+    const double u = static_cast<double>(k) / (kDirectSunProfileSize - 1);
+    const double r = ground + kDirectSunProfileTopM * u * u;
+    const double top = atmosphere.transmittance().top_radius();
+    Spectrum direct(0.0f);
+    if (!shell::hits_ground(r, to_sun_.z, ground)) {
+      const ColumnDensities c = column_densities(atmosphere.medium(), r, to_sun_.z, shell::distance_to_outer_sphere(r, to_sun_.z, top));
+      direct = sun * transmittance_of(atmosphere.medium().extinction(c.rayleigh, c.aerosol, c.ozone));
+    }
+    direct_sun_profile_.push_back(direct);
+  }
+  sun_through_air_ = direct_sun(observer_radius_ - ground);
   observer_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
   if (observer_radius_ - ground > kGroundLayerM)
     ground_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, ground + 1.0, ground, sun_elevation_);
   aerial_ = std::make_unique<AerialPerspectiveTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
   ground_sky_irradiance_ = std::make_unique<SkyIrradianceTable>(ground_view_ ? *ground_view_ : *observer_view_, to_sun_);
+}
+
+Spectrum SkyModel::direct_sun(double height_m) const {
+  if (height_m >= kDirectSunProfileTopM) return atmosphere_.direct_sun(height_m, sun_elevation_);
+  const double f = std::sqrt(std::max(0.0, height_m) / kDirectSunProfileTopM) * (kDirectSunProfileSize - 1);
+  const int k = std::min(static_cast<int>(f), kDirectSunProfileSize - 2);
+  const float a = static_cast<float>(f - k);
+  return direct_sun_profile_[static_cast<size_t>(k)] * (1 - a) + direct_sun_profile_[static_cast<size_t>(k + 1)] * a;
 }
 
 Spectrum SkyModel::sky_radiance(const Vec3& direction) const {

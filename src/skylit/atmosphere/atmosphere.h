@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "skylit/atmosphere/aerial_perspective_table.h"
 #include "skylit/atmosphere/atmosphere_settings.h"
@@ -62,8 +63,10 @@ class SkyModel {
   ScatteredLight aerial_perspective(const Vec3& direction, double distance_m) const;
   // Unobstructed sky and ground irradiance on a plane near the ground with this normal.
   Spectrum sky_irradiance(const Vec3& normal) const { return ground_sky_irradiance_->at(normal); }
-  // The sun's direct normal irradiance at a height above the ground.
-  Spectrum direct_sun(double height_m) const { return atmosphere_.direct_sun(height_m, sun_elevation_); }
+  // The sun's direct normal irradiance at a height above the ground (computed exactly
+  // for the sun's direction at heights up to kDirectSunProfileTopM, not interpolated
+  // from the transmittance table).
+  Spectrum direct_sun(double height_m) const;
   // Diffuse irradiance on a horizontal plane at the observer.
   Spectrum diffuse_horizontal_at_observer() const;
   double sun_angular_radius_rad() const { return sun_angular_radius_; }
@@ -74,6 +77,9 @@ class SkyModel {
   double sun_elevation_;
   double observer_radius_;
   double sun_angular_radius_;
+  static constexpr int kDirectSunProfileSize = 65;
+  static constexpr double kDirectSunProfileTopM = 2000.0;
+  std::vector<Spectrum> direct_sun_profile_;  // at heights top·(k/(size−1))²
   Spectrum sun_through_air_;  // extraterrestrial × transmittance from the observer
   std::unique_ptr<SkyViewTable> observer_view_;
   std::unique_ptr<SkyViewTable> ground_view_;  // the same table when the observer is near the ground

@@ -40,14 +40,6 @@ Camera read_camera(const JsonReader& j) {
   return camera;
 }
 
-Sun read_sun(const JsonReader& j) {
-  j.allow_only({"altitude_deg", "azimuth_deg"});
-  Sun sun;
-  sun.altitude_deg = j.required("altitude_deg").number_in(-90, 90);
-  sun.azimuth_deg = j.required("azimuth_deg").number_in(-360, 360);
-  return sun;
-}
-
 RenderSettings read_render(const JsonReader& j) {
   j.allow_only({"width", "height", "exposure_ev", "samples_per_axis"});
   RenderSettings render;
@@ -74,11 +66,11 @@ std::string read_text_file(const std::filesystem::path& path) {
 
 Scene scene_from_json(const nlohmann::json& document, const std::string& source, const std::filesystem::path& base_dir) {
   const JsonReader root(document, source);
-  if (!root.is_object()) root.fail_expected("an object with camera, sun, materials, objects, render");
-  root.allow_only({"camera", "sun", "materials", "objects", "render"});
+  if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
+  root.allow_only({"camera", "sun", "site", "time", "atmosphere", "materials", "objects", "render"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
-  scene.sun = read_sun(root.required("sun"));
+  read_sun_and_atmosphere(root, scene);
   scene.materials = read_materials(root.required("materials"));
   scene.objects = read_objects(root.required("objects"), scene.materials, base_dir);
   if (auto render = root.optional("render")) scene.render = read_render(*render);

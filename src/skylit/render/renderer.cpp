@@ -8,9 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "skylit/render/placeholder_sky.h"
 #include "skylit/spectrum/cie.h"
-#include "skylit/spectrum/illuminants.h"
 
 namespace skylit {
 
@@ -29,8 +27,8 @@ double surface_offset(const Vec3& p) {
 Renderer::Renderer(const Scene& scene)
     : scene_(scene),
       to_sun_(direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg)),
-      sun_irradiance_(solar_extraterrestrial_irradiance()),
-      sky_radiance_(placeholder_sky_radiance()) {
+      atmosphere_(scene.atmosphere),
+      sky_(atmosphere_, to_sun_, scene.camera.position.z) {
   for (const SceneObject& object : scene.objects) {
     tracer_.add_mesh(object.mesh);
     material_of_mesh_.push_back(object.material_index);
@@ -46,21 +44,25 @@ Spectrum Renderer::shade(const Ray& ray, const Hit& hit, uint64_t& rays) const {
   const Spectrum& reflectance = std::get<DiffuseMaterial>(material).reflectance;
 
   const Vec3 point = ray.origin + hit.t * ray.direction;
-  // Uniform placeholder sky, unobstructed: irradiance π·L·(1 + n_z)/2.
-  Spectrum irradiance = sky_radiance_ * static_cast<float>(kPi * 0.5 * (1.0 + normal.z));
+  Spectrum irradiance = sky_.sky_irradiance(normal);
   const double cos_sun = dot(normal, to_sun_);
-  if (cos_sun > 0 && to_sun_.z > 0) {
-    const Ray shadow_ray{point + surface_offset(point) * normal, to_sun_};
-    ++rays;
-    if (!tracer_.occluded(shadow_ray)) irradiance += sun_irradiance_ * static_cast<float>(cos_sun);
+  if (cos_sun > 0) {
+    const Spectrum sun = sky_.direct_sun(point.z);
+    if (!sun.is_black()) {
+      const Ray shadow_ray{point + surface_offset(point) * normal, to_sun_};
+      ++rays;
+      if (!tracer_.occluded(shadow_ray)) irradiance += sun * static_cast<float>(cos_sun);
+    }
   }
-  return reflectance * irradiance * static_cast<float>(1.0 / kPi);
+  // The surface's light, dimmed by the air on its way to the camera, plus the air's own.
+  const ScatteredLight air = sky_.aerial_perspective(ray.direction, hit.t);
+  return reflectance * irradiance * air.transmittance * static_cast<float>(1.0 / kPi) + air.radiance;
 }
 
 Spectrum Renderer::radiance(const Ray& ray, uint64_t& rays) const {
   ++rays;
   const std::optional<Hit> hit = tracer_.intersect(ray);
-  if (!hit) return sky_radiance_;
+  if (!hit) return sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction);
   return shade(ray, *hit, rays);
 }
 

@@ -1,10 +1,12 @@
 // Renders a scene into an image of absolute CIE XYZ (Y in cd/m²).
 //
-// For now (the foundation): the sun is the extraterrestrial solar spectrum,
-// unattenuated, as a directional light; surfaces are Lambertian with hard shadows;
-// the sky is the placeholder of placeholder_sky.h. Pixels are computed independently
-// on a fixed grid of samples, in tiles in parallel, so the output does not depend on
-// the number of threads.
+// Light from the atmosphere model (atmosphere/atmosphere.h): the sun attenuated on its
+// way to each surface, with hard shadows; the unobstructed sky and ground around as
+// the diffuse light on Lambertian surfaces (obstruction by other objects comes with the
+// band sources of §4); the sky and the sun's disc where pixels see no object; and the
+// aerial perspective between the camera and every surface. Pixels are computed
+// independently on a fixed grid of samples, in tiles in parallel, so the output does
+// not depend on the number of threads.
 #pragma once
 
 #include <atomic>
@@ -12,6 +14,7 @@
 #include <functional>
 #include <memory>
 
+#include "skylit/atmosphere/atmosphere.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/io/image.h"
 #include "skylit/render/camera.h"
@@ -29,8 +32,10 @@ struct RenderOptions {
 
 class Renderer {
  public:
-  // Builds the acceleration structure and the spectra the scene needs.
+  // Builds the acceleration structure and the atmosphere's tables for the scene.
   explicit Renderer(const Scene& scene);
+
+  const SkyModel& sky() const { return sky_; }
 
   XyzImage render(const RenderOptions& options = {}) const;
 
@@ -48,8 +53,8 @@ class Renderer {
   RayTracer tracer_;
   std::vector<uint32_t> material_of_mesh_;
   Vec3 to_sun_;
-  Spectrum sun_irradiance_;  // on a plane normal to the sun, W m⁻² nm⁻¹
-  Spectrum sky_radiance_;
+  Atmosphere atmosphere_;
+  SkyModel sky_;
   mutable std::atomic<uint64_t> rays_traced_{0};
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "skylit/atmosphere/atmosphere_settings.h"
 #include "skylit/geometry/triangle_mesh.h"
 #include "skylit/geometry/vec3.h"
 #include "skylit/material/material.h"
@@ -22,9 +23,10 @@ struct Camera {
   double vertical_fov_deg = 50.0;
 };
 
-// Where the sun stands, seen from the site.
+// Where the sun stands, seen from the site: given directly, or computed from the
+// site and the time (io/scene_loader.cpp, NREL SPA).
 struct Sun {
-  double altitude_deg = 45.0;  // above the horizon
+  double altitude_deg = 45.0;  // apparent, above the horizon
   double azimuth_deg = 180.0;  // clockwise from north
 };
 
@@ -44,6 +46,8 @@ struct SceneObject {
 struct Scene {
   Camera camera;
   Sun sun;
+  // The air; its site_elevation_m and earth_sun_distance_au come from `site` and `time`.
+  AtmosphereSettings atmosphere;
   std::vector<NamedMaterial> materials;
   std::vector<SceneObject> objects;
   RenderSettings render;
