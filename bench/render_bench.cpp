@@ -19,11 +19,28 @@ double peak_memory_mib() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
+// The atmosphere's tables for the example's sun and camera: the sun-independent
+// ones (transmittance, multiple scattering, ground sky irradiance) and the sky model
+// (sky view, aerial perspective, sky irradiance on surfaces, direct-sun profile).
+void BM_AtmosphereTables(benchmark::State& state) {
+  const skylit::Scene scene = skylit::load_scene(kExample);
+  const skylit::Vec3 to_sun = skylit::direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
+  for (auto _ : state) {
+    const skylit::Atmosphere atmosphere(scene.atmosphere);
+    const skylit::SkyModel sky(atmosphere, to_sun, scene.camera.position.z);
+    benchmark::DoNotOptimize(&sky);
+  }
+}
+BENCHMARK(BM_AtmosphereTables)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Scene set-up without the atmosphere: loading, meshes, BVH.
 void BM_SceneSetup(benchmark::State& state) {
   for (auto _ : state) {
     const skylit::Scene scene = skylit::load_scene(kExample);
-    const skylit::Renderer renderer(scene);
-    benchmark::DoNotOptimize(&renderer);
+    skylit::RayTracer tracer;
+    for (const skylit::SceneObject& object : scene.objects) tracer.add_mesh(object.mesh);
+    tracer.commit();
+    benchmark::DoNotOptimize(&tracer);
   }
 }
 BENCHMARK(BM_SceneSetup)->Unit(benchmark::kMillisecond)->UseRealTime();

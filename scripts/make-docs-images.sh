@@ -1,8 +1,17 @@
 #!/usr/bin/env bash
-# Remakes the pictures in docs/images/ from the scenes in examples/, so anyone can
-# see what a change did to them. Builds first.
+# Remakes the pictures in docs/images/ from the scenes in examples/ and the sky and
+# spectrum commands, so anyone can see what a change did to them. Builds first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
-build/bin/skylit render examples/building.json --quiet -o docs/images/building.png
-echo "Remade docs/images/"
+skylit=build/bin/skylit
+out=docs/images
+mkdir -p "$out"
+$skylit render examples/building.json --quiet -o "$out/building.png"
+for altitude in 60 17 4 -4; do
+  $skylit sky --sun-altitude "$altitude" --sun-azimuth 180 --projection fisheye --size 256 -o "$out/sky-fisheye-$altitude.png"
+done
+$skylit sky --sun-altitude 4 --sun-azimuth 180 --projection equirect --size 256 -o "$out/sky-equirect-4.png"
+$skylit spectrum --sun-altitude 30 --plot "$out/spectrum-30.svg"
+$skylit spectrum --sun-altitude 30 --plot "$out/spectrum-30.png"
+echo "Remade $out/"

@@ -16,4 +16,10 @@ CommandRunner add_render_command(CLI::App& app);
 // `skylit sun --lat DEG --lon DEG --time ISO8601 [--json]`
 CommandRunner add_sun_command(CLI::App& app);
 
+// `skylit sky --sun-altitude DEG ... --projection fisheye|equirect --size N -o OUT`
+CommandRunner add_sky_command(CLI::App& app);
+
+// `skylit spectrum --sun-altitude DEG ... [--csv] [--plot FILE]`
+CommandRunner add_spectrum_command(CLI::App& app);
+
 }  // namespace skylit::cli

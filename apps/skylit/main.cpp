@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   const std::vector<skylit::cli::CommandRunner> commands = {
       skylit::cli::add_render_command(app),
       skylit::cli::add_sun_command(app),
+      skylit::cli::add_sky_command(app),
+      skylit::cli::add_spectrum_command(app),
   };
   try {
     app.parse(argc, argv);

@@ -37,6 +37,14 @@ Spectrum Atmosphere::direct_sun(double height_m, double sun_elevation_rad) const
   return extraterrestrial_ * transmittance_.to_top(ground_radius() + std::max(0.0, height_m), std::sin(sun_elevation_rad));
 }
 
+Spectrum Atmosphere::direct_sun_exact(double height_m, double sun_elevation_rad) const {
+  const double r = ground_radius() + std::max(0.0, height_m), mu = std::sin(sun_elevation_rad);
+  if (shell::hits_ground(r, mu, ground_radius())) return Spectrum(0.0f);
+  const ColumnDensities c =
+      column_densities(medium_, r, mu, shell::distance_to_outer_sphere(r, mu, transmittance_.top_radius()));
+  return extraterrestrial_ * transmittance_of(medium_.extinction(c.rayleigh, c.aerosol, c.ozone));
+}
+
 SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double observer_height_m)
     : atmosphere_(atmosphere),
       to_sun_(normalize(to_sun)),
@@ -48,14 +56,7 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
   // Direct sunlight against height, with exact column densities toward the sun.
   for (int k = 0; k < kDirectSunProfileSize; ++k) {
     const double u = static_cast<double>(k) / (kDirectSunProfileSize - 1);
-    const double r = ground + kDirectSunProfileTopM * u * u;
-    const double top = atmosphere.transmittance().top_radius();
-    Spectrum direct(0.0f);
-    if (!shell::hits_ground(r, to_sun_.z, ground)) {
-      const ColumnDensities c = column_densities(atmosphere.medium(), r, to_sun_.z, shell::distance_to_outer_sphere(r, to_sun_.z, top));
-      direct = sun * transmittance_of(atmosphere.medium().extinction(c.rayleigh, c.aerosol, c.ozone));
-    }
-    direct_sun_profile_.push_back(direct);
+    direct_sun_profile_.push_back(atmosphere.direct_sun_exact(kDirectSunProfileTopM * u * u, sun_elevation_));
   }
   sun_through_air_ = direct_sun(observer_radius_ - ground);
   observer_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
@@ -75,6 +76,10 @@ Spectrum SkyModel::direct_sun(double height_m) const {
 
 Spectrum SkyModel::sky_radiance(const Vec3& direction) const {
   return observer_view_->radiance(relative_direction(direction, to_sun_));
+}
+
+Spectrum SkyModel::sky_radiance_near_ground(const Vec3& direction) const {
+  return (ground_view_ ? *ground_view_ : *observer_view_).radiance(relative_direction(direction, to_sun_));
 }
 
 Spectrum SkyModel::sun_radiance(const Vec3& direction) const {

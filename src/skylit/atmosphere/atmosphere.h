@@ -32,8 +32,10 @@ class Atmosphere {
   // W m⁻² nm⁻¹ at the top of the atmosphere, for the date's Earth–Sun distance.
   const Spectrum& extraterrestrial_irradiance() const { return extraterrestrial_; }
   // Direct sunlight on a plane normal to the sun at `height_m` above the ground; 0 when
-  // the sun's centre is below the horizon there.
+  // the sun's centre is below the horizon there. From the transmittance table, and
+  // exactly (quadrature of the column densities toward the sun).
   Spectrum direct_sun(double height_m, double sun_elevation_rad) const;
+  Spectrum direct_sun_exact(double height_m, double sun_elevation_rad) const;
 
  private:
   AtmosphereSettings settings_;
@@ -57,6 +59,9 @@ class SkyModel {
   // Radiance of the sky (and of the ground far below the horizon) seen by the
   // observer, without the sun's disc.
   Spectrum sky_radiance(const Vec3& direction) const;
+  // The same for a point near the ground (where the scene's surfaces are), whatever the
+  // observer's height: the light that reaches surfaces from the sky and the far ground.
+  Spectrum sky_radiance_near_ground(const Vec3& direction) const;
   // The sun's disc as the observer sees it (limb-darkened, attenuated); 0 off the disc.
   Spectrum sun_radiance(const Vec3& direction) const;
   // What the air adds and lets through between the observer and a surface.

@@ -123,28 +123,31 @@ std::vector<ScatteredLight> ScatteringIntegrator::up_to(double r, double mu, dou
   return out;
 }
 
+Spectrum ScatteringIntegrator::horizontal_irradiance(double r, double mu_sun, int zenith_steps, int azimuth_steps,
+                                                     int segments) const {
+  // With v = cos²θ, cos θ sin θ dθ = ½ dv: equal steps in v carry equal weights of the
+  // cosine law; each sample stands for π/(zenith_steps · azimuth_steps) of the π total.
+  const double sin_sun = std::sqrt(std::max(0.0, 1.0 - mu_sun * mu_sun));
+  Spectrum sum;
+  for (int z = 0; z < zenith_steps; ++z) {
+    const double mu = std::sqrt((z + 0.5) / zenith_steps);
+    const double sin_view = std::sqrt(1.0 - mu * mu);
+    for (int a = 0; a < azimuth_steps; ++a) {
+      const double phi = kPi * (a + 0.5) / azimuth_steps;
+      const double nu = mu * mu_sun + sin_view * sin_sun * std::cos(phi);
+      sum += along_ray(r, mu, mu_sun, nu, segments).radiance;
+    }
+  }
+  return sum * static_cast<float>(kPi / (zenith_steps * azimuth_steps));
+}
+
 GroundIrradianceTable ScatteringIntegrator::ground_irradiance(const ScatteringIntegrator& sky) {
-  // ∫ L cos θ dω over the upper hemisphere: midpoint rule in cos θ (which absorbs the
-  // cos θ sin θ dθ weight as ½ d(cos²θ)) and in azimuth, mirrored about the sun's plane.
   constexpr int kZenith = 8, kAzimuth = 8, kSegments = 24;
   const double r = sky.transmittance_.ground_radius();
   std::vector<Spectrum> table(static_cast<size_t>(GroundIrradianceTable::kSize));
   tbb::parallel_for(0, GroundIrradianceTable::kSize, [&](int i) {
     const double mu_sun = -1.0 + 2.0 * i / (GroundIrradianceTable::kSize - 1);
-    const double sin_sun = std::sqrt(std::max(0.0, 1.0 - mu_sun * mu_sun));
-    Spectrum sum;
-    for (int z = 0; z < kZenith; ++z) {
-      // Equal steps in cos²θ: each band carries the same weight of the cosine law.
-      const double mu = std::sqrt((z + 0.5) / kZenith);
-      const double sin_view = std::sqrt(1.0 - mu * mu);
-      for (int a = 0; a < kAzimuth; ++a) {
-        const double phi = kPi * (a + 0.5) / kAzimuth;
-        const double nu = mu * mu_sun + sin_view * sin_sun * std::cos(phi);
-        sum += sky.along_ray(r, mu, mu_sun, nu, kSegments).radiance;
-      }
-    }
-    // Each sample stands for π/(kZenith·kAzimuth) of the cosine-weighted hemisphere (π in all).
-    table[static_cast<size_t>(i)] = sum * static_cast<float>(kPi / (kZenith * kAzimuth));
+    table[static_cast<size_t>(i)] = sky.horizontal_irradiance(r, mu_sun, kZenith, kAzimuth, kSegments);
   });
   return GroundIrradianceTable(std::move(table));
 }

@@ -49,6 +49,11 @@ class ScatteringIntegrator {
   std::vector<ScatteredLight> up_to(double r, double mu, double mu_sun, double nu,
                                     const std::vector<double>& stops) const;
 
+  // Irradiance from the sky on a horizontal plane at radius r (per unit solar
+  // irradiance): ∫ L cos θ dω over the upper hemisphere by a midpoint rule in cos²θ and
+  // azimuth (mirrored about the sun's vertical plane).
+  Spectrum horizontal_irradiance(double r, double mu_sun, int zenith_steps, int azimuth_steps, int segments) const;
+
   // The sky irradiance table for the ground, built with this integrator.
   static GroundIrradianceTable ground_irradiance(const ScatteringIntegrator& sky_only);
 

@@ -7,6 +7,7 @@
 #include <cfloat>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "skylit/io/image.h"
@@ -23,6 +24,9 @@ Bytes encode_pfm(const XyzImage& image);
 Bytes encode_rgbe(const XyzImage& image);
 // PNG of display_srgb8: 8-bit sRGB with an sRGB chunk.
 Bytes encode_png(const XyzImage& image, const DisplayOptions& options);
+// PNG of `width` × `height` 8-bit sRGB pixels (3 per pixel, rows top to bottom), with an
+// sRGB chunk: encode_png's last step, shared with figures (raster.h).
+Bytes encode_png_rgb8(int width, int height, std::span<const uint8_t> rgb);
 
 // Pixel `index` (0 … width·height − 1) as doubles; a pixel with any non-finite
 // component is black, so that no writer ever emits NaN or Inf.

@@ -1,6 +1,7 @@
-// PNG output: the display image of display_srgb8 (tone_map.h), 8-bit RGB, through
-// libpng's simplified API, which writes an sRGB chunk for 8-bit data and no tIME
-// chunk, so the bytes depend only on the pixels (and the zlib version).
+// PNG output: the display image of display_srgb8 (tone_map.h), and any other 8-bit RGB
+// picture (figures: raster.h), through libpng's simplified API, which writes an sRGB
+// chunk for 8-bit data and no tIME chunk, so the bytes depend only on the pixels (and
+// the zlib version).
 #include <png.h>
 
 #include <stdexcept>
@@ -11,11 +12,17 @@
 namespace skylit {
 
 Bytes encode_png(const XyzImage& image, const DisplayOptions& options) {
-  const std::vector<uint8_t> pixels = display_srgb8(image, options);
+  return encode_png_rgb8(image.width, image.height, display_srgb8(image, options));
+}
+
+Bytes encode_png_rgb8(int width, int height, std::span<const uint8_t> pixels) {
+  if (width <= 0 || height <= 0 || pixels.size() != 3 * static_cast<std::size_t>(width) * height)
+    throw std::invalid_argument("encode_png_rgb8: " + std::to_string(pixels.size()) + " bytes for " +
+                                std::to_string(width) + "x" + std::to_string(height) + " pixels");
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
-  png.width = static_cast<png_uint_32>(image.width);
-  png.height = static_cast<png_uint_32>(image.height);
+  png.width = static_cast<png_uint_32>(width);
+  png.height = static_cast<png_uint_32>(height);
   png.format = PNG_FORMAT_RGB;
   // First call sizes the output, second fills it (libpng 1.6 png_image_write_to_memory).
   png_alloc_size_t size = 0;

@@ -1,0 +1,67 @@
+// `skylit sky` and `skylit spectrum` as a user runs them.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "../test_support.h"
+#include "skylit/atmosphere/atmosphere.h"
+
+namespace skylit {
+namespace {
+
+using testing::run_skylit;
+
+TEST(SkyCommand, WritesAnEquirectImageOfTwiceTheSize) {
+  testing::TempDir dir;
+  const auto out = dir.path() / "sky.pfm";
+  const auto r = run_skylit("sky --sun-altitude 17 --projection equirect --size 16 -o '" + out.string() + "'");
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const std::string pfm = testing::read_file(out);
+  EXPECT_EQ(pfm.rfind("PF\n32 16\n", 0), 0u) << pfm.substr(0, 12);
+}
+
+TEST(SkyCommand, BadValuesExitTwo) {
+  EXPECT_EQ(run_skylit("sky --sun-altitude 95 --size 16 -o /tmp/x.png").exit_status, 2);
+  EXPECT_EQ(run_skylit("sky --sun-altitude 10 --projection mercator --size 16 -o /tmp/x.png").exit_status, 2);
+  EXPECT_EQ(run_skylit("sky --sun-altitude 10 --size 16 -o /tmp/x.gif").exit_status, 2);
+}
+
+TEST(SpectrumCommand, CsvHasEveryNanometreAndMatchesTheModel) {
+  const auto r = run_skylit("spectrum --sun-altitude 60 --csv");
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  std::istringstream lines(r.output);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "wavelength_nm,direct_normal_W_m2_nm,diffuse_horizontal_W_m2_nm,zenith_radiance_W_m2_sr_nm");
+  int expected_nm = 380;
+  double direct_550 = 0;
+  while (std::getline(lines, line)) {
+    double nm, direct, diffuse, zenith;
+    char c1, c2, c3;
+    std::istringstream row(line);
+    ASSERT_TRUE(row >> nm >> c1 >> direct >> c2 >> diffuse >> c3 >> zenith) << line;
+    EXPECT_EQ(nm, expected_nm++);
+    EXPECT_GT(direct, diffuse);  // a clear sky, the sun high
+    EXPECT_GT(diffuse, 0);
+    EXPECT_GT(zenith, 0);
+    if (nm == 550) direct_550 = direct;
+  }
+  EXPECT_EQ(expected_nm, 781);
+  // The same quantity from the library in the 1 nm band at 550 nm.
+  AtmosphereSettings settings;
+  const Atmosphere atmosphere(settings, SpectralBands::consecutive(550.0, 1.0));
+  EXPECT_NEAR(direct_550, atmosphere.direct_sun_exact(1.6, radians(60.0))[0], 1e-5 * direct_550 + 1e-6);
+}
+
+TEST(SpectrumCommand, PlotIsWritten) {
+  testing::TempDir dir;
+  const auto out = dir.path() / "spectrum.svg";
+  const auto r = run_skylit("spectrum --sun-altitude 4 --model paper --plot '" + out.string() + "'");
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const std::string svg = testing::read_file(out);
+  EXPECT_NE(svg.find("direct normal irradiance"), std::string::npos);
+  EXPECT_NE(svg.find("wavelength (nm)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace skylit
