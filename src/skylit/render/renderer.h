@@ -1,24 +1,27 @@
 // Renders a scene into an image of absolute CIE XYZ (Y in cd/m²).
 //
 // Light from the atmosphere model (atmosphere/atmosphere.h): the sun attenuated on its
-// way to each surface, with hard shadows; the unobstructed sky and ground around as
-// the diffuse light on Lambertian surfaces (obstruction by other objects comes with the
-// band sources of §4); the sky and the sun's disc where pixels see no object; and the
-// aerial perspective between the camera and every surface. Pixels are computed
-// independently on a fixed grid of samples, in tiles in parallel, so the output does
-// not depend on the number of threads.
+// way to each surface, with hard shadows; the sky dome's band sources on Lambertian
+// surfaces, hidden by obstacles that send back their own light (sky/sky_light.h), kept
+// in a screen-space cache (surface_cache.h); the sky and the sun's disc where pixels see
+// no object; and the aerial perspective between the camera and every surface. Pixels
+// are computed independently on a fixed grid of samples, in tiles in parallel, so the
+// output does not depend on the number of threads.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/io/image.h"
 #include "skylit/render/camera.h"
 #include "skylit/render/scene.h"
+#include "skylit/render/surface_cache.h"
+#include "skylit/sky/sky_light.h"
 #include "skylit/spectrum/spectrum.h"
 
 namespace skylit {
@@ -36,18 +39,28 @@ class Renderer {
   explicit Renderer(const Scene& scene);
 
   const SkyModel& sky() const { return sky_; }
+  const SkyLight& sky_light() const { return *sky_light_; }
 
   XyzImage render(const RenderOptions& options = {}) const;
 
-  // Spectral radiance arriving along the ray (W m⁻² sr⁻¹ nm⁻¹); adds the rays it
-  // traces to `rays`.
+  // Spectral radiance arriving along the ray (W m⁻² sr⁻¹ nm⁻¹), with the sky light
+  // computed exactly at the point hit (no cache); adds the rays it traces to `rays`.
   Spectrum radiance(const Ray& ray, uint64_t& rays) const;
 
-  // Rays traced since construction (camera and shadow rays), for the benchmark.
+  // Rays traced since construction, for the benchmark.
   uint64_t rays_traced() const { return rays_traced_.load(std::memory_order_relaxed); }
 
  private:
-  Spectrum shade(const Ray& ray, const Hit& hit, uint64_t& rays) const;
+  // The surface point a ray meets, facing the ray's origin.
+  SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
+  // The sun's irradiance on a surface point (0 in shadow).
+  Spectrum sun_irradiance(const SurfacePoint& point, uint64_t& rays) const;
+  // What the camera sees of a surface: its light through the air, plus the air's own.
+  Spectrum shade(const Ray& ray, const Hit& hit, const Spectrum& sky_irradiance, uint64_t& rays) const;
+  // The light a hit obstacle sends back along `ray`, for the sky light's one bounce:
+  // Lambertian, lit by the sun and the unobstructed sky.
+  Spectrum obstacle_radiance(const Ray& ray, const Hit& hit, uint64_t& rays) const;
+  const Spectrum& reflectance_of(const Hit& hit) const;
 
   const Scene& scene_;
   RayTracer tracer_;
@@ -55,6 +68,7 @@ class Renderer {
   Vec3 to_sun_;
   Atmosphere atmosphere_;
   SkyModel sky_;
+  std::unique_ptr<SkyLight> sky_light_;
   mutable std::atomic<uint64_t> rays_traced_{0};
 };
 

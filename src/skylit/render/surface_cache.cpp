@@ -1,0 +1,110 @@
+#include "skylit/render/surface_cache.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+namespace skylit {
+
+bool same_surface(const SurfacePoint& cached, const SurfacePoint& point) {
+  if (dot(cached.normal, point.normal) < 0.95) return false;
+  const Vec3 offset = point.position - cached.position;
+  const double plane_distance = std::abs(dot(cached.normal, offset));
+  return plane_distance < 1e-3 * point.distance + 1e-3 && length(offset) < 0.1 * point.distance + 0.5;
+}
+
+SurfaceCache::Grid::Grid(int width, int height, int spacing)
+    : width_(width),
+      height_(height),
+      spacing_(spacing),
+      grid_width_((width - 1 + spacing - 1) / spacing + 1),
+      grid_height_((height - 1 + spacing - 1) / spacing + 1),
+      entries_(static_cast<size_t>(grid_width_ * grid_height_)) {}
+
+void SurfaceCache::Grid::cell(double x, double y, int& gx, int& gy, double& tx, double& ty) const {
+  // Grid point g stands at the centre of pixel min(g·spacing, size − 1).
+  auto locate = [this](double at, int grid, auto pixel_of, int& g, double& t) {
+    g = std::clamp(static_cast<int>(std::floor((at - 0.5) / spacing_)), 0, std::max(0, grid - 2));
+    const double p0 = pixel_of(g) + 0.5, p1 = pixel_of(std::min(g + 1, grid - 1)) + 0.5;
+    t = p1 > p0 ? std::clamp((at - p0) / (p1 - p0), 0.0, 1.0) : 0.0;
+  };
+  locate(x, grid_width_, [this](int g) { return pixel_x(g); }, gx, tx);
+  locate(y, grid_height_, [this](int g) { return pixel_y(g); }, gy, ty);
+}
+
+std::optional<Spectrum> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point) const {
+  int gx, gy;
+  double tx, ty;
+  cell(x, y, gx, gy, tx, ty);
+  Spectrum sum;
+  double total = 0;
+  for (int dy = 0; dy <= 1; ++dy) {
+    for (int dx = 0; dx <= 1; ++dx) {
+      const Entry& e = entries_[index(std::min(gx + dx, grid_width_ - 1), std::min(gy + dy, grid_height_ - 1))];
+      if (!e.valid || !same_surface(e.point, point)) continue;
+      // Bilinear weights, kept off zero so that a lone compatible corner still counts.
+      const double w = std::max(dx ? tx : 1.0 - tx, 1e-3) * std::max(dy ? ty : 1.0 - ty, 1e-3);
+      sum += e.value * static_cast<float>(w);
+      total += w;
+    }
+  }
+  if (total <= 0) return std::nullopt;
+  return sum * static_cast<float>(1.0 / total);
+}
+
+void SurfaceCache::Grid::set(int gx, int gy, const SurfacePoint& point, const Spectrum& value) {
+  Entry& e = entries_[index(gx, gy)];
+  e.valid = true;
+  e.point = point;
+  e.value = value;
+}
+
+int SurfaceCache::Grid::computed() const {
+  int n = 0;
+  for (const Entry& e : entries_) n += e.valid ? 1 : 0;
+  return n;
+}
+
+void SurfaceCache::compute_wanted(Grid& grid, const std::vector<std::optional<SurfacePoint>>& pixels, int width,
+                                  const Compute& compute) {
+  tbb::parallel_for(0, grid.grid_height(), [&](int gy) {
+    for (int gx = 0; gx < grid.grid_width(); ++gx) {
+      if (!grid.wanted(gx, gy)) continue;
+      const std::optional<SurfacePoint>& p = pixels[static_cast<size_t>(grid.pixel_y(gy) * width + grid.pixel_x(gx))];
+      if (p) grid.set(gx, gy, *p, compute(*p));
+    }
+  });
+}
+
+SurfaceCache::SurfaceCache(int width, int height, const Locate& locate, const Compute& compute)
+    : coarse_(width, height, kCoarseSpacing), fine_(width, height, kFineSpacing) {
+  std::vector<std::optional<SurfacePoint>> pixels(static_cast<size_t>(width * height));
+  tbb::parallel_for(0, height, [&](int y) {
+    for (int x = 0; x < width; ++x) pixels[static_cast<size_t>(y * width + x)] = locate(x, y);
+  });
+  for (int gy = 0; gy < coarse_.grid_height(); ++gy)
+    for (int gx = 0; gx < coarse_.grid_width(); ++gx) coarse_.want(gx, gy);
+  compute_wanted(coarse_, pixels, width, compute);
+  // The fine grid around every pixel whose surface the coarse grid does not cover.
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::optional<SurfacePoint>& p = pixels[static_cast<size_t>(y * width + x)];
+      if (!p || coarse_.interpolate(x + 0.5, y + 0.5, *p)) continue;
+      int gx, gy;
+      double tx, ty;
+      fine_.cell(x + 0.5, y + 0.5, gx, gy, tx, ty);
+      for (int dy = 0; dy <= 1; ++dy)
+        for (int dx = 0; dx <= 1; ++dx)
+          fine_.want(std::min(gx + dx, fine_.grid_width() - 1), std::min(gy + dy, fine_.grid_height() - 1));
+    }
+  }
+  compute_wanted(fine_, pixels, width, compute);
+}
+
+std::optional<Spectrum> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {
+  if (auto value = coarse_.interpolate(x, y, point)) return value;
+  return fine_.interpolate(x, y, point);
+}
+
+}  // namespace skylit

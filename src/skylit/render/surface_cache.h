@@ -1,0 +1,84 @@
+// A screen-space cache of smooth, costly quantities (the obstructed sky light on
+// surfaces): computed exactly at the surface points seen through a sparse grid of pixel
+// centres, then interpolated for the samples in between from the grid points that lie
+// on the same surface. Where a pixel's surface has no such grid point around it (edges,
+// small objects), a finer grid is computed there; a sample that still finds none gets
+// its own exact value from the caller. Sky light changes slowly along a surface, so this
+// costs no visible accuracy, makes no noise, and is deterministic: every value is a
+// function of its surface point alone.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "skylit/geometry/vec3.h"
+#include "skylit/spectrum/spectrum.h"
+
+namespace skylit {
+
+// Where a camera ray meets a surface.
+struct SurfacePoint {
+  Vec3 position;
+  Vec3 normal;      // unit, facing the camera
+  double distance;  // from the camera
+};
+
+// Whether a cached point can stand in for `point`: the same plane (normals within ~18°,
+// the point within 1 mm per metre of distance of the cached point's plane) and near.
+bool same_surface(const SurfacePoint& cached, const SurfacePoint& point);
+
+class SurfaceCache {
+ public:
+  using Locate = std::function<std::optional<SurfacePoint>(int pixel_x, int pixel_y)>;
+  using Compute = std::function<Spectrum(const SurfacePoint&)>;
+
+  // Coarse and fine grid spacings in pixels.
+  static constexpr int kCoarseSpacing = 16, kFineSpacing = 4;
+
+  // Locates the surface at every pixel centre, computes the coarse grid, and the fine
+  // grid where the coarse one does not cover a pixel's surface; in parallel.
+  SurfaceCache(int width, int height, const Locate& locate, const Compute& compute);
+
+  // The value for a surface point seen at image position (x, y) in pixels; none if no
+  // grid point around it lies on its surface.
+  std::optional<Spectrum> interpolate(double x, double y, const SurfacePoint& point) const;
+
+  // Grid points computed, coarse and fine (for the benchmark and tests).
+  int coarse_points() const { return coarse_.computed(); }
+  int fine_points() const { return fine_.computed(); }
+
+ private:
+  class Grid {
+   public:
+    Grid(int width, int height, int spacing);
+    int grid_width() const { return grid_width_; }
+    int grid_height() const { return grid_height_; }
+    int pixel_x(int gx) const { return std::min(gx * spacing_, width_ - 1); }
+    int pixel_y(int gy) const { return std::min(gy * spacing_, height_ - 1); }
+    // The cell containing image position (x, y) and the position's place in it.
+    void cell(double x, double y, int& gx, int& gy, double& tx, double& ty) const;
+    std::optional<Spectrum> interpolate(double x, double y, const SurfacePoint& point) const;
+    void set(int gx, int gy, const SurfacePoint& point, const Spectrum& value);
+    bool wanted(int gx, int gy) const { return entries_[index(gx, gy)].wanted; }
+    void want(int gx, int gy) { entries_[index(gx, gy)].wanted = true; }
+    int computed() const;
+
+   private:
+    struct Entry {
+      bool wanted = false, valid = false;
+      SurfacePoint point;
+      Spectrum value;
+    };
+    size_t index(int gx, int gy) const { return static_cast<size_t>(gy * grid_width_ + gx); }
+    int width_, height_, spacing_, grid_width_, grid_height_;
+    std::vector<Entry> entries_;
+  };
+
+  static void compute_wanted(Grid& grid, const std::vector<std::optional<SurfacePoint>>& pixels, int width,
+                             const Compute& compute);
+
+  Grid coarse_, fine_;
+};
+
+}  // namespace skylit
