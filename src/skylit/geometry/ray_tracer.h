@@ -3,6 +3,9 @@
 // behind this interface, so no Embree header is seen by users of the library.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -24,6 +27,14 @@ struct Ray {
   double t_min = 0;
   double t_max = std::numeric_limits<double>::infinity();
 };
+
+// The origin for a ray leaving a surface at `point` on the side of `normal`. Embree
+// works in single precision, so a hit point is known to about 1e-7 of the coordinates'
+// magnitude; the offset stays well above that, so the ray does not hit its own surface.
+inline Vec3 offset_from_surface(const Vec3& point, const Vec3& normal) {
+  const double magnitude = std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+  return point + (1e-4 + 2e-6 * magnitude) * normal;
+}
 
 struct Hit {
   double t;

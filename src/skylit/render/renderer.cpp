@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "skylit/material/reflection.h"
 #include "skylit/spectrum/cie.h"
 
 namespace skylit {
@@ -15,12 +16,6 @@ namespace skylit {
 namespace {
 
 constexpr int kTileSize = 32;
-
-// Offset for rays leaving a surface. Embree works in single precision, so a hit point
-// is known to about 1e-7 of the coordinates' magnitude; stay well above that.
-double surface_offset(const Vec3& p) {
-  return 1e-4 + 2e-6 * std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-}
 
 }  // namespace
 
@@ -38,40 +33,61 @@ Renderer::Renderer(const Scene& scene)
       sky_, tracer_, [this](const Ray& ray, const Hit& hit, uint64_t& rays) { return obstacle_radiance(ray, hit, rays); });
 }
 
-const Spectrum& Renderer::reflectance_of(const Hit& hit) const {
-  return std::get<DiffuseMaterial>(scene_.materials[material_of_mesh_[hit.mesh_id]].material).reflectance;
-}
-
 SurfacePoint Renderer::surface_point(const Ray& ray, const Hit& hit) const {
   // Two-sided surfaces: use the side facing the ray's origin.
   Vec3 normal = hit.geometric_normal;
   if (dot(normal, ray.direction) > 0) normal = -normal;
-  return {ray.origin + hit.t * ray.direction, normal, hit.t};
+  return {ray.origin + hit.t * ray.direction, normal, hit.t, material_of_mesh_[hit.mesh_id]};
 }
 
-Spectrum Renderer::sun_irradiance(const SurfacePoint& point, uint64_t& rays) const {
-  const double cos_sun = dot(point.normal, to_sun_);
-  if (cos_sun <= 0) return Spectrum(0.0f);
+Spectrum Renderer::sun_reaching(const SurfacePoint& point, uint64_t& rays) const {
+  if (dot(point.normal, to_sun_) <= 0) return Spectrum(0.0f);
   const Spectrum sun = sky_.direct_sun(point.position.z);
   if (sun.is_black()) return sun;
   ++rays;
-  const Ray shadow_ray{point.position + surface_offset(point.position) * point.normal, to_sun_};
-  if (tracer_.occluded(shadow_ray)) return Spectrum(0.0f);
-  return sun * static_cast<float>(cos_sun);
+  if (tracer_.occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_})) return Spectrum(0.0f);
+  return sun;
 }
 
 Spectrum Renderer::obstacle_radiance(const Ray& ray, const Hit& hit, uint64_t& rays) const {
   const SurfacePoint point = surface_point(ray, hit);
-  const Spectrum irradiance = sky_.sky_irradiance(point.normal) + sun_irradiance(point, rays);
-  return reflectance_of(hit) * irradiance * static_cast<float>(1.0 / kPi);
+  const Spectrum irradiance =
+      sky_.sky_irradiance(point.normal) + sun_reaching(point, rays) * static_cast<float>(dot(point.normal, to_sun_));
+  const Spectrum albedo = diffuse_albedo(material_of(point), -dot(point.normal, ray.direction));
+  return albedo * irradiance * static_cast<float>(1.0 / kPi);
 }
 
-Spectrum Renderer::shade(const Ray& ray, const Hit& hit, const Spectrum& sky_irradiance, uint64_t& rays) const {
-  const SurfacePoint point = surface_point(ray, hit);
-  const Spectrum irradiance = sky_irradiance + sun_irradiance(point, rays);
+CachedSkyLight Renderer::sky_light_at(const SurfacePoint& point, const Vec3& to_viewer, uint64_t& rays) const {
+  const Material& material = material_of(point);
+  return {sky_light_->diffuse_irradiance(point.position, point.normal, rays),
+          sky_light_->specular_radiance(point.position, point.normal, to_viewer, material, rays)};
+}
+
+Spectrum Renderer::mirrored(const SurfacePoint& point, const Vec3& direction, uint64_t& rays) const {
+  const Ray ray{offset_from_surface(point.position, point.normal), direction};
+  ++rays;
+  if (const std::optional<Hit> hit = tracer_.intersect(ray)) return obstacle_radiance(ray, *hit, rays);
+  return sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction);
+}
+
+Spectrum Renderer::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light,
+                         uint64_t& rays) const {
+  const Material& material = material_of(point);
+  const Vec3 to_viewer = -ray.direction;
+  const Spectrum sun = sun_reaching(point, rays);
+  // Lambertian part: sky and sun irradiance.
+  const Spectrum irradiance = sky_light.diffuse_irradiance + sun * static_cast<float>(dot(point.normal, to_sun_));
+  Spectrum radiance = diffuse_albedo(material, dot(point.normal, to_viewer)) * irradiance * static_cast<float>(1.0 / kPi);
+  // Glossy part: the sky's (cached) and the sun's highlight.
+  radiance += sky_light.specular_radiance;
+  if (has_specular(material) && !sun.is_black())
+    radiance += specular_reflection(material, point.normal, to_sun_, to_viewer) * sun;
+  // Mirror part (window glass): what lies in the mirror direction.
+  if (const std::optional<Spectrum> mirror = mirror_reflectance(material, point.normal, to_viewer))
+    radiance += *mirror * mirrored(point, mirror_direction(point.normal, to_viewer), rays);
   // The surface's light, dimmed by the air on its way to the camera, plus the air's own.
-  const ScatteredLight air = sky_.aerial_perspective(ray.direction, hit.t);
-  return reflectance_of(hit) * irradiance * air.transmittance * static_cast<float>(1.0 / kPi) + air.radiance;
+  const ScatteredLight air = sky_.aerial_perspective(ray.direction, point.distance);
+  return radiance * air.transmittance + air.radiance;
 }
 
 Spectrum Renderer::radiance(const Ray& ray, uint64_t& rays) const {
@@ -79,7 +95,7 @@ Spectrum Renderer::radiance(const Ray& ray, uint64_t& rays) const {
   const std::optional<Hit> hit = tracer_.intersect(ray);
   if (!hit) return sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction);
   const SurfacePoint point = surface_point(ray, *hit);
-  return shade(ray, *hit, sky_light_->diffuse_irradiance(point.position, point.normal, rays), rays);
+  return shade(ray, point, sky_light_at(point, -ray.direction, rays), rays);
 }
 
 XyzImage Renderer::render(const RenderOptions& options) const {
@@ -104,9 +120,9 @@ XyzImage Renderer::render(const RenderOptions& options) const {
         },
         [&](const SurfacePoint& p) {
           uint64_t rays = 0;
-          const Spectrum e = sky_light_->diffuse_irradiance(p.position, p.normal, rays);
+          const CachedSkyLight light = sky_light_at(p, normalize(scene_.camera.position - p.position), rays);
           cache_rays.fetch_add(rays, std::memory_order_relaxed);
-          return e;
+          return light;
         });
   });
   rays_traced_.fetch_add(cache_rays.load(), std::memory_order_relaxed);
@@ -123,9 +139,9 @@ XyzImage Renderer::render(const RenderOptions& options) const {
     const std::optional<Hit> hit = tracer_.intersect(ray);
     if (!hit) return sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction);
     const SurfacePoint point = surface_point(ray, *hit);
-    std::optional<Spectrum> sky_irradiance = cache->interpolate(x, y, point);
-    if (!sky_irradiance) sky_irradiance = sky_light_->diffuse_irradiance(point.position, point.normal, rays);
-    return shade(ray, *hit, *sky_irradiance, rays);
+    std::optional<CachedSkyLight> sky_light = cache->interpolate(x, y, point);
+    if (!sky_light) sky_light = sky_light_at(point, -ray.direction, rays);
+    return shade(ray, point, *sky_light, rays);
   };
 
   auto render_tile = [&](int tile) {

@@ -53,14 +53,20 @@ class Renderer {
  private:
   // The surface point a ray meets, facing the ray's origin.
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
-  // The sun's irradiance on a surface point (0 in shadow).
-  Spectrum sun_irradiance(const SurfacePoint& point, uint64_t& rays) const;
+  const Material& material_of(const SurfacePoint& point) const { return scene_.materials[point.material].material; }
+  // The sun's direct normal irradiance at a surface point if it reaches it (0 in
+  // shadow or behind the surface).
+  Spectrum sun_reaching(const SurfacePoint& point, uint64_t& rays) const;
+  // The sky's light at a surface point, exactly (what the cache holds).
+  CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& to_viewer, uint64_t& rays) const;
   // What the camera sees of a surface: its light through the air, plus the air's own.
-  Spectrum shade(const Ray& ray, const Hit& hit, const Spectrum& sky_irradiance, uint64_t& rays) const;
+  Spectrum shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light, uint64_t& rays) const;
+  // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
+  // or the sky and the sun.
+  Spectrum mirrored(const SurfacePoint& point, const Vec3& direction, uint64_t& rays) const;
   // The light a hit obstacle sends back along `ray`, for the sky light's one bounce:
-  // Lambertian, lit by the sun and the unobstructed sky.
+  // its Lambertian part, lit by the sun and the unobstructed sky.
   Spectrum obstacle_radiance(const Ray& ray, const Hit& hit, uint64_t& rays) const;
-  const Spectrum& reflectance_of(const Hit& hit) const;
 
   const Scene& scene_;
   RayTracer tracer_;

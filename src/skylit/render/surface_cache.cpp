@@ -8,7 +8,7 @@
 namespace skylit {
 
 bool same_surface(const SurfacePoint& cached, const SurfacePoint& point) {
-  if (dot(cached.normal, point.normal) < 0.95) return false;
+  if (cached.material != point.material || dot(cached.normal, point.normal) < 0.95) return false;
   const Vec3 offset = point.position - cached.position;
   const double plane_distance = std::abs(dot(cached.normal, offset));
   return plane_distance < 1e-3 * point.distance + 1e-3 && length(offset) < 0.1 * point.distance + 0.5;
@@ -33,11 +33,11 @@ void SurfaceCache::Grid::cell(double x, double y, int& gx, int& gy, double& tx, 
   locate(y, grid_height_, [this](int g) { return pixel_y(g); }, gy, ty);
 }
 
-std::optional<Spectrum> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point) const {
+std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point) const {
   int gx, gy;
   double tx, ty;
   cell(x, y, gx, gy, tx, ty);
-  Spectrum sum;
+  CachedSkyLight sum;
   double total = 0;
   for (int dy = 0; dy <= 1; ++dy) {
     for (int dx = 0; dx <= 1; ++dx) {
@@ -45,15 +45,17 @@ std::optional<Spectrum> SurfaceCache::Grid::interpolate(double x, double y, cons
       if (!e.valid || !same_surface(e.point, point)) continue;
       // Bilinear weights, kept off zero so that a lone compatible corner still counts.
       const double w = std::max(dx ? tx : 1.0 - tx, 1e-3) * std::max(dy ? ty : 1.0 - ty, 1e-3);
-      sum += e.value * static_cast<float>(w);
+      sum.diffuse_irradiance += e.value.diffuse_irradiance * static_cast<float>(w);
+      sum.specular_radiance += e.value.specular_radiance * static_cast<float>(w);
       total += w;
     }
   }
   if (total <= 0) return std::nullopt;
-  return sum * static_cast<float>(1.0 / total);
+  const float scale = static_cast<float>(1.0 / total);
+  return CachedSkyLight{sum.diffuse_irradiance * scale, sum.specular_radiance * scale};
 }
 
-void SurfaceCache::Grid::set(int gx, int gy, const SurfacePoint& point, const Spectrum& value) {
+void SurfaceCache::Grid::set(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value) {
   Entry& e = entries_[index(gx, gy)];
   e.valid = true;
   e.point = point;
@@ -102,7 +104,7 @@ SurfaceCache::SurfaceCache(int width, int height, const Locate& locate, const Co
   compute_wanted(fine_, pixels, width, compute);
 }
 
-std::optional<Spectrum> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {
+std::optional<CachedSkyLight> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {
   if (auto value = coarse_.interpolate(x, y, point)) return value;
   return fine_.interpolate(x, y, point);
 }

@@ -8,6 +8,7 @@
 // function of its surface point alone.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -20,18 +21,27 @@ namespace skylit {
 // Where a camera ray meets a surface.
 struct SurfacePoint {
   Vec3 position;
-  Vec3 normal;      // unit, facing the camera
-  double distance;  // from the camera
+  Vec3 normal;        // unit, facing the camera
+  double distance;    // from the camera
+  uint32_t material;  // index into the scene's materials
 };
 
-// Whether a cached point can stand in for `point`: the same plane (normals within ~18°,
-// the point within 1 mm per metre of distance of the cached point's plane) and near.
+// The sky's light at a surface point: its irradiance (for the Lambertian part) and the
+// radiance that the glossy part reflects toward the camera.
+struct CachedSkyLight {
+  Spectrum diffuse_irradiance;
+  Spectrum specular_radiance;
+};
+
+// Whether a cached point can stand in for `point`: the same material on the same plane
+// (normals within ~18°, the point within 1 mm per metre of distance of the cached
+// point's plane) and near.
 bool same_surface(const SurfacePoint& cached, const SurfacePoint& point);
 
 class SurfaceCache {
  public:
   using Locate = std::function<std::optional<SurfacePoint>(int pixel_x, int pixel_y)>;
-  using Compute = std::function<Spectrum(const SurfacePoint&)>;
+  using Compute = std::function<CachedSkyLight(const SurfacePoint&)>;
 
   // Coarse and fine grid spacings in pixels.
   static constexpr int kCoarseSpacing = 16, kFineSpacing = 4;
@@ -42,7 +52,7 @@ class SurfaceCache {
 
   // The value for a surface point seen at image position (x, y) in pixels; none if no
   // grid point around it lies on its surface.
-  std::optional<Spectrum> interpolate(double x, double y, const SurfacePoint& point) const;
+  std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point) const;
 
   // Grid points computed, coarse and fine (for the benchmark and tests).
   int coarse_points() const { return coarse_.computed(); }
@@ -58,8 +68,8 @@ class SurfaceCache {
     int pixel_y(int gy) const { return std::min(gy * spacing_, height_ - 1); }
     // The cell containing image position (x, y) and the position's place in it.
     void cell(double x, double y, int& gx, int& gy, double& tx, double& ty) const;
-    std::optional<Spectrum> interpolate(double x, double y, const SurfacePoint& point) const;
-    void set(int gx, int gy, const SurfacePoint& point, const Spectrum& value);
+    std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point) const;
+    void set(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value);
     bool wanted(int gx, int gy) const { return entries_[index(gx, gy)].wanted; }
     void want(int gx, int gy) { entries_[index(gx, gy)].wanted = true; }
     int computed() const;
@@ -68,7 +78,7 @@ class SurfaceCache {
     struct Entry {
       bool wanted = false, valid = false;
       SurfacePoint point;
-      Spectrum value;
+      CachedSkyLight value;
     };
     size_t index(int gx, int gy) const { return static_cast<size_t>(gy * grid_width_ + gx); }
     int width_, height_, spacing_, grid_width_, grid_height_;

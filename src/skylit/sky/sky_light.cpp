@@ -3,26 +3,104 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skylit/material/reflection.h"
+#include "skylit/spectrum/cie.h"
+
 namespace skylit {
 
 SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
                    std::vector<SkyElement> elements)
-    : sky_(sky),
-      tracer_(tracer),
-      obstacle_radiance_(std::move(obstacle_radiance)),
-      elements_(std::move(elements)) {
+    : sky_(sky), tracer_(tracer), obstacle_radiance_(std::move(obstacle_radiance)), elements_(std::move(elements)) {
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
 }
 
-Vec3 SkyLight::offset_point(const Vec3& point, const Vec3& normal) const {
-  // As for shadow rays: well above Embree's single-precision error at this distance.
-  const double offset = 1e-4 + 2e-6 * std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
-  return point + offset * normal;
+Spectrum SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Spectrum& sky, uint64_t& rays) const {
+  const Ray ray{origin, direction};
+  ++rays;
+  const std::optional<Hit> hit = tracer_.intersect(ray);
+  return hit ? obstacle_radiance_(ray, *hit, rays) : sky;
+}
+
+Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer,
+                                     const Material& material, uint64_t& rays) const {
+  if (!has_specular(material)) return Spectrum(0.0f);
+  const Vec3 origin = offset_from_surface(point, normal);
+  // The bands' frame: axis a ⟂ n and ⟂ r; the element (α, δ) lies in direction
+  // cos α·a + sin α (cos δ·r + sin δ·b), b = a × r. The mirror direction r is (90°, 0)
+  // and the surface's hemisphere is |δ − β| < 90° with n = cos β·r + sin β·b.
+  const Vec3 r = normalize(mirror_direction(normal, to_viewer));
+  Vec3 a = cross(normal, r);
+  if (length(a) < 1e-6) a = cross(normal, std::abs(normal.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0});
+  a = normalize(a);
+  const Vec3 b = cross(a, r);
+  const double beta = std::atan2(dot(normal, b), dot(normal, r));
+  const double width = std::clamp(kSpecularElementPerRoughness * specular_roughness(material), radians(1.0), radians(5.0));
+  const int half_segments = static_cast<int>(std::ceil(0.5 * kPi / width));  // along α, each way from 90°
+  Spectrum sum;
+  double peak = 0;  // the largest G met: ε is relative to it
+
+  // Element (band k, segment j): δ = k·width, α = 90° + j·width. Adds it when its G
+  // is at least ε of the peak; returns G.
+  auto direction_at = [&](double alpha, double delta) {
+    return std::cos(alpha) * a + std::sin(alpha) * (std::cos(delta) * r + std::sin(delta) * b);
+  };
+  // The sky's mean radiance over an element. Where the element straddles the horizon
+  // (the sky above, the far ground below: a step in radiance), from 4 × 4 points
+  // across it: a single point there would count all of the element as sky or as ground,
+  // and a wall seen head-on reflects exactly that part of the dome.
+  auto sky_over = [&](double alpha, double delta, const Vec3& centre) {
+    if (std::abs(centre.z) > 0.75 * width) return sky_.sky_radiance_near_ground(centre);
+    Spectrum mean;
+    double total = 0;
+    for (int u = 0; u < 4; ++u)
+      for (int w = 0; w < 4; ++w) {
+        const double sub_alpha = alpha + (u - 1.5) * width / 4, sub_delta = delta + (w - 1.5) * width / 4;
+        const double weight = std::sin(sub_alpha);
+        mean += sky_.sky_radiance_near_ground(direction_at(sub_alpha, sub_delta)) * static_cast<float>(weight);
+        total += weight;
+      }
+    return mean * static_cast<float>(1.0 / total);
+  };
+  auto visit = [&](int k, int j) {
+    const double alpha = kPi / 2 + j * width, delta = k * width;
+    if (alpha <= 0 || alpha >= kPi) return 0.0;
+    const Vec3 l = direction_at(alpha, delta);
+    const double solid_angle = std::sin(alpha) * width * width;
+    const double weight = specular_weight(material, normal, l, to_viewer);
+    if (weight <= 0) return 0.0;
+    const Spectrum sky = sky_over(alpha, delta, l);
+    const double g = luminance(sky) * weight * solid_angle;
+    peak = std::max(peak, g);
+    if (g < kSpecularThreshold * peak) return g;
+    sum += specular_reflection(material, normal, l, to_viewer) * incoming(origin, l, sky, rays) *
+           static_cast<float>(solid_angle);
+    return g;
+  };
+  // Steps 2(a)–(b): along band k from its segment nearest the mirror direction, both
+  // ways while G ≥ ε; returns G at that nearest segment.
+  auto walk_band = [&](int k) {
+    const double g0 = visit(k, 0);
+    if (g0 < kSpecularThreshold * peak || g0 <= 0) return g0;
+    for (int direction : {-1, +1})
+      for (int j = direction; std::abs(j) <= half_segments; j += direction)
+        if (const double g = visit(k, j); g < kSpecularThreshold * peak || g <= 0) break;
+    return g0;
+  };
+  // Steps 3–5: bands on either side, outward, until the band's nearest element falls
+  // below ε or the band leaves the surface's hemisphere.
+  walk_band(0);
+  for (int direction : {-1, +1}) {
+    for (int k = direction;; k += direction) {
+      if (std::abs(k * width - beta) >= kPi / 2 || std::abs(k * width) > kPi) break;
+      if (const double g = walk_band(k); g < kSpecularThreshold * peak || g <= 0) break;
+    }
+  }
+  return sum;
 }
 
 Spectrum SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, uint64_t& rays) const {
   Spectrum irradiance = sky_.sky_irradiance(normal);
-  const Vec3 origin = offset_point(point, normal);
+  const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
   for (size_t i = 0; i < elements.size(); ++i) {
     const SkyElement& e = elements[i];
@@ -42,7 +120,7 @@ Spectrum SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, uin
 }
 
 double SkyLight::sky_view_factor(const Vec3& point, const Vec3& normal, uint64_t& rays) const {
-  const Vec3 origin = offset_point(point, normal);
+  const Vec3 origin = offset_from_surface(point, normal);
   double visible = 0;
   for (const SkyElement& e : elements_) {
     const double cosine = dot(normal, e.direction);

@@ -1,0 +1,61 @@
+// What the renderer asks of a material at a surface point: the Lambertian part as an
+// albedo, the glossy specular part as BRDF × cos for one incident direction, the
+// mirror part for smooth surfaces, and cheap measures of the specular lobe for the
+// paper's adaptive search over the sky (§4.2). Models and sources: material.h,
+// microfacet.h, fresnel.h; docs/materials.md.
+//
+// Directions are unit vectors pointing away from the surface: n the normal on the
+// viewer's side, to_light toward the light (a sky element, the sun), to_viewer toward
+// the eye. Radiance toward the viewer is
+//   diffuse_albedo(m, n·v) / π × irradiance
+//   + Σ over light directions specular_reflection(m, n, l, v) × L(l) dω(l)
+//   + mirror_reflectance(m, n, v) × L(mirror_direction(n, v))   (when it has one).
+#pragma once
+
+#include <optional>
+
+#include "skylit/geometry/vec3.h"
+#include "skylit/material/material.h"
+#include "skylit/spectrum/spectrum.h"
+
+namespace skylit {
+
+// The Lambertian part's hemispherical reflectance at view cosine cos_view = n·v (for
+// `diffuse` the reflectance itself; for a coated base and the room behind glass it
+// falls toward grazing views, where the interface reflects more).
+Spectrum diffuse_albedo(const Material& material, double cos_view);
+
+// The glossy specular BRDF f_s(l, v), sr⁻¹. Zero for `diffuse` and for mirrors.
+Spectrum specular_brdf(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
+
+// f_s(l, v) (n·l): what multiplies incident radiance L(l) dω (sr⁻¹); for the sun,
+// what multiplies its irradiance on a plane facing it.
+Spectrum specular_reflection(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
+
+// Whether specular_reflection can be non-zero: a glossy lobe to integrate.
+bool has_specular(const Material& material);
+
+// The mean over bins of specular_reflection (the same value, without building the
+// spectrum): a scalar for deciding where the lobe still matters.
+double specular_weight(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
+
+// The angle, radians, between the mirror direction of the view and a light direction
+// beyond which the lobe's facet distribution D is below 1e-3 of its peak: twice the
+// half-vector angle where D(α)/D(0) = 1e-3 (reflecting about h turns the reflected
+// direction by at most twice the turn of h). 0 for `diffuse` and mirrors. For
+// m = 0.1 it is 0.52 rad (30°), for m = 0.15 0.77 rad (44°). Near grazing, F and
+// 1/(n·v) make the lobe's far side relatively larger; G cuts it at the horizon.
+double specular_lobe_radius(const Material& material);
+
+// The glossy lobe's Beckmann roughness m; 0 for `diffuse` and mirrors.
+double specular_roughness(const Material& material);
+
+// For a smooth surface (roughness below kMirrorRoughness): its spectral mirror
+// reflectance at the view angle, to multiply the radiance arriving from
+// mirror_direction(n, to_viewer). nullopt for other materials (and when n·v ≤ 0).
+std::optional<Spectrum> mirror_reflectance(const Material& material, const Vec3& n, const Vec3& to_viewer);
+
+// The direction of perfect reflection of the view about n: 2 (n·v) n − v.
+inline Vec3 mirror_direction(const Vec3& n, const Vec3& to_viewer) { return 2 * dot(n, to_viewer) * n - to_viewer; }
+
+}  // namespace skylit

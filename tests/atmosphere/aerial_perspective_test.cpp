@@ -1,0 +1,206 @@
+// Aerial perspective (the air between the observer and a surface) against closed forms,
+// limits and the integrator itself.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "sky_reference.h"
+#include "skylit/atmosphere/atmosphere.h"
+
+namespace skylit {
+namespace {
+
+using test_reference::default_atmosphere;
+using test_reference::default_sky;
+using test_reference::world_direction;
+
+bool report() { return std::getenv("SKYLIT_REPORT") != nullptr; }
+
+// A pedestrian's eye, 2 m above the ground, with the sun at 30°.
+constexpr double kEyeHeightM = 2.0, kSunDeg = 30.0;
+
+TEST(AerialPerspective, ShortHorizontalPathTransmittanceIsBeerLambert) {
+  // Over 500 m at 2 m the air is uniform: the ray rises d²/2R = 2 cm, so the
+  // transmittance is exp(−σ_t d) with σ_t from the medium's coefficients at 2 m
+  // (Rayleigh and aerosols; no ozone below 10 km). Tolerance 0.5 %: the table
+  // interpolates linearly in √d between its slices at 312 and 703 m, where exp(−σ_t d)
+  // bends by at most ~0.3 % (σ_t ≤ 1.7e-4 m⁻¹ in the violet). Measured: 0.29 %.
+  const Atmosphere& atmosphere = default_atmosphere();
+  const AtmosphereMedium& medium = atmosphere.medium();
+  const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
+  const double d = 500.0;
+  const Spectrum sigma_t =
+      medium.extinction(medium.rayleigh_density(kEyeHeightM), medium.aerosol_density(kEyeHeightM), 0.0);
+  double worst = 0;
+  for (double azimuth : {0.0, 90.0, 180.0}) {
+    const ScatteredLight air = sky.aerial_perspective(world_direction(0.0, azimuth), d);
+    for (int k = 0; k < kSpectralBins; ++k) {
+      const double expected = std::exp(-static_cast<double>(sigma_t[k]) * d);
+      worst = std::max(worst, std::abs(air.transmittance[k] / expected - 1.0));
+      EXPECT_NEAR(air.transmittance[k], expected, 0.005 * expected) << "azimuth " << azimuth << ", bin " << k;
+    }
+  }
+  if (report()) std::printf("500 m horizontal transmittance: worst %.3f %%\n", 100 * worst);
+}
+
+TEST(AerialPerspective, NothingAtZeroDistance) {
+  // At the observer nothing is added and everything gets through, exactly (the table's
+  // first slice), and both approach that limit continuously: at 1 cm the in-scatter is
+  // under 2 % of that over 100 m and the transmittance within 1e-3 of 1. (The truth is
+  // 0.01 % and 2e-6; the table's √d interpolation gives ~1 % and 1.6e-4 — see
+  // DISABLED_InScatterNearTheObserver… below — so these bounds only check the limit.)
+  const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
+  for (double elevation : {-1.0, 0.0, 5.0, 45.0})
+    for (double azimuth : {0.0, 100.0, 180.0}) {
+      const Vec3 view = world_direction(elevation, azimuth);
+      const ScatteredLight zero = sky.aerial_perspective(view, 0.0);
+      const ScatteredLight centimetre = sky.aerial_perspective(view, 0.01);
+      const ScatteredLight hundred = sky.aerial_perspective(view, 100.0);
+      for (int k = 0; k < kSpectralBins; ++k) {
+        EXPECT_EQ(zero.radiance[k], 0.0f);
+        EXPECT_EQ(zero.transmittance[k], 1.0f);
+        EXPECT_GT(centimetre.transmittance[k], 0.999f);
+        EXPECT_LT(centimetre.radiance[k], 0.02f * hundred.radiance[k]) << elevation << " " << azimuth << " bin " << k;
+      }
+    }
+}
+
+TEST(AerialPerspective, InScatterGrowsAndTransmittanceFallsWithDistance) {
+  // Monotonic in every bin (to float rounding, 1e-6), from the observer to beyond the
+  // table's 80 km; and it does grow: 10 km of air add more light than 1 km.
+  const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
+  for (double elevation : {-1.0, 0.0, 3.0, 20.0, 60.0})
+    for (double azimuth : {0.0, 60.0, 180.0}) {
+      const Vec3 view = world_direction(elevation, azimuth);
+      ScatteredLight previous = sky.aerial_perspective(view, 0.0);
+      for (int i = 1; i <= 300; ++i) {
+        const double d = 100e3 * std::pow(i / 300.0, 2);
+        const ScatteredLight now = sky.aerial_perspective(view, d);
+        for (int k = 0; k < kSpectralBins; ++k) {
+          ASSERT_GE(now.radiance[k], previous.radiance[k] * (1 - 1e-6f))
+              << elevation << " " << azimuth << " " << d << " bin " << k;
+          ASSERT_LE(now.transmittance[k], previous.transmittance[k] * (1 + 1e-6f))
+              << elevation << " " << azimuth << " " << d;
+        }
+        previous = now;
+      }
+      if (elevation >= 0) {
+        EXPECT_GT(luminance(sky.aerial_perspective(view, 10e3).radiance),
+                  1.5 * luminance(sky.aerial_perspective(view, 1e3).radiance));
+      }
+    }
+}
+
+TEST(AerialPerspective, LongNearlyHorizontalPathApproachesTheHorizonSky) {
+  // 0.1° above the horizontal, 80 km of air near the ground (optical depth 3.6–12
+  // across the bins) hide most of what lies beyond: the air's own light is the sky's
+  // in that direction, less what the rest of the path adds — up to T(80 km) = 2.6 %
+  // of it in the far red, nothing in the violet — and less the difference of two tables
+  // that sample the horizon differently (32 × 32 directions vs 96 × 128). Measured: the
+  // worst bin (775 nm) −2.1 … −3.0 %, luminance within 0.2 %. Tolerance 4 %. (Exactly
+  // horizontal the table is wrong: DISABLED_HorizontalViewsFarAway… below.)
+  const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
+  for (double azimuth : {20.0, 90.0, 180.0}) {
+    const Vec3 view = world_direction(0.1, azimuth);
+    const ScatteredLight air = sky.aerial_perspective(view, AerialPerspectiveTable::kMaxDistanceM);
+    const Spectrum horizon = sky.sky_radiance(view);
+    double worst = 0;
+    for (int k = 0; k < kSpectralBins; ++k) worst = std::max(worst, std::abs(air.radiance[k] / horizon[k] - 1.0));
+    if (report())
+      std::printf("80 km at 0.1 deg, %.0f deg from the sun: worst bin %.2f %%, luminance %.2f %%\n", azimuth,
+                  100 * worst, 100 * (luminance(air.radiance) / luminance(horizon) - 1));
+    EXPECT_LT(worst, 0.04) << azimuth;
+    EXPECT_LT(air.transmittance[kSpectralBins - 1], 0.03f);
+  }
+}
+
+// The table against ScatteringIntegrator::up_to with 400 stops (800 segments) up to
+// the same distance, per bin: the worst relative error of in-scatter and transmittance.
+struct TableError {
+  double radiance = 0, transmittance = 0;
+};
+TableError table_error(double elevation, double azimuth, double d) {
+  const Atmosphere& atmosphere = default_atmosphere();
+  const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
+  const double r = atmosphere.ground_radius() + kEyeHeightM;
+  const Vec3 sun = test_reference::direction_from_sun_frame(kSunDeg, 0.0);
+  const Vec3 view = test_reference::direction_from_sun_frame(elevation, azimuth);
+  std::vector<double> stops;
+  for (int i = 1; i <= 400; ++i) stops.push_back(d * i / 400.0);
+  const ScatteredLight direct = atmosphere.integrator().up_to(r, view.z, sun.z, dot(view, sun), stops).back();
+  const ScatteredLight table = sky.aerial_perspective(world_direction(elevation, azimuth), d);
+  const Spectrum radiance = direct.radiance * atmosphere.extraterrestrial_irradiance();
+  TableError e;
+  for (int k = 0; k < kSpectralBins; ++k) {
+    e.radiance = std::max(e.radiance, std::abs(static_cast<double>(table.radiance[k]) / radiance[k] - 1.0));
+    e.transmittance = std::max(e.transmittance,
+                               std::abs(static_cast<double>(table.transmittance[k]) / direct.transmittance[k] - 1.0));
+  }
+  return e;
+}
+
+TEST(AerialPerspective, TableMatchesTheIntegrator) {
+  // Where the table is meant to be used at its accuracy: surfaces 1–20 km away, views
+  // 0.5–45° up and at least 60° in azimuth from the sun. Measured worst bin: in-scatter
+  // 2.1 % (1 km, between slices at 0.70 and 1.25 km), transmittance 3.3 % (20 km at
+  // 0.5°, where T is ~0.03 and interpolated linearly between elevation rows 0.05° and
+  // 0.8° whose optical depths differ by ×2). Tolerances 2.5 % and 4 %.
+  TableError worst;
+  for (double elevation : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 45.0})
+    for (double azimuth : {60.0, 90.0, 180.0})
+      for (double d : {1e3, 2e3, 5e3, 10e3, 20e3}) {
+        const TableError e = table_error(elevation, azimuth, d);
+        worst.radiance = std::max(worst.radiance, e.radiance);
+        worst.transmittance = std::max(worst.transmittance, e.transmittance);
+        EXPECT_LT(e.radiance, 0.025) << elevation << " " << azimuth << " " << d;
+        EXPECT_LT(e.transmittance, 0.04) << elevation << " " << azimuth << " " << d;
+      }
+  if (report())
+    std::printf("aerial perspective table vs up_to: in-scatter %.2f %%, transmittance %.2f %%\n", 100 * worst.radiance,
+                100 * worst.transmittance);
+}
+
+// Known errors of the table, measured and left for the model's owner; each fails today.
+//
+// Near the observer: the table interpolates linearly in √d (aerial_perspective_table.cpp,
+// AerialPerspectiveTable::at: fz = √(d/80 km)·32) between slices at 0, 78, 312, 703 m…
+// Below the first slice in-scatter and optical depth grow in proportion to d, so the
+// interpolation makes them grow as √d: the in-scatter is too high by +1,200 % at 1 m,
+// +190 % at 10 m, +64 % at 30 m, and by +9–13 % between the slices at 100–200 m, +4–7 %
+// at 500 m (transmittance 0.1–0.35 % low). Interpolating linearly in d between the two
+// slices that bracket d would make it exact at the first slice and far better beyond.
+TEST(AerialPerspective, DISABLED_InScatterNearTheObserverMatchesTheIntegrator) {
+  for (double elevation : {0.5, 10.0})
+    for (double azimuth : {90.0, 180.0})
+      for (double d : {1.0, 10.0, 30.0, 100.0, 200.0, 500.0})
+        EXPECT_LT(table_error(elevation, azimuth, d).radiance, 0.02) << elevation << " " << azimuth << " " << d;
+}
+
+// Exactly horizontal from 2 m: the 32 elevation rows nearest the horizon lie at −0.14°
+// (a ray that meets the ground 0.8 km away; up_to holds its last value for every farther
+// stop) and +0.05°, and the horizontal interpolates between them. Beyond 1 km the
+// in-scatter is 8–16 % low and the transmittance far too high: +3.6 % at 2 km, +18 % at
+// 5 km, ×6 at 20 km, ×4,700 at 60 km (0.13–0.16 at 80 km instead of e^−4…e^−13). A row
+// exactly at the horizon's dip (an odd row count) and rows below it continued through
+// the ground would remove the jump; interpolating optical depth rather than
+// transmittance would help at long range.
+TEST(AerialPerspective, DISABLED_HorizontalViewsFarAwayMatchTheIntegrator) {
+  for (double azimuth : {20.0, 90.0, 180.0}) {
+    for (double d : {2e3, 5e3, 20e3, 60e3}) {
+      const TableError e = table_error(0.0, azimuth, d);
+      EXPECT_LT(e.radiance, 0.02) << azimuth << " " << d;
+      EXPECT_LT(e.transmittance, 0.02) << azimuth << " " << d;
+    }
+    const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
+    const Vec3 view = world_direction(0.0, azimuth);
+    EXPECT_NEAR(luminance(sky.aerial_perspective(view, AerialPerspectiveTable::kMaxDistanceM).radiance),
+                luminance(sky.sky_radiance(view)), 0.04 * luminance(sky.sky_radiance(view)));
+  }
+}
+
+}  // namespace
+}  // namespace skylit
