@@ -1,6 +1,9 @@
 #include "skylit/atmosphere/aerial_perspective_table.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "skylit/spectrum/spectral_math.h"
 
 #include <tbb/parallel_for.h>
 
@@ -20,7 +23,7 @@ AerialPerspectiveTable::AerialPerspectiveTable(const ScatteringIntegrator& integ
                                                double sun_elevation_rad)
     : mapping_(observer_radius_m, ground_radius_m),
       in_scattered_(kAzimuthSize, kElevationSize, kDistanceSize),
-      transmittance_(kAzimuthSize, kElevationSize, kDistanceSize) {
+      optical_depth_(kAzimuthSize, kElevationSize, kDistanceSize) {
   std::vector<double> stops;
   for (int k = 1; k < kDistanceSize; ++k) stops.push_back(slice_distance(k));
   const double mu_sun = std::sin(sun_elevation_rad), cos_sun = std::cos(sun_elevation_rad);
@@ -32,10 +35,12 @@ AerialPerspectiveTable::AerialPerspectiveTable(const ScatteringIntegrator& integ
       const double nu = mu * mu_sun + std::cos(d.elevation_rad) * cos_sun * std::cos(d.azimuth_from_sun_rad);
       const std::vector<ScatteredLight> light = integrator.up_to(observer_radius_m, mu, mu_sun, nu, stops);
       in_scattered_.at(i, j, 0) = Spectrum(0.0f);
-      transmittance_.at(i, j, 0) = Spectrum(1.0f);
+      optical_depth_.at(i, j, 0) = Spectrum(0.0f);
       for (int k = 1; k < kDistanceSize; ++k) {
-        in_scattered_.at(i, j, k) = light[static_cast<size_t>(k - 1)].radiance * sun_irradiance;
-        transmittance_.at(i, j, k) = light[static_cast<size_t>(k - 1)].transmittance;
+        const ScatteredLight& l = light[static_cast<size_t>(k - 1)];
+        in_scattered_.at(i, j, k) = l.radiance * sun_irradiance;
+        for (int b = 0; b < kSpectralBins; ++b)
+          optical_depth_.at(i, j, k)[b] = -std::log(std::max(l.transmittance[b], 1e-30f));
       }
     }
   });
@@ -45,8 +50,14 @@ ScatteredLight AerialPerspectiveTable::at(const RelativeDirection& direction, do
   double u_azimuth, u_elevation;
   mapping_.to_unit(direction, u_azimuth, u_elevation);
   const double fx = u_azimuth * (kAzimuthSize - 1), fy = u_elevation * (kElevationSize - 1);
-  const double fz = std::sqrt(std::clamp(distance_m / kMaxDistanceM, 0.0, 1.0)) * (kDistanceSize - 1);
-  return {in_scattered_.interpolate(fx, fy, fz), transmittance_.interpolate(fx, fy, fz)};
+  // Linear in distance between the two slices around it: in-scatter and optical depth
+  // grow in proportion to distance over short paths, so this is exact near the
+  // observer (interpolating in the slices' own √d spacing is not).
+  const double d = std::clamp(distance_m, 0.0, kMaxDistanceM);
+  const int k = std::min(static_cast<int>(std::sqrt(d / kMaxDistanceM) * (kDistanceSize - 1)), kDistanceSize - 2);
+  const double d0 = slice_distance(k), d1 = slice_distance(k + 1);
+  const double fz = k + (d - d0) / (d1 - d0);
+  return {in_scattered_.interpolate(fx, fy, fz), transmittance_of(optical_depth_.interpolate(fx, fy, fz))};
 }
 
 }  // namespace skylit

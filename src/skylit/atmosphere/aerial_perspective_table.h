@@ -12,7 +12,8 @@ namespace skylit {
 
 class AerialPerspectiveTable {
  public:
-  static constexpr int kAzimuthSize = 32, kElevationSize = 32, kDistanceSize = 33;
+  // An odd number of elevation rows puts one exactly at the horizon's dip.
+  static constexpr int kAzimuthSize = 32, kElevationSize = 33, kDistanceSize = 33;
   static constexpr double kMaxDistanceM = 80e3;  // farther surfaces use this distance's values
 
   AerialPerspectiveTable(const ScatteringIntegrator& integrator, const Spectrum& sun_irradiance,
@@ -24,7 +25,7 @@ class AerialPerspectiveTable {
  private:
   SkyDirectionMapping mapping_;
   SpectrumGrid3D in_scattered_;
-  SpectrumGrid3D transmittance_;
+  SpectrumGrid3D optical_depth_;  // −ln T: interpolates far better than T at long range
 };
 
 }  // namespace skylit

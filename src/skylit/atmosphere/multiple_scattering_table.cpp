@@ -58,7 +58,7 @@ MultipleScatteringTable::Factors MultipleScatteringTable::factors_at(const Atmos
       const Spectrum sun = transmittance.to_top(r_t, mu_s_t);
       for (int k = 0; k < kSpectralBins; ++k) {
         // ∫ over the segment of T·σ_s·(source) = T·σ_s·source·(1 − e^(−σ_t·dt))/σ_t.
-        const float integral = extinction[k] > 0 ? (1.0f - segment_transmittance[k]) / extinction[k] : static_cast<float>(dt);
+        const float integral = segment_weight(extinction[k], static_cast<float>(dt), segment_transmittance[k]);
         light[k] += throughput[k] * scattering[k] * isotropic * sun[k] * integral;
         energy[k] += throughput[k] * scattering[k] * integral;
         throughput[k] *= segment_transmittance[k];

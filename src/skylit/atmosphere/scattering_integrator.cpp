@@ -48,7 +48,8 @@ void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, doubl
   if (dt <= 0) return;
   // Sources at the segment's midpoint; the attenuation across it is integrated exactly.
   const double t = 0.5 * (t0 + t1);
-  const double r_t = shell::radius_at(r, mu, t);
+  // Rays continued through the ground (aerial perspective) see the ground's air there.
+  const double r_t = std::max(shell::radius_at(r, mu, t), transmittance_.ground_radius());
   const double mu_sun_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
   const double h = r_t - medium_.earth_radius_m;
   const double rho_r = medium_.rayleigh_density(h), rho_a = medium_.aerosol_density(h);
@@ -60,7 +61,7 @@ void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, doubl
   for (int k = 0; k < kSpectralBins; ++k) {
     const float sigma_r = medium_.rayleigh_scattering[k] * fr, sigma_a = medium_.aerosol_scattering[k] * fa;
     const float source = (sigma_r * phase.rayleigh + sigma_a * phase.aerosol) * sun[k] + (sigma_r + sigma_a) * psi[k];
-    const float integral = extinction[k] > 1e-12f ? (1.0f - segment[k]) / extinction[k] : fdt;
+    const float integral = segment_weight(extinction[k], fdt, segment[k]);
     light.radiance[k] += light.transmittance[k] * source * integral;
     light.transmittance[k] *= segment[k];
   }
@@ -103,8 +104,7 @@ ScatteredLight ScatteringIntegrator::along_ray(double r, double mu, double mu_su
 
 std::vector<ScatteredLight> ScatteringIntegrator::up_to(double r, double mu, double mu_sun, double nu,
                                                         const std::vector<double>& stops) const {
-  bool ground = false;
-  const double length = ray_length(r, mu, ground);
+  const double length = shell::distance_to_outer_sphere(r, mu, transmittance_.top_radius());
   const Phases phase = phases(nu);
   ScatteredLight light{Spectrum(0.0f), Spectrum(1.0f)};
   std::vector<ScatteredLight> out;

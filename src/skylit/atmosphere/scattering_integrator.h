@@ -45,7 +45,11 @@ class ScatteringIntegrator {
   ScatteredLight along_ray(double r, double mu, double mu_sun, double nu, int segments) const;
 
   // The same, reporting the light gathered up to each of the increasing distances
-  // `stops` (m); a stop beyond the ray's end gets the whole ray, without the ground.
+  // `stops` (m), for aerial perspective: the ray goes on through the ground (as if the
+  // air there were the ground's), so that directions just below the horizon, whose
+  // rays would meet the Earth's curved surface kilometres away, still describe the air
+  // in front of a surface of the scene's flat ground; a stop beyond the top of the
+  // atmosphere gets the whole ray.
   std::vector<ScatteredLight> up_to(double r, double mu, double mu_sun, double nu,
                                     const std::vector<double>& stops) const;
 

@@ -31,6 +31,15 @@ inline float exp_nonpositive(float x) {
   return y * scale;
 }
 
+// ∫₀^Δt e^(−σ t) dt = (1 − e^(−σΔt))/σ, given the segment's transmittance e^(−σΔt): the
+// weight of a source constant over a segment of length Δt and extinction σ. For thin
+// segments (σΔt < 1e-3) from its series, since 1 − e^(−σΔt) loses every digit there
+// in single precision.
+inline float segment_weight(float extinction, float length, float segment_transmittance) {
+  const float x = extinction * length;
+  return x < 1e-3f ? length * (1.0f - x * (0.5f - x * (1.0f / 6.0f))) : (1.0f - segment_transmittance) / extinction;
+}
+
 // Transmittance e^(−τ) of an optical depth τ ≥ 0 in every bin.
 inline Spectrum transmittance_of(const Spectrum& optical_depth) {
   Spectrum out;
