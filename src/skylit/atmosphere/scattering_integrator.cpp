@@ -81,23 +81,8 @@ ScatteredLight ScatteringIntegrator::along_ray(double r, double mu, double mu_su
   const double length = ray_length(r, mu, ground);
   const Phases phase = phases(nu);
   ScatteredLight light{Spectrum(0.0f), Spectrum(1.0f)};
-  // Boundaries t = t_low ± (distance)·u², crowded at the ray's lowest point t_low.
-  const double t_low = std::clamp(-r * mu, 0.0, length);
-  const int before = t_low > 0 ? std::max(1, static_cast<int>(segments * t_low / length)) : 0;
-  const int after = std::max(1, segments - before);
-  double t_prev = 0.0;
-  for (int k = 1; k <= before; ++k) {
-    const double u = 1.0 - static_cast<double>(k) / before;
-    const double t = t_low - t_low * u * u;
-    add_segment(r, mu, mu_sun, nu, t_prev, t, phase, light);
-    t_prev = t;
-  }
-  for (int k = 1; k <= after; ++k) {
-    const double u = static_cast<double>(k) / after;
-    const double t = t_low + (length - t_low) * u * u;
-    add_segment(r, mu, mu_sun, nu, t_prev, t, phase, light);
-    t_prev = t;
-  }
+  const std::vector<double> t = shell::crowded_boundaries(length, -r * mu, segments);
+  for (size_t k = 1; k < t.size(); ++k) add_segment(r, mu, mu_sun, nu, t[k - 1], t[k], phase, light);
   if (ground) add_ground(r, mu_sun, nu, length, light);
   return light;
 }
@@ -142,7 +127,7 @@ Spectrum ScatteringIntegrator::horizontal_irradiance(double r, double mu_sun, in
 }
 
 GroundIrradianceTable ScatteringIntegrator::ground_irradiance(const ScatteringIntegrator& sky) {
-  constexpr int kZenith = 8, kAzimuth = 8, kSegments = 24;
+  constexpr int kZenith = 10, kAzimuth = 10, kSegments = 32;
   const double r = sky.transmittance_.ground_radius();
   std::vector<Spectrum> table(static_cast<size_t>(GroundIrradianceTable::kSize));
   tbb::parallel_for(0, GroundIrradianceTable::kSize, [&](int i) {
