@@ -71,7 +71,7 @@ Spectrum Renderer::mirrored(const SurfacePoint& point, const Vec3& direction, ui
 }
 
 Spectrum Renderer::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light,
-                         uint64_t& rays) const {
+                         const ScatteredLight& air, uint64_t& rays) const {
   const Material& material = material_of(point);
   const Vec3 to_viewer = -ray.direction;
   const Spectrum sun = sun_reaching(point, rays);
@@ -80,13 +80,12 @@ Spectrum Renderer::shade(const Ray& ray, const SurfacePoint& point, const Cached
   Spectrum radiance = diffuse_albedo(material, dot(point.normal, to_viewer)) * irradiance * static_cast<float>(1.0 / kPi);
   // Glossy part: the sky's (cached) and the sun's highlight.
   radiance += sky_light.specular_radiance;
-  if (has_specular(material) && !sun.is_black())
+  if (has_specular(material))
     radiance += specular_reflection(material, point.normal, to_sun_, to_viewer) * sun;
   // Mirror part (window glass): what lies in the mirror direction.
   if (const std::optional<Spectrum> mirror = mirror_reflectance(material, point.normal, to_viewer))
     radiance += *mirror * mirrored(point, mirror_direction(point.normal, to_viewer), rays);
   // The surface's light, dimmed by the air on its way to the camera, plus the air's own.
-  const ScatteredLight air = sky_.aerial_perspective(ray.direction, point.distance);
   return radiance * air.transmittance + air.radiance;
 }
 
@@ -95,7 +94,8 @@ Spectrum Renderer::radiance(const Ray& ray, uint64_t& rays) const {
   const std::optional<Hit> hit = tracer_.intersect(ray);
   if (!hit) return sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction);
   const SurfacePoint point = surface_point(ray, *hit);
-  return shade(ray, point, sky_light_at(point, -ray.direction, rays), rays);
+  return shade(ray, point, sky_light_at(point, -ray.direction, rays), sky_.aerial_perspective(ray.direction, hit->t),
+               rays);
 }
 
 XyzImage Renderer::render(const RenderOptions& options) const {
@@ -133,7 +133,21 @@ XyzImage Renderer::render(const RenderOptions& options) const {
   std::mutex progress_mutex;
   int tiles_done = 0;
 
-  auto sample = [&](double x, double y, uint64_t& rays) {
+  // The air between camera and surface is looked up once per pixel and shared by the
+  // pixel's samples that lie within 1 % of the same distance (the directions differ by
+  // under a pixel); a sample on another surface at another depth gets its own.
+  struct PixelAir {
+    bool valid = false;
+    double distance = 0;
+    ScatteredLight air;
+  };
+  auto air_for = [&](const Ray& ray, double distance, PixelAir& pixel) {
+    if (!pixel.valid || std::abs(distance - pixel.distance) > 0.01 * pixel.distance) {
+      pixel = {true, distance, sky_.aerial_perspective(ray.direction, distance)};
+    }
+    return pixel.air;
+  };
+  auto sample = [&](double x, double y, uint64_t& rays, PixelAir& pixel_air) {
     const Ray ray = camera.ray_through(x, y);
     ++rays;
     const std::optional<Hit> hit = tracer_.intersect(ray);
@@ -141,7 +155,7 @@ XyzImage Renderer::render(const RenderOptions& options) const {
     const SurfacePoint point = surface_point(ray, *hit);
     std::optional<CachedSkyLight> sky_light = cache->interpolate(x, y, point);
     if (!sky_light) sky_light = sky_light_at(point, -ray.direction, rays);
-    return shade(ray, point, *sky_light, rays);
+    return shade(ray, point, *sky_light, air_for(ray, point.distance, pixel_air), rays);
   };
 
   auto render_tile = [&](int tile) {
@@ -152,8 +166,9 @@ XyzImage Renderer::render(const RenderOptions& options) const {
       for (int x = x0; x < x1; ++x) {
         // A regular n × n grid of samples inside the pixel, averaged with equal weights.
         Spectrum sum;
+        PixelAir pixel_air;
         for (int sy = 0; sy < n; ++sy)
-          for (int sx = 0; sx < n; ++sx) sum += sample(x + (sx + 0.5) / n, y + (sy + 0.5) / n, rays);
+          for (int sx = 0; sx < n; ++sx) sum += sample(x + (sx + 0.5) / n, y + (sy + 0.5) / n, rays, pixel_air);
         image.set(x, y, xyz_from_spectrum(sum * static_cast<float>(1.0 / (n * n))));
       }
     }

@@ -60,7 +60,8 @@ class Renderer {
   // The sky's light at a surface point, exactly (what the cache holds).
   CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& to_viewer, uint64_t& rays) const;
   // What the camera sees of a surface: its light through the air, plus the air's own.
-  Spectrum shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light, uint64_t& rays) const;
+  Spectrum shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light, const ScatteredLight& air,
+                 uint64_t& rays) const;
   // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
   // or the sky and the sun.
   Spectrum mirrored(const SurfacePoint& point, const Vec3& direction, uint64_t& rays) const;

@@ -9,9 +9,11 @@ namespace skylit {
 
 bool same_surface(const SurfacePoint& cached, const SurfacePoint& point) {
   if (cached.material != point.material || dot(cached.normal, point.normal) < 0.95) return false;
-  const Vec3 offset = point.position - cached.position;
-  const double plane_distance = std::abs(dot(cached.normal, offset));
-  return plane_distance < 1e-3 * point.distance + 1e-3 && length(offset) < 0.1 * point.distance + 0.5;
+  // On the cached point's plane within 1 mm per metre of distance. Points of one plane
+  // close together on the screen share their sky light closely enough however far apart
+  // they are in depth (a street's far end near the horizon).
+  const double plane_distance = std::abs(dot(cached.normal, point.position - cached.position));
+  return plane_distance < 1e-3 * point.distance + 1e-3;
 }
 
 SurfaceCache::Grid::Grid(int width, int height, int spacing)
@@ -53,6 +55,28 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
   if (total <= 0) return std::nullopt;
   const float scale = static_cast<float>(1.0 / total);
   return CachedSkyLight{sum.diffuse_irradiance * scale, sum.specular_radiance * scale};
+}
+
+std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, const SurfacePoint& point,
+                                                          int cells) const {
+  int gx, gy;
+  double tx, ty;
+  cell(x, y, gx, gy, tx, ty);
+  const Entry* best = nullptr;
+  double best_distance = 0;
+  for (int cy = std::max(0, gy - cells + 1); cy <= std::min(grid_height_ - 1, gy + cells); ++cy) {
+    for (int cx = std::max(0, gx - cells + 1); cx <= std::min(grid_width_ - 1, gx + cells); ++cx) {
+      const Entry& e = entries_[index(cx, cy)];
+      if (!e.valid || !same_surface(e.point, point)) continue;
+      const double d = std::hypot(pixel_x(cx) + 0.5 - x, pixel_y(cy) + 0.5 - y);
+      if (!best || d < best_distance) {  // ties keep the first in scan order: deterministic
+        best = &e;
+        best_distance = d;
+      }
+    }
+  }
+  if (!best) return std::nullopt;
+  return best->value;
 }
 
 void SurfaceCache::Grid::set(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value) {
@@ -106,7 +130,8 @@ SurfaceCache::SurfaceCache(int width, int height, const Locate& locate, const Co
 
 std::optional<CachedSkyLight> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {
   if (auto value = coarse_.interpolate(x, y, point)) return value;
-  return fine_.interpolate(x, y, point);
+  if (auto value = fine_.interpolate(x, y, point)) return value;
+  return fine_.nearest(x, y, point, 2);
 }
 
 }  // namespace skylit

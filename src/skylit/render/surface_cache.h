@@ -35,7 +35,7 @@ struct CachedSkyLight {
 
 // Whether a cached point can stand in for `point`: the same material on the same plane
 // (normals within ~18°, the point within 1 mm per metre of distance of the cached
-// point's plane) and near.
+// point's plane).
 bool same_surface(const SurfacePoint& cached, const SurfacePoint& point);
 
 class SurfaceCache {
@@ -50,8 +50,9 @@ class SurfaceCache {
   // grid where the coarse one does not cover a pixel's surface; in parallel.
   SurfaceCache(int width, int height, const Locate& locate, const Compute& compute);
 
-  // The value for a surface point seen at image position (x, y) in pixels; none if no
-  // grid point around it lies on its surface.
+  // The value for a surface point seen at image position (x, y) in pixels: interpolated
+  // from the coarse grid or else the fine one; else the nearest fine grid point within 8
+  // pixels on the same surface; none if there is none.
   std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point) const;
 
   // Grid points computed, coarse and fine (for the benchmark and tests).
@@ -69,6 +70,10 @@ class SurfaceCache {
     // The cell containing image position (x, y) and the position's place in it.
     void cell(double x, double y, int& gx, int& gy, double& tx, double& ty) const;
     std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point) const;
+    // The value of the nearest grid point (on screen) within `cells` cells that lies on
+    // the same surface: for slivers of a surface next to an edge, which no corner of
+    // their own cell sees.
+    std::optional<CachedSkyLight> nearest(double x, double y, const SurfacePoint& point, int cells) const;
     void set(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value);
     bool wanted(int gx, int gy) const { return entries_[index(gx, gy)].wanted; }
     void want(int gx, int gy) { entries_[index(gx, gy)].wanted = true; }
