@@ -4,6 +4,8 @@
 #include <png.h>
 #include <gtest/gtest.h>
 
+#include "png_read_util.h"
+
 #include <cmath>
 #include <string>
 
@@ -13,27 +15,8 @@
 namespace skylit {
 namespace {
 
-struct Png {
-  int width = 0, height = 0;
-  std::vector<uint8_t> rgb;
-};
-
-Png read_png(const std::filesystem::path& path) {
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  Png out;
-  if (!png_image_begin_read_from_file(&image, path.c_str())) {
-    ADD_FAILURE() << "libpng: " << image.message;
-    return out;
-  }
-  image.format = PNG_FORMAT_RGB;
-  out.width = int(image.width);
-  out.height = int(image.height);
-  out.rgb.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, out.rgb.data(), 0, nullptr))
-    ADD_FAILURE() << "libpng: " << image.message;
-  return out;
-}
+using Png = Raster;
+Png read_png(const std::filesystem::path& path) { return test::read_png_raster(path); }
 
 // Chunk types in file order (PNG spec §5.3: length, type, data, CRC).
 std::vector<std::string> chunk_types(const std::vector<uint8_t>& bytes) {

@@ -26,14 +26,13 @@ AerialPerspectiveTable::AerialPerspectiveTable(const ScatteringIntegrator& integ
       optical_depth_(kAzimuthSize, kElevationSize, kDistanceSize) {
   std::vector<double> stops;
   for (int k = 1; k < kDistanceSize; ++k) stops.push_back(slice_distance(k));
-  const double mu_sun = std::sin(sun_elevation_rad), cos_sun = std::cos(sun_elevation_rad);
+  const double mu_sun = std::sin(sun_elevation_rad);
   tbb::parallel_for(0, kElevationSize, [&](int j) {
     for (int i = 0; i < kAzimuthSize; ++i) {
-      const RelativeDirection d =
-          mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1), static_cast<double>(j) / (kElevationSize - 1));
-      const double mu = std::sin(d.elevation_rad);
-      const double nu = mu * mu_sun + std::cos(d.elevation_rad) * cos_sun * std::cos(d.azimuth_from_sun_rad);
-      const std::vector<ScatteredLight> light = integrator.up_to(observer_radius_m, mu, mu_sun, nu, stops);
+      const RayCosines c = ray_cosines(
+          mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1), static_cast<double>(j) / (kElevationSize - 1)),
+          sun_elevation_rad);
+      const std::vector<ScatteredLight> light = integrator.up_to(observer_radius_m, c.mu, mu_sun, c.nu, stops);
       in_scattered_.at(i, j, 0) = Spectrum(0.0f);
       optical_depth_.at(i, j, 0) = Spectrum(0.0f);
       for (int k = 1; k < kDistanceSize; ++k) {

@@ -41,17 +41,22 @@ RelativeDirection relative_direction(const Vec3& direction, const Vec3& to_sun) 
   return {elevation, azimuth};
 }
 
+RayCosines ray_cosines(const RelativeDirection& d, double sun_elevation_rad) {
+  const double mu = std::sin(d.elevation_rad);
+  return {mu, mu * std::sin(sun_elevation_rad) +
+                  std::cos(d.elevation_rad) * std::cos(sun_elevation_rad) * std::cos(d.azimuth_from_sun_rad)};
+}
+
 SkyViewTable::SkyViewTable(const ScatteringIntegrator& integrator, const Spectrum& sun_irradiance,
                            double observer_radius_m, double ground_radius_m, double sun_elevation_rad)
     : mapping_(observer_radius_m, ground_radius_m), table_(kAzimuthSize, kElevationSize) {
-  const double mu_sun = std::sin(sun_elevation_rad), cos_sun = std::cos(sun_elevation_rad);
+  const double mu_sun = std::sin(sun_elevation_rad);
   tbb::parallel_for(0, kElevationSize, [&](int j) {
     for (int i = 0; i < kAzimuthSize; ++i) {
-      const RelativeDirection d =
-          mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1), static_cast<double>(j) / (kElevationSize - 1));
-      const double mu = std::sin(d.elevation_rad);
-      const double nu = mu * mu_sun + std::cos(d.elevation_rad) * cos_sun * std::cos(d.azimuth_from_sun_rad);
-      table_.at(i, j) = integrator.along_ray(observer_radius_m, mu, mu_sun, nu, kSegments).radiance * sun_irradiance;
+      const RayCosines c = ray_cosines(
+          mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1), static_cast<double>(j) / (kElevationSize - 1)),
+          sun_elevation_rad);
+      table_.at(i, j) = integrator.along_ray(observer_radius_m, c.mu, mu_sun, c.nu, kSegments).radiance * sun_irradiance;
     }
   });
 }

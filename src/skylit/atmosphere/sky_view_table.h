@@ -33,6 +33,13 @@ class SkyDirectionMapping {
 
 RelativeDirection relative_direction(const Vec3& direction, const Vec3& to_sun);
 
+// The cosines that the scattering integrals take for a direction: of its zenith angle
+// (μ) and of its angle to the sun at elevation sun_elevation_rad (ν).
+struct RayCosines {
+  double mu, nu;
+};
+RayCosines ray_cosines(const RelativeDirection& direction, double sun_elevation_rad);
+
 class SkyViewTable {
  public:
   static constexpr int kAzimuthSize = 96, kElevationSize = 128, kSegments = 32;
