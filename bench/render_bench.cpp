@@ -12,6 +12,7 @@
 namespace {
 
 const std::filesystem::path kExample = std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" / "building.json";
+const std::filesystem::path kFig7 = std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" / "fig7.json";
 
 double peak_memory_mib() {
   rusage usage{};
@@ -62,6 +63,24 @@ void BM_Frame1280x720(benchmark::State& state) {
   state.counters["peak_MiB"] = peak_memory_mib();
 }
 BENCHMARK(BM_Frame1280x720)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One frame of the paper's Fig. 7 at 1280×720 on 2 threads, once the tables are built:
+// tile walls (arg 0) and aluminium walls (arg 1), the sun at 17°.
+void BM_Fig7Frame(benchmark::State& state) {
+  const char* walls = state.range(0) == 0 ? "materials.walls=tile" : "materials.walls=aluminium";
+  const skylit::Scene scene = skylit::load_scene(kFig7, {walls, "sun.altitude_deg=17"});
+  const skylit::Renderer renderer(scene);
+  skylit::RenderOptions options;
+  options.threads = 2;
+  const uint64_t rays_before = renderer.rays_traced();
+  for (auto _ : state) {
+    skylit::XyzImage image = renderer.render(options);
+    benchmark::DoNotOptimize(image.xyz.data());
+  }
+  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(renderer.rays_traced() - rays_before),
+                                                    benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Fig7Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

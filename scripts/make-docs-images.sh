@@ -14,4 +14,10 @@ done
 $skylit sky --sun-altitude 4 --sun-azimuth 180 --projection equirect --size 256 -o "$out/sky-equirect-4.png"
 $skylit spectrum --sun-altitude 30 --plot "$out/spectrum-30.svg"
 $skylit spectrum --sun-altitude 30 --plot "$out/spectrum-30.png"
+# The paper's Fig. 7 as a sweep: the sheet as fig7.png, its cells in fig7/.
+rm -rf "$out/fig7" && mkdir -p "$out/fig7"
+$skylit sweep examples/fig7.json --vary sun.altitude_deg=17,60,4 --vary materials.walls=tile,aluminium \
+  --set render.width=960 --set render.height=540 --title "Fig. 7: sun altitude × wall material" --quiet \
+  -o "$out/fig7/fig7.png"
+mv "$out/fig7/fig7.png" "$out/fig7.png"
 echo "Remade $out/"

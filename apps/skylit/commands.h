@@ -22,4 +22,7 @@ CommandRunner add_sky_command(CLI::App& app);
 // `skylit spectrum --sun-altitude DEG ... [--csv] [--plot FILE]`
 CommandRunner add_spectrum_command(CLI::App& app);
 
+// `skylit sweep SCENE --vary PATH=V1,V2,... [--vary ...] -o SHEET.png` (docs/sweeps.md)
+CommandRunner add_sweep_command(CLI::App& app);
+
 }  // namespace skylit::cli

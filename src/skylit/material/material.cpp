@@ -10,7 +10,10 @@
 namespace skylit {
 
 CookTorranceMaterial::CookTorranceMaterial(const ComplexIor& ior, double roughness, const Spectrum& diffuse_reflectance)
-    : ior_(ior), roughness_(roughness), diffuse_reflectance_(diffuse_reflectance) {
+    : ior_(ior),
+      roughness_(roughness),
+      diffuse_reflectance_(diffuse_reflectance),
+      has_diffuse_(!diffuse_reflectance.is_black()) {
   if (!(roughness >= 0)) throw std::invalid_argument("CookTorranceMaterial: roughness must be ≥ 0");
   if (ior.is_conductor() && has_diffuse())
     throw std::invalid_argument("CookTorranceMaterial: a conductor has no diffuse part");

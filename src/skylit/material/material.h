@@ -59,7 +59,7 @@ class CookTorranceMaterial {
   double roughness() const { return roughness_; }
   // A, as given (before limiting to 1 − F(0)).
   const Spectrum& diffuse_reflectance() const { return diffuse_reflectance_; }
-  bool has_diffuse() const { return !diffuse_reflectance_.is_black(); }
+  bool has_diffuse() const { return has_diffuse_; }
   bool is_mirror() const { return roughness_ < kMirrorRoughness; }
 
   // F(cos θ) of the interface.
@@ -71,6 +71,7 @@ class CookTorranceMaterial {
   ComplexIor ior_;
   double roughness_;
   Spectrum diffuse_reflectance_;
+  bool has_diffuse_;  // asked for every sample: kept rather than recomputed
   std::shared_ptr<const AngularTable> fresnel_;
   Spectrum diffuse_factor_;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "skylit/material/reflection.h"
 #include "skylit/spectrum/cie.h"
@@ -61,6 +62,14 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
       }
     return mean * static_cast<float>(1.0 / total);
   };
+  // The elements whose G reaches ε, found by the walk; their light is gathered after.
+  struct Element {
+    int k, j;
+    double alpha, delta, solid_angle;
+    Vec3 direction;
+    Spectrum sky;
+  };
+  std::vector<Element> found;
   auto visit = [&](int k, int j) {
     const double alpha = kPi / 2 + j * width, delta = k * width;
     if (alpha <= 0 || alpha >= kPi) return 0.0;
@@ -71,9 +80,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
     const Spectrum sky = sky_over(alpha, delta, l);
     const double g = luminance(sky) * weight * solid_angle;
     peak = std::max(peak, g);
-    if (g < kSpecularThreshold * peak) return g;
-    sum += specular_reflection(material, normal, l, to_viewer) * incoming(origin, l, sky, rays) *
-           static_cast<float>(solid_angle);
+    if (g >= kSpecularThreshold * peak) found.push_back({k, j, alpha, delta, solid_angle, l, sky});
     return g;
   };
   // Steps 2(a)–(b): along band k from its segment nearest the mirror direction, both
@@ -94,6 +101,41 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
       if (std::abs(k * width - beta) >= kPi / 2 || std::abs(k * width) > kPi) break;
       if (const double g = walk_band(k); g < kSpecularThreshold * peak || g <= 0) break;
     }
+  }
+
+  // Which elements obstacles hide, one ray each; where an element's neighbours disagree
+  // an obstacle's edge crosses it, and 3 × 3 rays across it find how much of it is
+  // hidden. (A whole element hidden or not, 4–9° wide, made the blurred reflection of a
+  // building opposite blotchy from one surface point to the next.)
+  std::map<std::pair<int, int>, size_t> index;
+  for (size_t i = 0; i < found.size(); ++i) index[{found[i].k, found[i].j}] = i;
+  std::vector<std::optional<Spectrum>> obstacle(found.size());  // the obstacle's light, if hidden
+  for (size_t i = 0; i < found.size(); ++i) {
+    const Ray ray{origin, found[i].direction};
+    ++rays;
+    if (const std::optional<Hit> hit = tracer_.intersect(ray)) obstacle[i] = obstacle_radiance_(ray, *hit, rays);
+  }
+  for (size_t i = 0; i < found.size(); ++i) {
+    const Element& e = found[i];
+    bool edge = false;
+    for (const auto& [dk, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const auto it = index.find({e.k + dk, e.j + dj});
+      edge = edge || (it != index.end() && obstacle[it->second].has_value() != obstacle[i].has_value());
+    }
+    Spectrum incoming_light = obstacle[i] ? *obstacle[i] : e.sky;
+    if (edge) {
+      Spectrum mixed;
+      for (int u = -1; u <= 1; ++u)
+        for (int w = -1; w <= 1; ++w) {
+          const Ray ray{origin, direction_at(e.alpha + u * width / 3, e.delta + w * width / 3)};
+          ++rays;
+          const std::optional<Hit> hit = tracer_.intersect(ray);
+          mixed += hit ? obstacle_radiance_(ray, *hit, rays) : e.sky;
+        }
+      incoming_light = mixed * (1.0f / 9.0f);
+    }
+    sum += specular_reflection(material, normal, e.direction, to_viewer) * incoming_light *
+           static_cast<float>(e.solid_angle);
   }
   return sum;
 }

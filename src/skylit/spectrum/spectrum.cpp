@@ -20,6 +20,10 @@ Spectrum Spectrum::from_bins(const std::vector<double>& bin_values) {
   return s;
 }
 
-float Spectrum::max_value() const { return *std::max_element(values_.begin(), values_.end()); }
+float Spectrum::max_value() const {
+  float m = values_[0];
+  for (float v : values_) m = v > m ? v : m;
+  return m;
+}
 
 }  // namespace skylit

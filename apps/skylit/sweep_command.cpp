@@ -1,0 +1,160 @@
+// `skylit sweep`: renders a scene for every combination of `--vary` values, writes each
+// image next to the contact sheet and the sheet itself, labelled (docs/sweeps.md).
+// Every combination's scene is loaded before anything is rendered, so a bad value in
+// any of them costs nothing and leaves no file behind.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "progress_bar.h"
+#include "skylit/io/contact_sheet.h"
+#include "skylit/io/image.h"
+#include "skylit/io/scene_loader.h"
+#include "skylit/io/sweep.h"
+#include "skylit/render/renderer.h"
+#include "skylit/util/error.h"
+
+namespace skylit::cli {
+
+namespace {
+
+struct SweepArguments {
+  std::string scene_file;
+  std::string sheet;
+  std::vector<std::string> varies;
+  std::vector<std::string> overrides;
+  std::vector<std::string> cell_formats;  // besides png
+  std::string title;
+  int threads = 0;
+  bool quiet = false;
+};
+
+void check_sheet_path(const std::filesystem::path& sheet) {
+  std::string extension = sheet.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".png")
+    throw InputError("cannot write \"" + sheet.string() + "\": a contact sheet is written as .png");
+  const std::filesystem::path dir = sheet.parent_path();
+  if (!dir.empty() && !std::filesystem::is_directory(dir))
+    throw InputError(sheet.string() + ": the folder " + dir.string() + " does not exist");
+}
+
+std::vector<std::string> with_overrides(std::vector<std::string> base, const std::vector<std::string>& more) {
+  base.insert(base.end(), more.begin(), more.end());
+  return base;
+}
+
+// Loads every combination's scene (--set first, then the combination's values) and
+// returns the one exposure they share: InputError naming the combination otherwise.
+std::optional<double> check_combinations(const SweepArguments& args, const SweepPlan& plan) {
+  std::optional<std::optional<double>> shared;
+  for (const SweepCombination& combination : plan.combinations) {
+    const std::string name = "combination " + std::to_string(combination.index + 1) + " of " +
+                             std::to_string(plan.combinations.size()) + " (" + combination_label(plan, combination) +
+                             ")";
+    try {
+      const Scene scene =
+          load_scene(args.scene_file, with_overrides(args.overrides, sweep_overrides(plan, combination)));
+      if (!shared) shared = scene.render.exposure_ev;
+      if (*shared != scene.render.exposure_ev)
+        throw InputError("render.exposure_ev differs between combinations; the sheet and its cells share one exposure");
+    } catch (const InputError& e) {
+      throw InputError(name + ": " + e.what());
+    }
+  }
+  return *shared;
+}
+
+int run_sweep(const SweepArguments& args) {
+  const std::filesystem::path sheet_path = args.sheet;
+  check_sheet_path(sheet_path);
+  std::vector<SweepParameter> parameters;
+  for (const std::string& vary : args.varies) parameters.push_back(parse_sweep_parameter(vary));
+  const SweepPlan plan = plan_sweep(std::move(parameters));
+  std::vector<std::string> extensions = {".png"};
+  for (const std::string& format : args.cell_formats)
+    if (std::find(extensions.begin(), extensions.end(), "." + format) == extensions.end())
+      extensions.push_back("." + format);
+  const std::optional<double> fixed_exposure = check_combinations(args, plan);
+
+  const bool show_progress = !args.quiet && isatty(STDERR_FILENO) != 0;
+  std::vector<XyzImage> images;
+  images.reserve(plan.combinations.size());
+  for (const SweepCombination& combination : plan.combinations) {
+    if (show_progress)
+      std::fprintf(stderr, "cell %zu/%zu: %s\n", combination.index + 1, plan.combinations.size(),
+                   combination_label(plan, combination).c_str());
+    const Scene scene = load_scene(args.scene_file, with_overrides(args.overrides, sweep_overrides(plan, combination)));
+    const Renderer renderer(scene);
+    ProgressBar progress(show_progress);
+    RenderOptions options;
+    options.threads = args.threads;
+    options.on_progress = [&progress](int done, int total) { progress.update(done, total); };
+    images.push_back(renderer.render(options));
+  }
+
+  ContactSheet sheet;
+  sheet.title = args.title.empty() ? std::filesystem::path(args.scene_file).filename().string() : args.title;
+  sheet.row_labels = plan.row_labels;
+  sheet.column_labels = plan.column_labels;
+  sheet.cells.assign(plan.rows, std::vector<const XyzImage*>(plan.columns, nullptr));
+  for (const SweepCombination& combination : plan.combinations)
+    sheet.cells[combination.row][combination.column] = &images[combination.index];
+  sheet.display.exposure_ev = fixed_exposure;
+  // The cell PNGs use the sheet's exposure, so that they compare as the sheet does.
+  const DisplayOptions display{contact_sheet_exposure_ev(sheet)};
+  for (const SweepCombination& combination : plan.combinations)
+    for (const std::string& extension : extensions)
+      write_image(images[combination.index], sweep_cell_path(sheet_path, plan, combination, extension), display);
+  write_contact_sheet(sheet, sheet_path);
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner add_sweep_command(CLI::App& app) {
+  auto args = std::make_shared<SweepArguments>();
+  CLI::App* sweep =
+      app.add_subcommand("sweep",
+                         "Render a scene for every combination of --vary values: one image per combination, next to a "
+                         "labelled contact sheet.");
+  sweep->add_option("scene", args->scene_file, "Scene file (JSON; see docs/scene-format.md)")->required();
+  sweep
+      ->add_option("-o,--output", args->sheet,
+                   "The contact sheet, .png; each combination's image is written next to it as "
+                   "NAME_<n>_<values>.<format>")
+      ->required();
+  sweep
+      ->add_option("--vary", args->varies,
+                   "PATH=V1,V2,...: values of one scene value (as --set). Repeat it: every combination is rendered; "
+                   "the last --vary gives the columns, the ones before it the rows. Values are numbers or words "
+                   "separated by ','; separate them by ';' when they hold commas ([0,1,2];[3,4,5])")
+      ->required()
+      ->allow_extra_args(false);
+  sweep
+      ->add_option("--set", args->overrides,
+                   "Override a scene value for every combination: PATH=VALUE, e.g. --set render.width=640")
+      ->allow_extra_args(false);
+  sweep
+      ->add_option("--cell-format", args->cell_formats,
+                   "Also write each combination's image as exr, pfm or hdr (absolute, linear); repeat for "
+                   "several. The PNGs are always written")
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember({"exr", "pfm", "hdr"}));
+  sweep->add_option("--title", args->title, "The sheet's title (default: the scene file's name)");
+  sweep->add_option("--threads", args->threads, "Worker threads (0: all cores); the images do not depend on it")
+      ->check(CLI::Range(0, 1024));
+  sweep->add_flag("-q,--quiet", args->quiet, "No progress lines");
+  return [sweep, args] { return sweep->parsed() ? run_sweep(*args) : -1; };
+}
+
+}  // namespace skylit::cli

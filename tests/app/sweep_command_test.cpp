@@ -1,0 +1,159 @@
+// `skylit sweep` as a user runs it: every combination's image next to the labelled
+// sheet, extra cell formats, and for any problem (a malformed --vary, a value that
+// breaks one combination's scene, a bad sheet name) exit status 2, one line naming it,
+// and no file written.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <set>
+#include <string>
+
+#include "../test_support.h"
+
+namespace skylit {
+namespace {
+
+using testing::run_skylit;
+using testing::TempDir;
+
+std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+std::set<std::string> files_in(const std::filesystem::path& dir) {
+  std::set<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
+  return names;
+}
+
+// Width and height from a PNG's IHDR chunk.
+std::pair<uint32_t, uint32_t> png_size(const std::filesystem::path& file) {
+  const std::string bytes = testing::read_file(file);
+  EXPECT_GE(bytes.size(), 24u);
+  EXPECT_EQ(bytes.substr(1, 3), "PNG");
+  const auto be32 = [&](size_t at) {
+    uint32_t v = 0;
+    for (size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+    return v;
+  };
+  return {be32(16), be32(20)};
+}
+
+TEST(SweepCommand, WritesEveryCombinationAndTheSheet) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
+  std::filesystem::create_directories(dir.path() / "out");
+  // The --vary before the scene: each occurrence takes one argument.
+  const auto r = run_skylit("sweep --vary sun.altitude_deg=20,50 " + quoted(scene) +
+                            " --vary objects.1.material=white,red --set render.samples_per_axis=1 --quiet -o " +
+                            quoted(dir.path() / "out" / "sheet.png"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_EQ(files_in(dir.path() / "out"),
+            (std::set<std::string>{"sheet.png", "sheet_1_20_white.png", "sheet_2_20_red.png", "sheet_3_50_white.png",
+                                   "sheet_4_50_red.png"}));
+  EXPECT_EQ(png_size(dir.path() / "out" / "sheet_4_50_red.png"), (std::pair<uint32_t, uint32_t>{24, 16}));
+  // Two columns of cells with their labels beside a column of row labels.
+  const auto [width, height] = png_size(dir.path() / "out" / "sheet.png");
+  EXPECT_GT(width, 2u * 24u + 200u);
+  EXPECT_GT(height, 2u * 16u + 40u);
+  // The cells differ: the sun's altitude and the box's material show.
+  EXPECT_NE(testing::read_file(dir.path() / "out" / "sheet_1_20_white.png"),
+            testing::read_file(dir.path() / "out" / "sheet_2_20_red.png"));
+  EXPECT_NE(testing::read_file(dir.path() / "out" / "sheet_1_20_white.png"),
+            testing::read_file(dir.path() / "out" / "sheet_3_50_white.png"));
+}
+
+TEST(SweepCommand, OneVaryAndExtraCellFormats) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
+  const auto r =
+      run_skylit("sweep " + quoted(scene) + " --vary 'camera.position=[0,-20,2];[0,-30,2]' --cell-format exr " +
+                 "--threads 2 -o " + quoted(dir.path() / "s.png"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"scene.json", "s.png", "s_1_0_-20_2.png", "s_1_0_-20_2.exr",
+                                                         "s_2_0_-30_2.png", "s_2_0_-30_2.exr"}));
+}
+
+TEST(SweepCommand, ValueThatBreaksOneCombinationExitsTwoAndWritesNothing) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
+  const auto r =
+      run_skylit("sweep " + quoted(scene) + " --vary sun.altitude_deg=40,95 --vary objects.1.material=white,red " +
+                 "-o " + quoted(dir.path() / "s.png"));
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.output.find("combination 3 of 4 (sun.altitude_deg = 95, objects.1.material = white)"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("sun.altitude_deg"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"scene.json"}));
+}
+
+TEST(SweepCommand, UnknownMaterialInOneCombinationExitsTwo) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
+  const auto r =
+      run_skylit("sweep " + quoted(scene) + " --vary objects.1.material=red,plaid -o " + quoted(dir.path() / "s.png"));
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.output.find("combination 2 of 2 (objects.1.material = plaid)"), std::string::npos) << r.output;
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"scene.json"}));
+}
+
+TEST(SweepCommand, MalformedArgumentsExitTwo) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
+  const std::string base = "sweep " + quoted(scene) + " -o " + quoted(dir.path() / "s.png");
+  const auto no_equals = run_skylit(base + " --vary sun.altitude_deg");
+  EXPECT_EQ(no_equals.exit_status, 2);
+  EXPECT_NE(no_equals.output.find("--vary sun.altitude_deg: expected PATH=V1,V2"), std::string::npos)
+      << no_equals.output;
+  const auto no_values = run_skylit(base + " --vary sun.altitude_deg=");
+  EXPECT_EQ(no_values.exit_status, 2);
+  EXPECT_NE(no_values.output.find("no values"), std::string::npos) << no_values.output;
+  EXPECT_EQ(run_skylit(base).exit_status, 2);  // no --vary
+  EXPECT_EQ(run_skylit(base + " --vary a=1 --vary a=2").exit_status, 2);
+  EXPECT_EQ(run_skylit(base + " --vary sun.altitude_deg=4 --cell-format jpg").exit_status, 2);
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"scene.json"}));
+}
+
+TEST(SweepCommand, BadSheetPathExitsTwo) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
+  const auto jpg =
+      run_skylit("sweep " + quoted(scene) + " --vary sun.altitude_deg=4 -o " + quoted(dir.path() / "s.jpg"));
+  EXPECT_EQ(jpg.exit_status, 2);
+  EXPECT_NE(jpg.output.find("s.jpg"), std::string::npos) << jpg.output;
+  const auto folder =
+      run_skylit("sweep " + quoted(scene) + " --vary sun.altitude_deg=4 -o " + quoted(dir.path() / "no" / "s.png"));
+  EXPECT_EQ(folder.exit_status, 2);
+  EXPECT_NE(folder.output.find("does not exist"), std::string::npos) << folder.output;
+}
+
+TEST(SweepCommand, DifferingExposuresExitTwo) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
+  const auto r =
+      run_skylit("sweep " + quoted(scene) + " --vary render.exposure_ev=10,12 -o " + quoted(dir.path() / "s.png"));
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.output.find("render.exposure_ev differs"), std::string::npos) << r.output;
+  EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"scene.json"}));
+}
+
+TEST(SweepCommand, Fig7ExampleSweepsAtATinySize) {
+  TempDir dir;
+  const std::filesystem::path scene = std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" / "fig7.json";
+  const auto r = run_skylit("sweep " + quoted(scene) +
+                            " --vary sun.altitude_deg=17,60,4 --vary materials.walls=tile,aluminium "
+                            "--set render.width=16 --set render.height=9 --set render.samples_per_axis=1 --quiet -o " +
+                            quoted(dir.path() / "fig7.png"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_EQ(files_in(dir.path()).size(), 7u);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "fig7_6_4_aluminium.png"));
+}
+
+TEST(SweepCommand, HelpExitsZero) {
+  const auto help = run_skylit("sweep --help");
+  EXPECT_EQ(help.exit_status, 0);
+  EXPECT_NE(help.output.find("--vary"), std::string::npos) << help.output;
+}
+
+}  // namespace
+}  // namespace skylit
