@@ -43,7 +43,9 @@ SurfacePoint Renderer::surface_point(const Ray& ray, const Hit& hit) const {
 Spectrum Renderer::sun_reaching(const SurfacePoint& point, uint64_t& rays) const {
   if (dot(point.normal, to_sun_) <= 0) return Spectrum(0.0f);
   const Spectrum sun = sky_.direct_sun(point.position.z);
-  if (sun.is_black()) return sun;
+  // Transmittance is largest in the red: if the last bin is dark, all are (the sun is
+  // below this point's horizon).
+  if (sun[kSpectralBins - 1] <= 0.0f) return sun;
   ++rays;
   if (tracer_.occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_})) return Spectrum(0.0f);
   return sun;
