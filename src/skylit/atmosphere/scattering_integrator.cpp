@@ -127,7 +127,7 @@ Spectrum ScatteringIntegrator::horizontal_irradiance(double r, double mu_sun, in
 }
 
 GroundIrradianceTable ScatteringIntegrator::ground_irradiance(const ScatteringIntegrator& sky) {
-  constexpr int kZenith = 10, kAzimuth = 10, kSegments = 32;
+  constexpr int kZenith = 8, kAzimuth = 8, kSegments = 24;
   const double r = sky.transmittance_.ground_radius();
   std::vector<Spectrum> table(static_cast<size_t>(GroundIrradianceTable::kSize));
   tbb::parallel_for(0, GroundIrradianceTable::kSize, [&](int i) {

@@ -112,19 +112,24 @@ SurfaceCache::SurfaceCache(int width, int height, const Locate& locate, const Co
   for (int gy = 0; gy < coarse_.grid_height(); ++gy)
     for (int gx = 0; gx < coarse_.grid_width(); ++gx) coarse_.want(gx, gy);
   compute_wanted(coarse_, pixels, width, compute);
-  // The fine grid around every pixel whose surface the coarse grid does not cover.
-  for (int y = 0; y < height; ++y) {
+  // The fine grid around every pixel whose surface the coarse grid does not cover: the
+  // rows are checked in parallel, each listing its fine cells, then marked in order.
+  std::vector<std::vector<std::pair<int, int>>> cells(static_cast<size_t>(height));
+  tbb::parallel_for(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const std::optional<SurfacePoint>& p = pixels[static_cast<size_t>(y * width + x)];
       if (!p || coarse_.interpolate(x + 0.5, y + 0.5, *p)) continue;
       int gx, gy;
       double tx, ty;
       fine_.cell(x + 0.5, y + 0.5, gx, gy, tx, ty);
+      cells[static_cast<size_t>(y)].emplace_back(gx, gy);
+    }
+  });
+  for (const auto& row : cells)
+    for (const auto& [gx, gy] : row)
       for (int dy = 0; dy <= 1; ++dy)
         for (int dx = 0; dx <= 1; ++dx)
           fine_.want(std::min(gx + dx, fine_.grid_width() - 1), std::min(gy + dy, fine_.grid_height() - 1));
-    }
-  }
   compute_wanted(fine_, pixels, width, compute);
 }
 
