@@ -20,4 +20,8 @@ $skylit sweep examples/fig7.json --vary sun.altitude_deg=17,60,4 --vary material
   --set render.width=960 --set render.height=540 --title "Fig. 7: sun altitude × wall material" --quiet \
   -o "$out/fig7/fig7.png"
 mv "$out/fig7/fig7.png" "$out/fig7.png"
+# The paper's Fig. 8: fog thinning and thickening with height, and light beams.
+for figure in fig8a fig8b fig8c fig8d; do
+  $skylit render "examples/$figure.json" --quiet --set render.width=960 --set render.height=540 -o "$out/$figure.png"
+done
 echo "Remade $out/"

@@ -13,6 +13,7 @@ namespace skylit {
 // `sun`, or `site` and `time`, and `atmosphere`, from the scene's top level.
 void read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
 AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
+FogSettings read_fog(const JsonReader& fog);
 std::vector<NamedMaterial> read_materials(const JsonReader& materials);
 Spectrum read_reflectance(const JsonReader& reflectance);
 std::vector<SceneObject> read_objects(const JsonReader& objects, const std::vector<NamedMaterial>& materials,

@@ -12,6 +12,8 @@
 // each clamped to a finite value, and capped at kOpaqueColumnM.
 #include "skylit/media/fog_layer.h"
 
+#include "skylit/spectrum/spectral_math.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -130,6 +132,9 @@ double FogLayer::column(double z_p, double z_v, double s1, double s2) const {
   if (span.empty()) return 0.0;
   const double length = span.hi - span.lo;
   const double z_start = std::clamp(z_p + z_v * span.lo, z_bottom_, z_top_);
+  // Only a level ray stays in the layer for ever: with any fog it is opaque (and 0·∞
+  // would make its rise NaN).
+  if (!std::isfinite(length)) return rho0_ > 0.0 ? kOpaqueColumnM : 0.0;
   return piece_column(z_start, z_v * length, length);  // Eq. 10 / σ, i.e. Eq. 22's α·h0/z_v·(1 − u) / σ
 }
 
@@ -151,10 +156,15 @@ double FogLayer::sun_column(double z, double z_sun) const {
 }
 
 Spectrum FogLayer::transmittance(double column_m) const {
-  Spectrum out;
+  // The optical depth in double (columns reach 1e250), then the vectorised single-
+  // precision exponential: the renderer asks for this for every sample.
+  Spectrum depth;
   for (int i = 0; i < kSpectralBins; ++i)
-    out[i] = static_cast<float>(std::exp(-std::min(sigma_bins_[static_cast<size_t>(i)] * column_m, kOpaqueColumnM)));
-  return out;
+    depth[i] = static_cast<float>(std::min(sigma_bins_[static_cast<size_t>(i)] * column_m, 1e4));
+  Spectrum t = transmittance_of(depth);
+  // Below e^−87 single precision has nothing left: opaque is exactly 0.
+  for (int i = 0; i < kSpectralBins; ++i) t[i] = depth[i] >= 87.0f ? 0.0f : t[i];
+  return t;
 }
 
 double FogLayer::phase(double cos_theta) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <mutex>
 
 #include <tbb/blocked_range.h>
@@ -31,6 +32,26 @@ Renderer::Renderer(const Scene& scene)
   tracer_.commit();
   sky_light_ = std::make_unique<SkyLight>(
       sky_, tracer_, [this](const Ray& ray, const Hit& hit, uint64_t& rays) { return obstacle_radiance(ray, hit, rays); });
+  if (scene.fog) {
+    std::vector<const TriangleMesh*> meshes;
+    for (const SceneObject& object : scene.objects) meshes.push_back(&object.mesh);
+    fog_ = std::make_unique<FogMedium>(*scene.fog, meshes, sky_, scene.camera.position);
+  }
+}
+
+Renderer::Between Renderer::between(const Ray& ray, double distance) const {
+  Between b{std::isfinite(distance) ? sky_.aerial_perspective(ray.direction, distance)
+                                    : ScatteredLight{Spectrum(0.0f), Spectrum(1.0f)},
+            {Spectrum(1.0f), Spectrum(0.0f)}};
+  if (fog_) b.fog = fog_->along(ray, distance);
+  return b;
+}
+
+Spectrum Renderer::seen_through(const Spectrum& radiance, const Between& between, bool sky) {
+  // The fog lies near the ground, under the air's long path: fog first, then the air.
+  const Spectrum through_fog = radiance * between.fog.transmittance + between.fog.in_scattered;
+  if (sky) return through_fog;
+  return through_fog * between.air.transmittance + between.air.radiance;
 }
 
 SurfacePoint Renderer::surface_point(const Ray& ray, const Hit& hit) const {
@@ -48,13 +69,13 @@ Spectrum Renderer::sun_reaching(const SurfacePoint& point, uint64_t& rays) const
   if (sun[kSpectralBins - 1] <= 0.0f) return sun;
   ++rays;
   if (tracer_.occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_})) return Spectrum(0.0f);
-  return sun;
+  return fog_ ? sun * fog_->sun_transmittance(point.position) : sun;
 }
 
 Spectrum Renderer::obstacle_radiance(const Ray& ray, const Hit& hit, uint64_t& rays) const {
   const SurfacePoint point = surface_point(ray, hit);
-  const Spectrum irradiance =
-      sky_.sky_irradiance(point.normal) + sun_reaching(point, rays) * static_cast<float>(dot(point.normal, to_sun_));
+  const Spectrum irradiance = sky_.sky_irradiance(point.normal) * fog_sky_share(point.position.z) +
+                              sun_reaching(point, rays) * static_cast<float>(dot(point.normal, to_sun_));
   const Spectrum albedo = diffuse_albedo(material_of(point), -dot(point.normal, ray.direction));
   return albedo * irradiance * static_cast<float>(1.0 / kPi);
 }
@@ -73,31 +94,34 @@ Spectrum Renderer::mirrored(const SurfacePoint& point, const Vec3& direction, ui
 }
 
 Spectrum Renderer::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light,
-                         const ScatteredLight& air, uint64_t& rays) const {
+                         uint64_t& rays) const {
   const Material& material = material_of(point);
   const Vec3 to_viewer = -ray.direction;
   const Spectrum sun = sun_reaching(point, rays);
+  // Sky light, dimmed by any fog above the point.
+  const Spectrum sky_share = fog_sky_share(point.position.z);
   // Lambertian part: sky and sun irradiance.
-  const Spectrum irradiance = sky_light.diffuse_irradiance + sun * static_cast<float>(dot(point.normal, to_sun_));
+  const Spectrum irradiance =
+      sky_light.diffuse_irradiance * sky_share + sun * static_cast<float>(dot(point.normal, to_sun_));
   Spectrum radiance = diffuse_albedo(material, dot(point.normal, to_viewer)) * irradiance * static_cast<float>(1.0 / kPi);
   // Glossy part: the sky's (cached) and the sun's highlight.
-  radiance += sky_light.specular_radiance;
+  radiance += sky_light.specular_radiance * sky_share;
   if (has_specular(material))
     radiance += specular_reflection(material, point.normal, to_sun_, to_viewer) * sun;
   // Mirror part (window glass): what lies in the mirror direction.
   if (const std::optional<Spectrum> mirror = mirror_reflectance(material, point.normal, to_viewer))
     radiance += *mirror * mirrored(point, mirror_direction(point.normal, to_viewer), rays);
-  // The surface's light, dimmed by the air on its way to the camera, plus the air's own.
-  return radiance * air.transmittance + air.radiance;
+  return radiance;
 }
 
 Spectrum Renderer::radiance(const Ray& ray, uint64_t& rays) const {
   ++rays;
   const std::optional<Hit> hit = tracer_.intersect(ray);
-  if (!hit) return sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction);
+  if (!hit)
+    return seen_through(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction),
+                        between(ray, std::numeric_limits<double>::infinity()), true);
   const SurfacePoint point = surface_point(ray, *hit);
-  return shade(ray, point, sky_light_at(point, -ray.direction, rays), sky_.aerial_perspective(ray.direction, hit->t),
-               rays);
+  return seen_through(shade(ray, point, sky_light_at(point, -ray.direction, rays), rays), between(ray, hit->t), false);
 }
 
 XyzImage Renderer::render(const RenderOptions& options) const {
@@ -135,29 +159,31 @@ XyzImage Renderer::render(const RenderOptions& options) const {
   std::mutex progress_mutex;
   int tiles_done = 0;
 
-  // The air between camera and surface is looked up once per pixel and shared by the
-  // pixel's samples that lie within 1 % of the same distance (the directions differ by
-  // under a pixel); a sample on another surface at another depth gets its own.
-  struct PixelAir {
+  // What lies between camera and surface (air, fog) is found once per pixel and shared
+  // by the pixel's samples that lie within 1 % of the same distance (the directions
+  // differ by under a pixel); a sample on another surface at another depth gets its own.
+  struct PixelBetween {
     bool valid = false;
     double distance = 0;
-    ScatteredLight air;
+    Between between;
   };
-  auto air_for = [&](const Ray& ray, double distance, PixelAir& pixel) {
-    if (!pixel.valid || std::abs(distance - pixel.distance) > 0.01 * pixel.distance) {
-      pixel = {true, distance, sky_.aerial_perspective(ray.direction, distance)};
-    }
-    return pixel.air;
+  auto between_for = [&](const Ray& ray, double distance, PixelBetween& pixel) -> const Between& {
+    const bool same = pixel.valid && (std::isinf(distance) ? std::isinf(pixel.distance)
+                                                           : std::abs(distance - pixel.distance) <= 0.01 * pixel.distance);
+    if (!same) pixel = {true, distance, between(ray, distance)};
+    return pixel.between;
   };
-  auto sample = [&](double x, double y, uint64_t& rays, PixelAir& pixel_air) {
+  auto sample = [&](double x, double y, uint64_t& rays, PixelBetween& pixel_between) {
     const Ray ray = camera.ray_through(x, y);
     ++rays;
     const std::optional<Hit> hit = tracer_.intersect(ray);
-    if (!hit) return sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction);
+    if (!hit)
+      return seen_through(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction),
+                          between_for(ray, std::numeric_limits<double>::infinity(), pixel_between), true);
     const SurfacePoint point = surface_point(ray, *hit);
     std::optional<CachedSkyLight> sky_light = cache->interpolate(x, y, point);
     if (!sky_light) sky_light = sky_light_at(point, -ray.direction, rays);
-    return shade(ray, point, *sky_light, air_for(ray, point.distance, pixel_air), rays);
+    return seen_through(shade(ray, point, *sky_light, rays), between_for(ray, point.distance, pixel_between), false);
   };
 
   auto render_tile = [&](int tile) {
@@ -168,9 +194,9 @@ XyzImage Renderer::render(const RenderOptions& options) const {
       for (int x = x0; x < x1; ++x) {
         // A regular n × n grid of samples inside the pixel, averaged with equal weights.
         Spectrum sum;
-        PixelAir pixel_air;
+        PixelBetween pixel_between;
         for (int sy = 0; sy < n; ++sy)
-          for (int sx = 0; sx < n; ++sx) sum += sample(x + (sx + 0.5) / n, y + (sy + 0.5) / n, rays, pixel_air);
+          for (int sx = 0; sx < n; ++sx) sum += sample(x + (sx + 0.5) / n, y + (sy + 0.5) / n, rays, pixel_between);
         image.set(x, y, xyz_from_spectrum(sum * static_cast<float>(1.0 / (n * n))));
       }
     }

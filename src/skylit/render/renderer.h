@@ -19,6 +19,7 @@
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/io/image.h"
 #include "skylit/render/camera.h"
+#include "skylit/render/fog_medium.h"
 #include "skylit/render/scene.h"
 #include "skylit/render/surface_cache.h"
 #include "skylit/sky/sky_light.h"
@@ -59,9 +60,20 @@ class Renderer {
   Spectrum sun_reaching(const SurfacePoint& point, uint64_t& rays) const;
   // The sky's light at a surface point, exactly (what the cache holds).
   CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& to_viewer, uint64_t& rays) const;
-  // What the camera sees of a surface: its light through the air, plus the air's own.
-  Spectrum shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light, const ScatteredLight& air,
-                 uint64_t& rays) const;
+  // What lies between the camera and a point at `distance` along `ray` (infinite: the
+  // sky): the air (aerial perspective; not for the sky, which holds its air already) and
+  // the fog.
+  struct Between {
+    ScatteredLight air;
+    FogMedium::Along fog;
+  };
+  Between between(const Ray& ray, double distance) const;
+  // What the camera sees of light leaving a point (or the sky) through what lies between.
+  static Spectrum seen_through(const Spectrum& radiance, const Between& between, bool sky);
+  // The light a surface sends toward the camera, before the air and fog on the way.
+  Spectrum shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light, uint64_t& rays) const;
+  // The sky light's share that gets through the fog to altitude z (1 without fog).
+  Spectrum fog_sky_share(double z) const { return fog_ ? fog_->sky_light_share(z) : Spectrum(1.0f); }
   // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
   // or the sky and the sun.
   Spectrum mirrored(const SurfacePoint& point, const Vec3& direction, uint64_t& rays) const;
@@ -76,6 +88,7 @@ class Renderer {
   Atmosphere atmosphere_;
   SkyModel sky_;
   std::unique_ptr<SkyLight> sky_light_;
+  std::unique_ptr<FogMedium> fog_;  // none without fog
   mutable std::atomic<uint64_t> rays_traced_{0};
 };
 

@@ -12,6 +12,7 @@
 #include "skylit/geometry/triangle_mesh.h"
 #include "skylit/geometry/vec3.h"
 #include "skylit/material/material.h"
+#include "skylit/media/fog_settings.h"
 
 namespace skylit {
 
@@ -48,6 +49,8 @@ struct Scene {
   Sun sun;
   // The air; its site_elevation_m and earth_sun_distance_au come from `site` and `time`.
   AtmosphereSettings atmosphere;
+  // A fog layer near the ground (§3.2, §5), if any.
+  std::optional<FogSettings> fog;
   std::vector<NamedMaterial> materials;
   std::vector<SceneObject> objects;
   RenderSettings render;

@@ -45,6 +45,7 @@ class Spectrum {
   constexpr float operator[](int i) const { return values_[static_cast<size_t>(i)]; }
 
   Spectrum& operator+=(const Spectrum& o) { for (int i = 0; i < size(); ++i) (*this)[i] += o[i]; return *this; }
+  Spectrum& operator-=(const Spectrum& o) { for (int i = 0; i < size(); ++i) (*this)[i] -= o[i]; return *this; }
   Spectrum& operator*=(const Spectrum& o) { for (int i = 0; i < size(); ++i) (*this)[i] *= o[i]; return *this; }
   Spectrum& operator*=(float s) { for (float& v : values_) v *= s; return *this; }
 
@@ -56,6 +57,7 @@ class Spectrum {
 };
 
 inline Spectrum operator+(Spectrum a, const Spectrum& b) { return a += b; }
+inline Spectrum operator-(Spectrum a, const Spectrum& b) { return a -= b; }
 inline Spectrum operator*(Spectrum a, const Spectrum& b) { return a *= b; }
 inline Spectrum operator*(Spectrum a, float s) { return a *= s; }
 inline Spectrum operator*(float s, Spectrum a) { return a *= s; }

@@ -1,0 +1,81 @@
+// Sky light in fog (the paper's §5.2, Eqs. 13–14). The sky (and, below the horizon, the
+// far ground) lights every droplet of the fog from all directions; the paper assumes a
+// uniform phase function and no obstacles for it, and so do we.
+//
+//   J(z) = ∫_{4π} L(ω)·e^(−t'(z, ω)) dω   (Eq. 13; W m⁻² nm⁻¹)
+//
+// is the light arriving at altitude z inside the layer, each direction ω attenuated by the
+// fog between z and the layer's face along ω (the top for directions above the horizon,
+// the bottom below it; level directions see an infinite column and contribute nothing).
+// It is tabulated once over the layer's altitudes. The radiance scattered toward the
+// viewer along a view ray is then
+//
+//   I = ∫ τ(s)·(ω0/4π)·J(z(s))·e^(−t(s)) ds   (Eq. 11 with F = 1/4π),
+//
+// integrated by the trapezoidal rule with the adaptive pitch of Eq. 14. Quadrature,
+// table and pitch constants, and why: docs/fog.md, "Sky light in fog".
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "skylit/atmosphere/atmosphere.h"
+#include "skylit/geometry/vec3.h"
+#include "skylit/media/fog_layer.h"
+#include "skylit/spectrum/spectrum.h"
+
+namespace skylit {
+
+class FogSkyLight {
+ public:
+  // Zenith bands per hemisphere (their edges at |w| = (k/16)², finer near the horizon),
+  // Gauss–Legendre nodes per band, and azimuths over the half circle on one side of the
+  // sun's vertical plane (the sky is symmetric about it; each counts twice).
+  static constexpr int kBandsPerHemisphere = 16;
+  static constexpr int kNodesPerBand = 3;
+  static constexpr int kHalfAzimuths = 16;
+
+  // Eq. 14's constants (docs/fog.md): the pitch is ds0/(τ·J·e^(−t)) with ds0 = kPitchScale
+  // times the largest J of the table, so that τ·ds ≥ kPitchScale where the integrand is
+  // at its largest; at most kGeometricPitch scale heights (or layer thicknesses) of
+  // altitude change and one attenuation length per step; at least kMinPitchM.
+  static constexpr double kPitchScale = 0.05;
+  static constexpr double kGeometricPitch = 0.07;
+  static constexpr double kAttenuationPitch = 0.3;
+  static constexpr double kMinPitchM = 1e-3;
+  // Termination: the rest of the ray can add at most this fraction of what is summed.
+  static constexpr double kTailTolerance = 1e-3;
+  static constexpr int kMaxSteps = 100000;
+
+  // Copies what it needs of `fog`; reads `sky` only here.
+  FogSkyLight(const FogLayer& fog, const SkyModel& sky, int altitudes = 64);
+
+  // J(z) (W m⁻² nm⁻¹). Below the layer's bottom: the value at the bottom; above its top:
+  // the unattenuated ∫L dω (there is no fog there to scatter it anyway).
+  Spectrum at(double z_m) const;
+  // ∫ L dω over the whole sphere without fog, from the same quadrature.
+  const Spectrum& unattenuated() const { return unattenuated_; }
+  // The table's altitudes (m), increasing from the bottom to the top.
+  const std::vector<double>& altitudes() const { return z_; }
+
+  // Radiance (W m⁻² sr⁻¹ nm⁻¹) scattered toward `viewpoint` by the fog's sky light along
+  // the ray viewpoint + s·dir (dir a unit vector) for s in [s_begin, s_end] (m), with the
+  // fog's extinction from the viewpoint: ∫ τ (ω0/4π) J e^(−t) ds, trapezoidal, Eq. 14's
+  // pitch. s_end may be +∞. `steps`, when given, receives the number of trapezoids.
+  Spectrum in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end) const {
+    return in_scattered(viewpoint, dir, s_begin, s_end, nullptr);
+  }
+  Spectrum in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, int* steps) const;
+
+  const FogLayer& layer() const { return fog_; }
+
+ private:
+  FogLayer fog_;
+  std::vector<double> z_;         // table altitudes
+  std::vector<Spectrum> j_;       // J at them
+  std::array<double, kSpectralBins> j_max_{};  // largest J of the table, per bin
+  double j_max_mean_ = 0.0;       // its bin mean: Eq. 14's scalar scale
+  Spectrum unattenuated_;
+};
+
+}  // namespace skylit

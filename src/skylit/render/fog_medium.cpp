@@ -1,0 +1,118 @@
+#include "skylit/render/fog_medium.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <tbb/parallel_for.h>
+
+#include "skylit/media/fog_sun_integral.h"
+
+namespace skylit {
+
+namespace {
+constexpr double kLongestRayM = 50e3;  // level rays inside the layer: far enough to be opaque
+}
+
+double FogMedium::row_elevation(int row) {
+  const double u = 2.0 * row / (kElevationRows - 1) - 1.0;  // −1 … 1
+  return 0.5 * kPi * u * std::abs(u);
+}
+
+FogMedium::FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes, const SkyModel& sky,
+                     const Vec3& camera)
+    : layer_(settings),
+      sky_(sky),
+      to_sun_(sky.to_sun()),
+      sun_above_fog_(sky.direct_sun(std::max(0.0, layer_.top_m()))),
+      shadows_(meshes, sky.to_sun()),
+      sky_light_(layer_, sky),
+      camera_(camera),
+      row_length_(kElevationRows),
+      row_inscatter_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))) {
+  const Spectrum& open = sky_light_.unattenuated();
+  for (int i = 0; i < kShareAltitudes; ++i) {
+    const double z = layer_.bottom_m() + (layer_.top_m() - layer_.bottom_m()) * i / (kShareAltitudes - 1);
+    const Spectrum j = sky_light_.at(z);
+    Spectrum share;
+    for (int k = 0; k < kSpectralBins; ++k) share[k] = open[k] > 0 ? std::min(1.0f, j[k] / open[k]) : 1.0f;
+    sky_share_.push_back(share);
+  }
+  tbb::parallel_for(0, kElevationRows, [&](int row) {
+    const double e = row_elevation(row);
+    const Vec3 dir{std::cos(e), 0.0, std::sin(e)};
+    const RaySpan inside = layer_.clip(camera_.z, dir.z, 0.0, kLongestRayM);
+    const double length = inside.empty() ? 0.0 : inside.hi;
+    row_length_[static_cast<size_t>(row)] = length;
+    Spectrum sum;
+    double previous = 0.0;
+    for (int k = 0; k <= kDistanceSlices; ++k) {
+      const double u = static_cast<double>(k) / kDistanceSlices;
+      const double d = length * u * u;
+      if (d > previous) sum += sky_light_.in_scattered(camera_, dir, previous, d);
+      previous = d;
+      row_inscatter_[static_cast<size_t>(row * (kDistanceSlices + 1) + k)] = sum;
+    }
+  });
+}
+
+Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance) const {
+  const double u = std::clamp(elevation / (0.5 * kPi), -1.0, 1.0);
+  const double f = (std::copysign(std::sqrt(std::abs(u)), u) + 1.0) * 0.5 * (kElevationRows - 1);
+  const int row = std::min(static_cast<int>(f), kElevationRows - 2);
+  const float w = static_cast<float>(f - row);
+  auto at_row = [&](int r) {
+    const double length = row_length_[static_cast<size_t>(r)];
+    const Spectrum* slices = &row_inscatter_[static_cast<size_t>(r * (kDistanceSlices + 1))];
+    if (length <= 0) return slices[0];
+    if (distance >= length) return slices[kDistanceSlices];
+    // Linear in distance between the two slices around it.
+    const double s = std::sqrt(distance / length) * kDistanceSlices;
+    const int k = std::min(static_cast<int>(s), kDistanceSlices - 1);
+    const double d0 = length * k * k / (kDistanceSlices * kDistanceSlices);
+    const double d1 = length * (k + 1) * (k + 1) / (kDistanceSlices * kDistanceSlices);
+    const float t = static_cast<float>((distance - d0) / (d1 - d0));
+    return slices[k] * (1 - t) + slices[k + 1] * t;
+  };
+  return at_row(row) * (1 - w) + at_row(row + 1) * w;
+}
+
+FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
+  // Only the part of the ray inside the layer matters; an infinite ray (the sky) leaves
+  // the layer within a finite distance unless it runs level inside it.
+  const double end = std::isfinite(distance) ? distance : std::numeric_limits<double>::max();
+  const RaySpan inside = layer_.clip(ray.origin.z, ray.direction.z, 0.0, end);
+  Along out{layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, 0.0, end)), Spectrum(0.0f)};
+  if (inside.empty()) return out;
+  // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
+  if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
+    for (const Interval& lit : shadows_.sunlit_intervals(ray, inside.lo, std::min(inside.hi, 1e12))) {
+      out.in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end,
+                                            sun_above_fog_);
+    }
+  }
+  // Sky light, everywhere along it (the paper's assumption: no shadows for sky light);
+  // from the camera's table when the ray starts there.
+  if (ray.origin == camera_)
+    out.in_scattered += sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)),
+                                                  std::min(distance, kLongestRayM));
+  else
+    out.in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
+  return out;
+}
+
+Spectrum FogMedium::sun_transmittance(const Vec3& point) const {
+  if (to_sun_.z <= 0) return Spectrum(0.0f);
+  return layer_.transmittance(layer_.sun_column(point.z, to_sun_.z));
+}
+
+Spectrum FogMedium::sky_light_share(double z) const {
+  if (z >= layer_.top_m()) return Spectrum(1.0f);
+  const double f = std::clamp((z - layer_.bottom_m()) / (layer_.top_m() - layer_.bottom_m()), 0.0, 1.0) *
+                   (kShareAltitudes - 1);
+  const int i = std::min(static_cast<int>(f), kShareAltitudes - 2);
+  const float w = static_cast<float>(f - i);
+  return sky_share_[static_cast<size_t>(i)] * (1 - w) + sky_share_[static_cast<size_t>(i + 1)] * w;
+}
+
+}  // namespace skylit

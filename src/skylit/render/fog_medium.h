@@ -1,0 +1,64 @@
+// The scene's fog as the renderer meets it (§5 of the paper): what the fog between the
+// camera and a point lets through and adds — the sunlight it scatters in the sunlit
+// parts of the view ray only (the light beams: sunlit intervals from shadow volumes,
+// each integrated in closed form, Appendix), and the sky light it scatters (Eqs. 13–14)
+// — and how it dims the sun and the sky light that reach a surface inside it.
+#pragma once
+
+#include <memory>
+#include <vector>
+#include <vector>
+
+#include "skylit/atmosphere/atmosphere.h"
+#include "skylit/geometry/ray_tracer.h"
+#include "skylit/geometry/shadow_volumes.h"
+#include "skylit/media/fog_layer.h"
+#include "skylit/media/fog_sky_light.h"
+
+namespace skylit {
+
+class FogMedium {
+ public:
+  // `camera` is where the view rays start: the sky light the fog scatters toward it
+  // depends only on a ray's elevation and length (the layer is level and the sky light
+  // in it depends only on altitude), so it is tabulated once for the camera.
+  FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes, const SkyModel& sky,
+            const Vec3& camera);
+
+  struct Along {
+    Spectrum transmittance;  // through the fog from the ray's origin to `distance`
+    Spectrum in_scattered;   // W m⁻² sr⁻¹ nm⁻¹ the fog adds toward the origin
+  };
+  // Along `ray` (unit direction) from its origin to `distance` (may be infinite: the sky).
+  Along along(const Ray& ray, double distance) const;
+
+  // The fog's transmittance toward the sun from a point (0 if the sun is down).
+  Spectrum sun_transmittance(const Vec3& point) const;
+  // The share of the sky light that still reaches altitude z through the fog, per bin
+  // (J(z) over J without fog).
+  Spectrum sky_light_share(double z) const;
+
+  const FogLayer& layer() const { return layer_; }
+
+ private:
+  FogLayer layer_;
+  const SkyModel& sky_;
+  Vec3 to_sun_;
+  Spectrum sun_above_fog_;  // the sun's direct normal irradiance at the layer's top
+  ShadowVolumes shadows_;
+  FogSkyLight sky_light_;
+
+  // The sky light scattered toward the camera along rays of elevation row i, up to
+  // distance slice k: slices at length_i·(k/K)², length_i where the ray leaves the layer.
+  static constexpr int kElevationRows = 257, kDistanceSlices = 48;
+  // J(z)/J without fog at altitudes evenly spaced through the layer.
+  static constexpr int kShareAltitudes = 129;
+  std::vector<Spectrum> sky_share_;
+  static double row_elevation(int row);  // radians, crowded toward the horizontal
+  Spectrum sky_inscatter_from_camera(double elevation, double distance) const;
+  Vec3 camera_;
+  std::vector<double> row_length_;
+  std::vector<Spectrum> row_inscatter_;  // [row][slice]
+};
+
+}  // namespace skylit

@@ -1,0 +1,96 @@
+// Fog in rendered scenes: a vanishing fog changes nothing, fog never adds more light
+// than its sources can give, and beams come only from the sunlit parts of a ray.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "skylit/geometry/primitives.h"
+#include "skylit/media/fog_sun_integral.h"
+#include "skylit/render/fog_medium.h"
+#include "skylit/render/renderer.h"
+#include "skylit/spectrum/cie.h"
+
+namespace skylit {
+namespace {
+
+Scene street_scene() {
+  Scene scene;
+  scene.camera = Camera{{0, -60, 1.6}, {0, 0, 10}, {0, 0, 1}, 50.0};
+  scene.sun = Sun{20, 160};
+  scene.materials.push_back({"white", DiffuseMaterial{Spectrum(0.8f)}});
+  scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 2000), 0});
+  scene.objects.push_back({"block", make_box({-15, 0, 0}, {15, 20, 30}), 0});
+  scene.render = RenderSettings{40, 24, std::nullopt, 1};
+  return scene;
+}
+
+TEST(FogRender, VanishingFogGivesTheImageWithoutFog) {
+  Scene clear = street_scene();
+  Scene fog = street_scene();
+  fog.fog = FogSettings{};
+  fog.fog->density_at_ground = 1e-9;
+  const XyzImage a = Renderer(clear).render(), b = Renderer(fog).render();
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) EXPECT_NEAR(b.at(x, y).y, a.at(x, y).y, 1e-4 * a.at(x, y).y) << x << "," << y;
+}
+
+TEST(FogRender, FogAddsNoMoreLightThanItsSources) {
+  // Single scattering: along a ray the fog adds at most (1 − T) times its largest
+  // source, ω F(θ) E_sun + J/(4π) (white fog, b = 0, no absorption): energy is
+  // redirected, never made.
+  Scene scene = street_scene();
+  scene.fog = FogSettings{};
+  const Atmosphere atmosphere(scene.atmosphere);
+  const Vec3 to_sun = direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
+  const SkyModel sky(atmosphere, to_sun, 1.6);
+  const std::vector<const TriangleMesh*> meshes{&scene.objects[0].mesh, &scene.objects[1].mesh};
+  const FogMedium fog(*scene.fog, meshes, sky, scene.camera.position);
+  const FogSkyLight sky_light(fog.layer(), sky);
+  const Spectrum sun = sky.direct_sun(fog.layer().top_m());
+  for (const Vec3 dir : {normalize(Vec3{0, 1, 0}), normalize(Vec3{0.5, 1, 0.05}), normalize(Vec3{-1, 0.2, 0.3}),
+                         normalize(Vec3{0.3, 1, -0.02})}) {
+    const Ray ray{scene.camera.position, dir};
+    for (double d : {10.0, 100.0, 1000.0, std::numeric_limits<double>::infinity()}) {
+      const FogMedium::Along along = fog.along(ray, d);
+      const double phase = fog.layer().phase(dot(dir, to_sun));
+      for (int k = 0; k < kSpectralBins; k += 7) {
+        const double source = phase * sun[k] + sky_light.unattenuated()[k] / (4 * kPi);
+        EXPECT_LE(along.in_scattered[k], (1.0 - along.transmittance[k]) * source * 1.001 + 1e-12) << d << " bin " << k;
+        EXPECT_GT(along.in_scattered[k], 0.0f);
+      }
+    }
+  }
+}
+
+TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
+  // A ray that passes through the block's shadow gathers less sunlight from the fog
+  // than the same ray without the block, by exactly the closed form over the part in
+  // shadow.
+  Scene scene = street_scene();
+  scene.fog = FogSettings{};
+  scene.fog->density_at_ground = 0.3;
+  const Atmosphere atmosphere(scene.atmosphere);
+  const Vec3 to_sun = direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
+  const SkyModel sky(atmosphere, to_sun, 1.6);
+  const std::vector<const TriangleMesh*> with_block{&scene.objects[0].mesh, &scene.objects[1].mesh};
+  const std::vector<const TriangleMesh*> without{&scene.objects[0].mesh};
+  const Vec3 origin{-80, 40, 2};  // in the block's shadow line: north-west of it, sun from the south-south-east
+  const FogMedium shaded(*scene.fog, with_block, sky, origin), open(*scene.fog, without, sky, origin);
+  const Ray ray{origin, normalize(Vec3{1, 0, 0})};  // eastward, behind the block
+  const double length = 160;
+  const Spectrum difference = open.along(ray, length).in_scattered - shaded.along(ray, length).in_scattered;
+  const ShadowVolumes shadows(with_block, to_sun);
+  double shadowed = length;
+  for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length)) shadowed -= lit.end - lit.begin;
+  ASSERT_GT(shadowed, 5.0);  // the geometry does put part of the ray in shadow
+  // The light lost is the sun's in-scatter over the shadowed part, from the closed form.
+  Spectrum expected = fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, 0, length, sky.direct_sun(60.0));
+  for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length))
+    expected -= fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, lit.begin, lit.end, sky.direct_sun(60.0));
+  for (int k = 0; k < kSpectralBins; k += 7) EXPECT_NEAR(difference[k], expected[k], 1e-4 * expected[k] + 1e-9);
+  EXPECT_GT(luminance(difference), 0.0);
+}
+
+}  // namespace
+}  // namespace skylit
