@@ -64,11 +64,8 @@ void BM_Frame1280x720(benchmark::State& state) {
 }
 BENCHMARK(BM_Frame1280x720)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// One frame of the paper's Fig. 7 at 1280×720 on 2 threads, once the tables are built:
-// tile walls (arg 0) and aluminium walls (arg 1), the sun at 17°.
-void BM_Fig7Frame(benchmark::State& state) {
-  const char* walls = state.range(0) == 0 ? "materials.walls=tile" : "materials.walls=aluminium";
-  const skylit::Scene scene = skylit::load_scene(kFig7, {walls, "sun.altitude_deg=17"});
+// Frames of one scene on 2 threads, once its tables are built, with rays per second.
+void frames_of(benchmark::State& state, const skylit::Scene& scene) {
   const skylit::Renderer renderer(scene);
   skylit::RenderOptions options;
   options.threads = 2;
@@ -80,21 +77,20 @@ void BM_Fig7Frame(benchmark::State& state) {
   state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(renderer.rays_traced() - rays_before),
                                                     benchmark::Counter::kIsRate);
 }
+
+// The paper's Fig. 7 at 1280×720: tile walls (arg 0) and aluminium walls (arg 1), the
+// sun at 17°.
+void BM_Fig7Frame(benchmark::State& state) {
+  const char* walls = state.range(0) == 0 ? "materials.walls=tile" : "materials.walls=aluminium";
+  frames_of(state, skylit::load_scene(kFig7, {walls, "sun.altitude_deg=17"}));
+}
 BENCHMARK(BM_Fig7Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// One frame of the paper's Fig. 8a (fog) and 8c (beams) at 1280×720 on 2 threads, once
-// the tables are built.
+// The paper's Fig. 8a (fog, arg 0) and 8c (beams, arg 1) at 1280×720.
 void BM_Fig8Frame(benchmark::State& state) {
   const std::filesystem::path file = std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" /
                                      (state.range(0) == 0 ? "fig8a.json" : "fig8c.json");
-  const skylit::Scene scene = skylit::load_scene(file);
-  const skylit::Renderer renderer(scene);
-  skylit::RenderOptions options;
-  options.threads = 2;
-  for (auto _ : state) {
-    skylit::XyzImage image = renderer.render(options);
-    benchmark::DoNotOptimize(image.xyz.data());
-  }
+  frames_of(state, skylit::load_scene(file));
 }
 BENCHMARK(BM_Fig8Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
