@@ -46,13 +46,12 @@ void BM_SceneSetup(benchmark::State& state) {
 }
 BENCHMARK(BM_SceneSetup)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// One 1280×720 frame with the scene's own settings (2×2 samples per pixel) on the
-// given number of threads.
-void BM_Frame1280x720(benchmark::State& state) {
-  skylit::Scene scene = skylit::load_scene(kExample, {"render.width=1280", "render.height=720"});
+// Frames of one scene on `threads` threads, once its tables are built, with rays per
+// second and the process's peak memory.
+void frames_of(benchmark::State& state, const skylit::Scene& scene, int threads = 2) {
   const skylit::Renderer renderer(scene);
   skylit::RenderOptions options;
-  options.threads = static_cast<int>(state.range(0));
+  options.threads = threads;
   const uint64_t rays_before = renderer.rays_traced();
   for (auto _ : state) {
     skylit::XyzImage image = renderer.render(options);
@@ -62,21 +61,14 @@ void BM_Frame1280x720(benchmark::State& state) {
                                                     benchmark::Counter::kIsRate);
   state.counters["peak_MiB"] = peak_memory_mib();
 }
-BENCHMARK(BM_Frame1280x720)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Frames of one scene on 2 threads, once its tables are built, with rays per second.
-void frames_of(benchmark::State& state, const skylit::Scene& scene) {
-  const skylit::Renderer renderer(scene);
-  skylit::RenderOptions options;
-  options.threads = 2;
-  const uint64_t rays_before = renderer.rays_traced();
-  for (auto _ : state) {
-    skylit::XyzImage image = renderer.render(options);
-    benchmark::DoNotOptimize(image.xyz.data());
-  }
-  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(renderer.rays_traced() - rays_before),
-                                                    benchmark::Counter::kIsRate);
+// One 1280×720 frame of the example with its own settings (2×2 samples per pixel) on
+// the given number of threads.
+void BM_Frame1280x720(benchmark::State& state) {
+  frames_of(state, skylit::load_scene(kExample, {"render.width=1280", "render.height=720"}),
+            static_cast<int>(state.range(0)));
 }
+BENCHMARK(BM_Frame1280x720)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The paper's Fig. 7 at 1280×720: tile walls (arg 0) and aluminium walls (arg 1), the
 // sun at 17°.
