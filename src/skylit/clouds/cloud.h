@@ -1,0 +1,173 @@
+// One cloud (§6, Eq. 16): an ellipse in the sky at a mid-plane altitude, given a
+// thickness that varies across it, filled with water droplets of uniform density.
+//
+// Shape. Kaneda et al. map "a thickness function [Fourier series composed of a
+// polynomial of sine waves (Gardner 1985)] onto an ellipse". From Gardner, G. Y. (1985),
+// "Visual simulation of clouds", SIGGRAPH '85, Computer Graphics 19(3):297–303, we take
+// his texture function: a product of two sums of sine waves, one along each horizontal
+// axis, T(x, y) ∝ (1 + Σ a_i sin(ω_i x + φ_i)) · (1 + Σ b_i sin(ν_i y + ψ_i)), with (in
+// the generated layers, cloud_layer.h) his spectral rule that each wave has twice the
+// frequency and 1/√2 the amplitude of the one before. We do not take his ellipsoids,
+// his translucency threshold or his cross-coupled phase shifts: here the texture
+// modulates a thickness, and the cloud is the solid
+//
+//   { (x, y, z) : r(x, y) < 1, |z − z_mid| ≤ T(x, y)/2 },
+//   T = T_max · (1 − r²)^p · f_u(u) · f_v(v),
+//   f(u) = max(0, 1 + Σ a_i sin(ω_i u + φ_i)) / (1 + Σ |a_i|)   (so 0 ≤ f ≤ 1),
+//
+// where (u, v) are the horizontal coordinates along the ellipse's axes measured from
+// its centre and r² = (u/A)² + (v/B)² for the semi-axes A, B. T ≤ T_max everywhere;
+// with Σ|a_i| < 1 the texture never reaches 0 and the footprint is the whole ellipse.
+// p = 1/2 (the default) is the thickness of an ellipsoid: thin toward the rim.
+//
+// Optics. Droplets (diameters ~ 5–50 µm) are much larger than visible wavelengths:
+// extinction and phase function are taken as wavelength-independent (grey), as the
+// paper says (§6). The extinction coefficient σ is uniform inside the cloud; the
+// default 0.05 m⁻¹ is that of a cumulus with liquid water content ~0.35 g m⁻³ and
+// effective radius ~10 µm (σ ≈ 3·LWC/(2 ρ_w r_e)), an in-cloud visibility of ~60–80 m,
+// and gives a 400 m thick cloud an optical depth of 20 (cumulus: 10–50). The phase
+// function is the droplet fit of Jendersie & d'Eon (2023) (media/fog_phase.h) at a
+// droplet diameter of 20 µm: strongly forward-peaked (mean cosine ~0.87), with a
+// diffraction spike within a few degrees of the sun. Single-scattering albedo 1.
+//
+// Light (Eq. 16). Along a viewing ray, the radiance leaving the cloud toward the viewer:
+//
+//   I_c = I_behind e^{−t_total} + ∫ σ (ω F(θ) E_sun + I_a) e^{−t(s) − t'(s)} ds,
+//
+// with E_sun the sun's irradiance at the cloud (Eq. 15, supplied by the caller), t'(s)
+// the optical depth from the point toward the sun through this cloud's 3-D shape, t(s)
+// the optical depth from the point back toward the viewer, and I_a a uniform ambient
+// radiance standing for multiple scattering (iii). As in the paper, I_a too is
+// attenuated by e^{−t'}: it stands for sunlight scattered many times near where it
+// entered, so it is bright on the sides facing the sun and fades into the cloud. This is
+// what makes the sunlit side of a cloud brighter when the sun is behind the viewer:
+// single scattering alone, with F ~0.01 sr⁻¹ in the backward directions, is swamped by a
+// uniform I_a that ignores the sun's side (docs/clouds.md gives the numbers).
+#pragma once
+
+#include <type_traits>
+#include <vector>
+
+#include "skylit/geometry/vec3.h"
+#include "skylit/spectrum/spectrum.h"
+
+namespace skylit {
+
+inline constexpr double kDefaultCloudExtinction = 0.05;       // m⁻¹ (see above)
+inline constexpr double kCloudDropletDiameterUm = 20.0;       // for the phase function
+inline constexpr double kDefaultCloudAmbientFraction = 0.25;  // see default_cloud_ambient
+
+// The cloud phase function F(θ) (sr⁻¹, normalised over the sphere): the droplet fit of
+// media/fog_phase.h at kCloudDropletDiameterUm. cos θ = V·L for the viewing direction V
+// (from the viewer into the cloud) and the direction L toward the sun.
+double cloud_phase(double cos_theta);
+
+// One sine wave of the thickness texture: amplitude (dimensionless), angular frequency
+// (rad/m along the axis), phase (rad).
+struct CloudWave {
+  double amplitude = 0;
+  double frequency = 0;
+  double phase = 0;
+};
+
+struct CloudShape {
+  double center_x = 0, center_y = 0;  // m
+  double altitude = 1500;             // z of the mid-plane, m
+  double semi_axis_a = 1000;          // m, along the u axis
+  double semi_axis_b = 600;           // m, along the v axis
+  double rotation = 0;                // rad: angle of the u axis counter-clockwise from east (+x)
+  double max_thickness = 400;         // T_max, m
+  double falloff_exponent = 0.5;      // p in (1 − r²)^p
+  std::vector<CloudWave> waves_u;     // texture along u (Gardner's x series)
+  std::vector<CloudWave> waves_v;     // texture along v (Gardner's y series)
+  double extinction = kDefaultCloudExtinction;  // σ, m⁻¹, grey
+  double albedo = 1.0;                          // ω, single-scattering albedo
+};
+
+// Lighting of a cloud, from the caller's atmosphere model.
+struct CloudLighting {
+  Vec3 to_sun{0, 0, 1};  // unit vector toward the sun
+  Spectrum sun;          // E_sun at the cloud's altitude (Eq. 15), W m⁻² nm⁻¹, normal to the beam
+  Spectrum ambient;      // I_a, W m⁻² sr⁻¹ nm⁻¹
+};
+
+// A default for I_a: kDefaultCloudAmbientFraction · E_sun · max(sin h, 0) / π for the
+// sun's altitude h — the radiance of a Lambertian surface of albedo 0.25 under the sun,
+// about what a thick cloud's base transmits diffusely (a two-stream estimate for optical
+// depth ~20 and g ~0.85 gives 0.2–0.3). The renderer may add a share of the sky's mean
+// radiance for when the sun is down.
+Spectrum default_cloud_ambient(const Spectrum& sun_at_cloud, const Vec3& to_sun);
+
+// What a segment of a ray through a cloud does to light: radiance leaving = behind ·
+// transmittance + in_scattered (Eq. 16).
+struct CloudScattering {
+  Spectrum in_scattered;
+  double transmittance = 1.0;
+};
+
+class Cloud {
+ public:
+  // Negative or non-finite sizes are taken as 0 (an empty cloud).
+  explicit Cloud(const CloudShape& shape);
+
+  const CloudShape& shape() const { return shape_; }
+
+  // T(x, y) in metres at a world position (0 outside the ellipse).
+  double thickness(double x, double y) const;
+  bool contains(const Vec3& p) const;
+  // Half-width of the axis-aligned box around the footprint, along x and y.
+  double extent_x() const { return extent_x_; }
+  double extent_y() const { return extent_y_; }
+
+  // The part [t0, t1] of the ray o + t·d, t in [t_min, t_max], inside the cloud's bounding
+  // volume (elliptic cylinder ∩ slab |z − z_mid| ≤ T_max/2); false if empty. d need not
+  // be unit; t_max may be infinite.
+  bool clip(const Vec3& o, const Vec3& d, double t_min, double t_max, double& t0, double& t1) const;
+
+  // Optical depth (grey) along o + t·d, t in [t_min, t_max], d a unit vector.
+  double optical_depth(const Vec3& o, const Vec3& d, double t_min, double t_max) const;
+  double transmittance(const Vec3& o, const Vec3& d, double t_min, double t_max) const;
+  // e^{−t'} from p toward the sun through this cloud.
+  double sun_transmittance(const Vec3& p, const Vec3& to_sun) const;
+
+  // In-scattered radiance and transmittance of the segment of the viewing ray o + t·d
+  // (d unit, from the viewer), t in [t_min, t_max] (Eq. 16 without I_behind). With the
+  // sun below the horizon or E_sun black, only I_a remains (still through e^{−t'}).
+  CloudScattering scatter(const Vec3& o, const Vec3& d, double t_min, double t_max,
+                          const CloudLighting& light) const;
+  // Eq. 16 in full: I_behind · e^{−t_total} + in-scattered.
+  Spectrum radiance(const Vec3& o, const Vec3& d, double t_min, double t_max, const Spectrum& behind,
+                    const CloudLighting& light) const;
+
+  // Calls inside(s0, s1) for each stretch of [t0, t1] (already clipped) found inside the
+  // solid (the inside part of each step of the march, docs/clouds.md), in order;
+  // resolution scales the number of steps.
+  template <typename F>
+  void for_each_inside(const Vec3& o, const Vec3& d, double t0, double t1, double resolution, F&& inside) const;
+
+ private:
+  double texture(double w, const std::vector<CloudWave>& waves, double norm) const;
+  double local_thickness(double u, double v) const;
+  // g = T/2 − |z − z_mid| at o + t·d: ≥ 0 inside.
+  double inside_margin(const Vec3& o, const Vec3& d, double t) const;
+  int step_count(const Vec3& d, double length, double resolution) const;
+  void march(const Vec3& o, const Vec3& d, double t0, double t1, double resolution,
+             void (*sink)(void*, double, double), void* ctx) const;
+
+  CloudShape shape_;
+  double cos_r_ = 1, sin_r_ = 0;
+  double norm_u_ = 1, norm_v_ = 1;
+  double horizontal_scale_ = 0;  // step length wanted along the horizontal, m
+  double extent_x_ = 0, extent_y_ = 0;
+  bool empty_ = true;
+};
+
+template <typename F>
+void Cloud::for_each_inside(const Vec3& o, const Vec3& d, double t0, double t1, double resolution,
+                            F&& inside) const {
+  march(o, d, t0, t1, resolution,
+        [](void* ctx, double s0, double s1) { (*static_cast<std::remove_reference_t<F>*>(ctx))(s0, s1); },
+        const_cast<void*>(static_cast<const void*>(&inside)));
+}
+
+}  // namespace skylit
