@@ -46,21 +46,25 @@ CloudLayer CloudLayer::generate(const CloudLayerSettings& in) {
     c.rotation = uniform(0.0, kPi);
     c.max_thickness = uniform(t_lo, t_hi);
     c.extinction = s.extinction;
-    // Gardner's series: the first wave about one per semi-axis, each next at twice the
-    // frequency and 1/√2 the amplitude, random phases.
-    for (int axis = 0; axis < 2; ++axis) {
-      std::vector<CloudWave>& series = axis == 0 ? c.waves_u : c.waves_v;
-      const double base = 2 * kPi / ((axis == 0 ? c.semi_axis_a : c.semi_axis_b) * uniform(0.8, 1.25));
-      double amp = amp0;
-      for (int i = 0; i < waves; ++i) {
-        series.push_back({amp, base * std::ldexp(1.0, i), uniform(0.0, 2 * kPi)});
-        amp *= 0.70710678118654752;
-      }
-    }
+    add_gardner_waves(c, rng(), waves, amp0);
     area += kPi * c.semi_axis_a * c.semi_axis_b;
     clouds.emplace_back(c);
   }
   return CloudLayer(std::move(clouds));
+}
+
+void add_gardner_waves(CloudShape& c, std::uint64_t seed, int waves, double first_amplitude) {
+  std::mt19937_64 rng(seed);
+  auto uniform = [&](double a, double b) { return a + (b - a) * cloud_uniform(rng()); };
+  for (int axis = 0; axis < 2; ++axis) {
+    std::vector<CloudWave>& series = axis == 0 ? c.waves_u : c.waves_v;
+    const double base = 2 * kPi / ((axis == 0 ? c.semi_axis_a : c.semi_axis_b) * uniform(0.8, 1.25));
+    double amp = first_amplitude;
+    for (int i = 0; i < std::clamp(waves, 0, 16); ++i) {
+      series.push_back({amp, base * std::ldexp(1.0, i), uniform(0.0, 2 * kPi)});
+      amp *= 0.70710678118654752;
+    }
+  }
 }
 
 std::vector<CloudLayer::Crossing> CloudLayer::crossings(const Vec3& o, const Vec3& d, double t_min,

@@ -32,6 +32,11 @@ struct CloudLayerSettings {
 // A uniform double in [0, 1) from the top 53 bits of one draw.
 double cloud_uniform(std::uint64_t draw);
 
+// Gardner's (1985) series on both axes of a cloud: the first wave about one per
+// semi-axis, each next at twice the frequency and 1/√2 the amplitude, random phases from
+// `seed`. For clouds given one by one in a scene.
+void add_gardner_waves(CloudShape& shape, std::uint64_t seed, int waves = 4, double first_amplitude = 0.3);
+
 class CloudLayer {
  public:
   CloudLayer() = default;
