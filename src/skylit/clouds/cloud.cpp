@@ -7,6 +7,9 @@
 #include "skylit/atmosphere/phase_functions.h"
 #include "skylit/media/fog_phase.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace skylit {
 
 namespace {
@@ -28,6 +31,23 @@ double cloud_phase(double cos_theta) {
   static const DropletPhaseParameters params = DropletPhaseParameters::for_diameter(kCloudDropletDiameterUm);
   const double c = std::isfinite(cos_theta) ? std::clamp(cos_theta, -1.0, 1.0) : 0.0;
   return droplet_phase(c, params);
+}
+
+double cloud_mean_cosine() {
+  // 2π ∫ μ F(μ) dμ with μ = 1 − x², which resolves the forward spike (as the test of the
+  // normalisation does).
+  static const double g = [] {
+    const int n = 200000;
+    const double dx = std::sqrt(2.0) / n;
+    double sum = 0;
+    for (int i = 0; i < n; ++i) {
+      const double x = (i + 0.5) * dx;
+      const double mu = 1 - x * x;
+      sum += mu * cloud_phase(mu) * 2 * x * dx;
+    }
+    return 2 * kPi * sum;
+  }();
+  return g;
 }
 
 Spectrum default_cloud_ambient(const Spectrum& sun_at_cloud, const Vec3& to_sun) {
@@ -212,6 +232,65 @@ double Cloud::sun_transmittance(const Vec3& p, const Vec3& to_sun) const {
   return std::exp(-optical_depth(p, to_sun, 0.0, kInf));
 }
 
+void Cloud::prepare_sun(const Vec3& to_sun) {
+  sun_grid_.clear();
+  const double len = length(to_sun);
+  if (empty_ || !(len > 0) || !std::isfinite(len)) return;
+  sun_dir_ = to_sun / len;
+  std::vector<float> grid(static_cast<std::size_t>(kSunGridU) * kSunGridV * kSunGridZ);
+  const double a = shape_.semi_axis_a, b = shape_.semi_axis_b, tm = shape_.max_thickness;
+  tbb::parallel_for(tbb::blocked_range<int>(0, kSunGridV * kSunGridZ), [&](const tbb::blocked_range<int>& r) {
+    for (int jk = r.begin(); jk != r.end(); ++jk) {
+      const int j = jk % kSunGridV, k = jk / kSunGridV;
+      const double v = -b + 2 * b * j / (kSunGridV - 1);
+      const double z = shape_.altitude - 0.5 * tm + tm * k / (kSunGridZ - 1);
+      for (int i = 0; i < kSunGridU; ++i) {
+        const double u = -a + 2 * a * i / (kSunGridU - 1);
+        const Vec3 p{shape_.center_x + u * cos_r_ - v * sin_r_, shape_.center_y + u * sin_r_ + v * cos_r_, z};
+        const double value = optical_depth(p, sun_dir_, 0.0, kInf);
+        grid[static_cast<std::size_t>(jk) * kSunGridU + i] = static_cast<float>(value);
+      }
+    }
+  });
+  sun_grid_ = std::move(grid);
+}
+
+bool Cloud::sun_prepared_for(const Vec3& to_sun) const {
+  if (sun_grid_.empty()) return false;
+  const double len = length(to_sun);
+  if (!(len > 0) || !std::isfinite(len)) return false;
+  const Vec3 d = to_sun / len;
+  return std::abs(d.x - sun_dir_.x) <= 1e-12 && std::abs(d.y - sun_dir_.y) <= 1e-12 &&
+         std::abs(d.z - sun_dir_.z) <= 1e-12;
+}
+
+double Cloud::interpolated_sun_depth(const Vec3& p) const {
+  if (sun_grid_.empty()) return 0.0;
+  const double dx = p.x - shape_.center_x, dy = p.y - shape_.center_y;
+  const double u = dx * cos_r_ + dy * sin_r_, v = -dx * sin_r_ + dy * cos_r_;
+  const double a = shape_.semi_axis_a, b = shape_.semi_axis_b, tm = shape_.max_thickness;
+  auto cell = [](double x, int n, int& i0, double& f) {
+    x = std::clamp(std::isfinite(x) ? x : 0.0, 0.0, static_cast<double>(n - 1));
+    i0 = std::min(static_cast<int>(x), n - 2);
+    f = x - i0;
+  };
+  int i, j, k;
+  double fu, fv, fz;
+  cell((u + a) / (2 * a) * (kSunGridU - 1), kSunGridU, i, fu);
+  cell((v + b) / (2 * b) * (kSunGridV - 1), kSunGridV, j, fv);
+  cell((p.z - shape_.altitude + 0.5 * tm) / tm * (kSunGridZ - 1), kSunGridZ, k, fz);
+  auto at = [&](int ii, int jj, int kk) {
+    return static_cast<double>(sun_grid_[(static_cast<std::size_t>(kk) * kSunGridV + jj) * kSunGridU + ii]);
+  };
+  auto plane = [&](int kk) {
+    const double c0 = at(i, j, kk) + fu * (at(i + 1, j, kk) - at(i, j, kk));
+    const double c1 = at(i, j + 1, kk) + fu * (at(i + 1, j + 1, kk) - at(i, j + 1, kk));
+    return c0 + fv * (c1 - c0);
+  };
+  const double p0 = plane(k), p1 = plane(k + 1);
+  return std::max(0.0, p0 + fz * (p1 - p0));
+}
+
 CloudScattering Cloud::scatter(const Vec3& o, const Vec3& d, double t_min, double t_max,
                                const CloudLighting& light) const {
   CloudScattering out;
@@ -224,15 +303,19 @@ CloudScattering Cloud::scatter(const Vec3& o, const Vec3& d, double t_min, doubl
   const Spectrum sun_source =
       has_sun ? light.sun * static_cast<float>(shape_.albedo * cloud_phase(dot(d, to_sun) / std::max(length(d), 1e-300)))
               : Spectrum(0.0f);
+  // With no usable sun direction t' is still taken straight up (as before).
+  const bool use_grid = sun_prepared_for(to_sun);
+  const double similarity = 1.0 - cloud_mean_cosine();  // (1 − g): van de Hulst's similarity
   double view_depth = 0;  // t(s): from the viewer's side of the cloud to s
   for_each_inside(o, d, t0, t1, 1.0, [&](double s0, double s1) {
     const double tau = sigma * (s1 - s0);
     const double weight = std::exp(-view_depth) * -std::expm1(-tau);  // ∫ σ e^{−t(s)} ds over the stretch
-    // Eq. 16 as the paper writes it: both sources attenuated by e^{−t'} toward the sun.
     const Vec3 mid = o + d * (0.5 * (s0 + s1));
-    const double sun_path = std::exp(-optical_depth(mid, to_sun, 0.0, kInf));
-    const Spectrum source = has_sun ? sun_source + light.ambient : light.ambient;
-    out.in_scattered += source * static_cast<float>(weight * sun_path);
+    const double t_sun = use_grid ? interpolated_sun_depth(mid) : optical_depth(mid, to_sun, 0.0, kInf);
+    // Single-scattered sun through e^{−t'} (Eq. 16); the multiple-scattering term I_a
+    // through the similarity-scaled e^{−(1−g) t'} (docs/clouds.md).
+    if (has_sun) out.in_scattered += sun_source * static_cast<float>(weight * std::exp(-t_sun));
+    out.in_scattered += light.ambient * static_cast<float>(weight * std::exp(-similarity * t_sun));
     view_depth += tau;
   });
   out.transmittance = std::exp(-view_depth);

@@ -32,17 +32,23 @@
 //
 // Light (Eq. 16). Along a viewing ray, the radiance leaving the cloud toward the viewer:
 //
-//   I_c = I_behind e^{−t_total} + ∫ σ (ω F(θ) E_sun + I_a) e^{−t(s) − t'(s)} ds,
+//   I_c = I_behind e^{−t_total} + ∫ σ (ω F(θ) E_sun e^{−t'(s)} + I_a e^{−(1−g) t'(s)}) e^{−t(s)} ds,
 //
 // with E_sun the sun's irradiance at the cloud (Eq. 15, supplied by the caller), t'(s)
 // the optical depth from the point toward the sun through this cloud's 3-D shape, t(s)
 // the optical depth from the point back toward the viewer, and I_a a uniform ambient
-// radiance standing for multiple scattering (iii). As in the paper, I_a too is
-// attenuated by e^{−t'}: it stands for sunlight scattered many times near where it
-// entered, so it is bright on the sides facing the sun and fades into the cloud. This is
-// what makes the sunlit side of a cloud brighter when the sun is behind the viewer:
-// single scattering alone, with F ~0.01 sr⁻¹ in the backward directions, is swamped by a
-// uniform I_a that ignores the sun's side (docs/clouds.md gives the numbers).
+// radiance standing for multiple scattering (iii). Unlike the paper's printed Eq. 16,
+// I_a is attenuated by the similarity-scaled depth e^{−(1−g) t'} (g = cloud_mean_cosine(),
+// 0.879; van de Hulst's similarity relation: in a forward-scattering medium multiply
+// scattered light diffuses with transport coefficient σ(1−g)), not by e^{−t'}: it still
+// fades into the cloud away from the sun's side (so the sunlit side stays brighter with
+// the sun behind the viewer), but thick centres no longer go black. The single-scattered
+// sun keeps e^{−t'} (docs/clouds.md).
+//
+// Speed. prepare_sun(to_sun) tabulates t' on a kSunGridU × kSunGridV × kSunGridZ grid of
+// nodes over the bounding volume in the cloud's frame (u, v, z − z_mid); scatter() with
+// the same sun direction then interpolates it trilinearly instead of marching toward the
+// sun at every step (docs/clouds.md gives the measured error and speed-up).
 #pragma once
 
 #include <type_traits>
@@ -56,11 +62,18 @@ namespace skylit {
 inline constexpr double kDefaultCloudExtinction = 0.05;       // m⁻¹ (see above)
 inline constexpr double kCloudDropletDiameterUm = 20.0;       // for the phase function
 inline constexpr double kDefaultCloudAmbientFraction = 0.25;  // see default_cloud_ambient
+// Nodes of the sun optical-depth grid (prepare_sun): along u, v (the ellipse's axes, over
+// [−A, A] × [−B, B]) and z (over the slab |z − z_mid| ≤ T_max/2).
+inline constexpr int kSunGridU = 64;
+inline constexpr int kSunGridV = 64;
+inline constexpr int kSunGridZ = 24;
 
 // The cloud phase function F(θ) (sr⁻¹, normalised over the sphere): the droplet fit of
 // media/fog_phase.h at kCloudDropletDiameterUm. cos θ = V·L for the viewing direction V
 // (from the viewer into the cloud) and the direction L toward the sun.
 double cloud_phase(double cos_theta);
+// g = ∫ cos θ F(θ) dΩ of cloud_phase (computed once, numerically): 0.879.
+double cloud_mean_cosine();
 
 // One sine wave of the thickness texture: amplitude (dimensionless), angular frequency
 // (rad/m along the axis), phase (rad).
@@ -127,12 +140,24 @@ class Cloud {
   // Optical depth (grey) along o + t·d, t in [t_min, t_max], d a unit vector.
   double optical_depth(const Vec3& o, const Vec3& d, double t_min, double t_max) const;
   double transmittance(const Vec3& o, const Vec3& d, double t_min, double t_max) const;
-  // e^{−t'} from p toward the sun through this cloud.
+  // e^{−t'} from p toward the sun through this cloud (always marched).
   double sun_transmittance(const Vec3& p, const Vec3& to_sun) const;
+
+  // Tabulates t' toward to_sun (normalised here) on the sun grid (kSunGrid*), in parallel
+  // with TBB. Call once per scene / sun direction; not thread-safe against concurrent
+  // scatter() calls. A zero or non-finite direction clears the grid.
+  void prepare_sun(const Vec3& to_sun);
+  void clear_sun() { sun_grid_.clear(); }
+  // Whether scatter() with this (unit or not) sun direction will use the grid.
+  bool sun_prepared_for(const Vec3& to_sun) const;
+  // t' at p toward the prepared sun by trilinear interpolation of the grid (p inside the
+  // bounding volume or clamped onto it). Only meaningful when a grid is prepared.
+  double interpolated_sun_depth(const Vec3& p) const;
 
   // In-scattered radiance and transmittance of the segment of the viewing ray o + t·d
   // (d unit, from the viewer), t in [t_min, t_max] (Eq. 16 without I_behind). With the
-  // sun below the horizon or E_sun black, only I_a remains (still through e^{−t'}).
+  // sun below the horizon or E_sun black, only I_a remains (still through e^{−(1−g)t'}).
+  // t' comes from the grid if prepare_sun was called with light.to_sun, else is marched.
   CloudScattering scatter(const Vec3& o, const Vec3& d, double t_min, double t_max,
                           const CloudLighting& light) const;
   // Eq. 16 in full: I_behind · e^{−t_total} + in-scattered.
@@ -160,6 +185,9 @@ class Cloud {
   double horizontal_scale_ = 0;  // step length wanted along the horizontal, m
   double extent_x_ = 0, extent_y_ = 0;
   bool empty_ = true;
+  // Sun grid: t' at node (i, j, k), index (k·V + j)·U + i; empty when not prepared.
+  std::vector<float> sun_grid_;
+  Vec3 sun_dir_{0, 0, 0};
 };
 
 template <typename F>

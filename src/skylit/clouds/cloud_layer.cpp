@@ -67,6 +67,14 @@ void add_gardner_waves(CloudShape& c, std::uint64_t seed, int waves, double firs
   }
 }
 
+void CloudLayer::prepare_sun(const Vec3& to_sun) {
+  for (Cloud& c : clouds_) c.prepare_sun(to_sun);
+}
+
+void CloudLayer::clear_sun() {
+  for (Cloud& c : clouds_) c.clear_sun();
+}
+
 std::vector<CloudLayer::Crossing> CloudLayer::crossings(const Vec3& o, const Vec3& d, double t_min,
                                                         double t_max) const {
   std::vector<Crossing> out;

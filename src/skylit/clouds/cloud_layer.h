@@ -48,6 +48,11 @@ class CloudLayer {
   static CloudLayer generate(const CloudLayerSettings& settings);
 
   const std::vector<Cloud>& clouds() const { return clouds_; }
+
+  // Cloud::prepare_sun on every cloud (once per scene / sun direction); scatter() with
+  // light.to_sun equal to to_sun then interpolates t' instead of marching toward the sun.
+  void prepare_sun(const Vec3& to_sun);
+  void clear_sun();
   bool empty() const { return clouds_.empty(); }
 
   struct Crossing {
