@@ -86,6 +86,14 @@ void BM_Fig8Frame(benchmark::State& state) {
 }
 BENCHMARK(BM_Fig8Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The paper's Fig. 10a (sun in front of the camera, arg 0) and 10b (sun behind, arg 1).
+void BM_Fig10Frame(benchmark::State& state) {
+  const std::filesystem::path file = std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" /
+                                     (state.range(0) == 0 ? "fig10a.json" : "fig10b.json");
+  frames_of(state, skylit::load_scene(file));
+}
+BENCHMARK(BM_Fig10Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -86,6 +86,13 @@ Cloud::Cloud(const CloudShape& shape) : shape_(shape) {
   };
   norm_u_ = texture_norm(shape_.waves_u);
   norm_v_ = texture_norm(shape_.waves_v);
+  // The finest wave has at most kStepsPerWavelength·(2a / horizontal_scale_) … samples:
+  // 2048 over a diameter is over 100 per wavelength of Gardner's fourth wave.
+  for (int i = 0; i <= kTextureSamples; ++i) {
+    const double t = -1.0 + 2.0 * i / kTextureSamples;
+    texture_u_.push_back(texture(t * a, shape_.waves_u, norm_u_));
+    texture_v_.push_back(texture(t * b, shape_.waves_v, norm_v_));
+  }
   // Half-widths of the box around the rotated ellipse.
   extent_x_ = std::hypot(a * cos_r_, b * sin_r_);
   extent_y_ = std::hypot(a * sin_r_, b * cos_r_);
@@ -98,13 +105,21 @@ double Cloud::texture(double w, const std::vector<CloudWave>& waves, double norm
   return std::max(0.0, f) / norm;
 }
 
+double Cloud::table_lookup(const std::vector<double>& table, double w, double half_width) {
+  const double f = std::clamp((w / half_width + 1.0) * 0.5, 0.0, 1.0) * kTextureSamples;
+  const int i = std::min(static_cast<int>(f), kTextureSamples - 1);
+  const double t = f - i;
+  return table[static_cast<size_t>(i)] * (1 - t) + table[static_cast<size_t>(i + 1)] * t;
+}
+
 double Cloud::local_thickness(double u, double v) const {
   if (empty_) return 0.0;
   const double ua = u / shape_.semi_axis_a, vb = v / shape_.semi_axis_b;
   const double q = 1.0 - (ua * ua + vb * vb);
   if (!(q > 0)) return 0.0;
   const double falloff = shape_.falloff_exponent == 0.5 ? std::sqrt(q) : std::pow(q, shape_.falloff_exponent);
-  return shape_.max_thickness * falloff * texture(u, shape_.waves_u, norm_u_) * texture(v, shape_.waves_v, norm_v_);
+  return shape_.max_thickness * falloff * table_lookup(texture_u_, u, shape_.semi_axis_a) *
+         table_lookup(texture_v_, v, shape_.semi_axis_b);
 }
 
 double Cloud::thickness(double x, double y) const {
@@ -229,6 +244,11 @@ double Cloud::transmittance(const Vec3& o, const Vec3& d, double t_min, double t
 }
 
 double Cloud::sun_transmittance(const Vec3& p, const Vec3& to_sun) const {
+  double t0, t1;
+  if (!clip(p, to_sun, 0.0, kInf, t0, t1)) return 1.0;
+  // With the sun prepared: the depth toward the sun from where the ray enters the
+  // cloud's box is the whole depth along it (shadows on the ground, one look-up).
+  if (sun_prepared_for(to_sun)) return std::exp(-interpolated_sun_depth(p + to_sun * t0));
   return std::exp(-optical_depth(p, to_sun, 0.0, kInf));
 }
 

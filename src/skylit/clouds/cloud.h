@@ -172,6 +172,10 @@ class Cloud {
 
  private:
   double texture(double w, const std::vector<CloudWave>& waves, double norm) const;
+  // The textures along u and v tabulated across the ellipse (the sine sums were most of
+  // the time of every march): kTextureSamples + 1 values over [−a, a] and [−b, b].
+  static constexpr int kTextureSamples = 2048;
+  static double table_lookup(const std::vector<double>& table, double w, double half_width);
   double local_thickness(double u, double v) const;
   // g = T/2 − |z − z_mid| at o + t·d: ≥ 0 inside.
   double inside_margin(const Vec3& o, const Vec3& d, double t) const;
@@ -182,6 +186,7 @@ class Cloud {
   CloudShape shape_;
   double cos_r_ = 1, sin_r_ = 0;
   double norm_u_ = 1, norm_v_ = 1;
+  std::vector<double> texture_u_, texture_v_;
   double horizontal_scale_ = 0;  // step length wanted along the horizontal, m
   double extent_x_ = 0, extent_y_ = 0;
   bool empty_ = true;

@@ -14,6 +14,7 @@ namespace skylit {
 void read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
 AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
 FogSettings read_fog(const JsonReader& fog);
+void read_clouds(const JsonReader& clouds, Scene& scene);
 std::vector<NamedMaterial> read_materials(const JsonReader& materials);
 Spectrum read_reflectance(const JsonReader& reflectance);
 std::vector<SceneObject> read_objects(const JsonReader& objects, const std::vector<NamedMaterial>& materials,

@@ -32,6 +32,26 @@ Renderer::Renderer(const Scene& scene)
   tracer_.commit();
   sky_light_ = std::make_unique<SkyLight>(
       sky_, tracer_, [this](const Ray& ray, const Hit& hit, uint64_t& rays) { return obstacle_radiance(ray, hit, rays); });
+  if (!scene.clouds.empty() || scene.cloud_layer) {
+    std::vector<Cloud> clouds(scene.clouds.begin(), scene.clouds.end());
+    if (scene.cloud_layer) {
+      const CloudLayer generated = CloudLayer::generate(*scene.cloud_layer);
+      clouds.insert(clouds.end(), generated.clouds().begin(), generated.clouds().end());
+    }
+    double altitude = 0;
+    for (const Cloud& c : clouds) altitude += c.shape().altitude;
+    altitude /= static_cast<double>(std::max<size_t>(1, clouds.size()));
+    clouds_ = std::make_unique<CloudLayer>(std::move(clouds));
+    clouds_->prepare_sun(to_sun_);
+    // Eq. 15: the sun at the clouds' altitude; the ambient light of multiple scattering
+    // as the radiance of a Lambertian of albedo 0.25 under the sun and the sky there
+    // (docs/clouds.md), so that clouds stay lit by the sky after sunset.
+    cloud_light_.to_sun = to_sun_;
+    cloud_light_.sun = sky_.direct_sun(altitude);
+    cloud_light_.ambient = default_cloud_ambient(cloud_light_.sun, to_sun_) +
+                           sky_.sky_irradiance({0, 0, 1}) * static_cast<float>(kDefaultCloudAmbientFraction / kPi);
+    cloud_sky_share_ = measure_cloud_sky_share();
+  }
   if (scene.fog) {
     std::vector<const TriangleMesh*> meshes;
     for (const SceneObject& object : scene.objects) meshes.push_back(&object.mesh);
@@ -39,17 +59,43 @@ Renderer::Renderer(const Scene& scene)
   }
 }
 
+Spectrum Renderer::measure_cloud_sky_share() const {
+  // The sky over a horizontal surface at the camera, with and without the clouds in
+  // front of it, by a cosine-weighted midpoint rule (16 × 32 directions).
+  Spectrum clear, cloudy;
+  const Vec3 origin{scene_.camera.position.x, scene_.camera.position.y, 0.0};
+  for (int i = 0; i < 16; ++i) {
+    const double mu = std::sqrt((i + 0.5) / 16), sine = std::sqrt(1 - mu * mu);
+    for (int j = 0; j < 32; ++j) {
+      const double phi = 2 * kPi * (j + 0.5) / 32;
+      const Vec3 dir{sine * std::cos(phi), sine * std::sin(phi), mu};
+      const Spectrum sky = sky_.sky_radiance_near_ground(dir);
+      const CloudScattering c = clouds_->scatter(origin, dir, 0.0, 1e7, cloud_light_);
+      clear += sky;
+      cloudy += sky * static_cast<float>(c.transmittance) + c.in_scattered;
+    }
+  }
+  Spectrum share;
+  for (int k = 0; k < kSpectralBins; ++k) share[k] = clear[k] > 0 ? std::min(2.0f, cloudy[k] / clear[k]) : 1.0f;
+  return share;
+}
+
 Renderer::Between Renderer::between(const Ray& ray, double distance) const {
   Between b{std::isfinite(distance) ? sky_.aerial_perspective(ray.direction, distance)
                                     : ScatteredLight{Spectrum(0.0f), Spectrum(1.0f)},
-            {Spectrum(1.0f), Spectrum(0.0f)}};
+            {Spectrum(1.0f), Spectrum(0.0f)},
+            {Spectrum(0.0f), 1.0}};
   if (fog_) b.fog = fog_->along(ray, distance);
+  if (clouds_) b.clouds = clouds_->scatter(ray.origin, ray.direction, 0.0, std::min(distance, 1e7), cloud_light_);
   return b;
 }
 
 Spectrum Renderer::seen_through(const Spectrum& radiance, const Between& between, bool sky) {
-  // The fog lies near the ground, under the air's long path: fog first, then the air.
-  const Spectrum through_fog = radiance * between.fog.transmittance + between.fog.in_scattered;
+  // Clouds are farthest from the camera, the fog nearest; the air's long path is over
+  // them all: clouds, then fog, then (for surfaces) the air.
+  const Spectrum through_clouds =
+      radiance * static_cast<float>(between.clouds.transmittance) + between.clouds.in_scattered;
+  const Spectrum through_fog = through_clouds * between.fog.transmittance + between.fog.in_scattered;
   if (sky) return through_fog;
   return through_fog * between.air.transmittance + between.air.radiance;
 }
@@ -69,12 +115,14 @@ Spectrum Renderer::sun_reaching(const SurfacePoint& point, uint64_t& rays) const
   if (sun[kSpectralBins - 1] <= 0.0f) return sun;
   ++rays;
   if (tracer_.occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_})) return Spectrum(0.0f);
-  return fog_ ? sun * fog_->sun_transmittance(point.position) : sun;
+  Spectrum reaching = fog_ ? sun * fog_->sun_transmittance(point.position) : sun;
+  if (clouds_) reaching *= static_cast<float>(clouds_->sun_transmittance(point.position, to_sun_));  // cloud shadows
+  return reaching;
 }
 
 Spectrum Renderer::obstacle_radiance(const Ray& ray, const Hit& hit, uint64_t& rays) const {
   const SurfacePoint point = surface_point(ray, hit);
-  const Spectrum irradiance = sky_.sky_irradiance(point.normal) * fog_sky_share(point.position.z) +
+  const Spectrum irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
                               sun_reaching(point, rays) * static_cast<float>(dot(point.normal, to_sun_));
   const Spectrum albedo = diffuse_albedo(material_of(point), -dot(point.normal, ray.direction));
   return albedo * irradiance * static_cast<float>(1.0 / kPi);
@@ -99,13 +147,13 @@ Spectrum Renderer::shade(const Ray& ray, const SurfacePoint& point, const Cached
   const Vec3 to_viewer = -ray.direction;
   const Spectrum sun = sun_reaching(point, rays);
   // Sky light, dimmed by any fog above the point.
-  const Spectrum sky_share = fog_sky_share(point.position.z);
+  const Spectrum share = sky_share(point.position.z);
   // Lambertian part: sky and sun irradiance.
   const Spectrum irradiance =
-      sky_light.diffuse_irradiance * sky_share + sun * static_cast<float>(dot(point.normal, to_sun_));
+      sky_light.diffuse_irradiance * share + sun * static_cast<float>(dot(point.normal, to_sun_));
   Spectrum radiance = diffuse_albedo(material, dot(point.normal, to_viewer)) * irradiance * static_cast<float>(1.0 / kPi);
   // Glossy part: the sky's (cached) and the sun's highlight.
-  radiance += sky_light.specular_radiance * sky_share;
+  radiance += sky_light.specular_radiance * share;
   if (has_specular(material))
     radiance += specular_reflection(material, point.normal, to_sun_, to_viewer) * sun;
   // Mirror part (window glass): what lies in the mirror direction.

@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "skylit/atmosphere/atmosphere.h"
+#include "skylit/clouds/cloud_layer.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/io/image.h"
 #include "skylit/render/camera.h"
@@ -66,14 +67,21 @@ class Renderer {
   struct Between {
     ScatteredLight air;
     FogMedium::Along fog;
+    CloudScattering clouds;
   };
   Between between(const Ray& ray, double distance) const;
   // What the camera sees of light leaving a point (or the sky) through what lies between.
   static Spectrum seen_through(const Spectrum& radiance, const Between& between, bool sky);
   // The light a surface sends toward the camera, before the air and fog on the way.
   Spectrum shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light, uint64_t& rays) const;
-  // The sky light's share that gets through the fog to altitude z (1 without fog).
-  Spectrum fog_sky_share(double z) const { return fog_ ? fog_->sky_light_share(z) : Spectrum(1.0f); }
+  // The sky light's share that gets through the clouds and the fog to altitude z (1
+  // without either).
+  Spectrum sky_share(double z) const {
+    return fog_ ? fog_->sky_light_share(z) * cloud_sky_share_ : cloud_sky_share_;
+  }
+  // The clouds' effect on the sky light that reaches the ground: a horizontal surface's
+  // sky irradiance under the clouds over that in a clear sky, per bin.
+  Spectrum measure_cloud_sky_share() const;
   // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
   // or the sky and the sun.
   Spectrum mirrored(const SurfacePoint& point, const Vec3& direction, uint64_t& rays) const;
@@ -89,6 +97,9 @@ class Renderer {
   SkyModel sky_;
   std::unique_ptr<SkyLight> sky_light_;
   std::unique_ptr<FogMedium> fog_;  // none without fog
+  std::unique_ptr<CloudLayer> clouds_;  // none without clouds
+  CloudLighting cloud_light_;
+  Spectrum cloud_sky_share_{1.0f};
   mutable std::atomic<uint64_t> rays_traced_{0};
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "skylit/atmosphere/atmosphere_settings.h"
+#include "skylit/clouds/cloud_layer.h"
 #include "skylit/geometry/triangle_mesh.h"
 #include "skylit/geometry/vec3.h"
 #include "skylit/material/material.h"
@@ -51,6 +52,9 @@ struct Scene {
   AtmosphereSettings atmosphere;
   // A fog layer near the ground (§3.2, §5), if any.
   std::optional<FogSettings> fog;
+  // Clouds (§6): given one by one, and/or a generated layer.
+  std::vector<CloudShape> clouds;
+  std::optional<CloudLayerSettings> cloud_layer;
   std::vector<NamedMaterial> materials;
   std::vector<SceneObject> objects;
   RenderSettings render;

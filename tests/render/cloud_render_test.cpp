@@ -1,0 +1,75 @@
+// Clouds in rendered scenes: a cloud's edge is brighter than its centre with the sun
+// behind it, its sunlit side brighter with the sun behind the camera, and its shadow
+// lands on the ground where the geometry says.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "skylit/geometry/primitives.h"
+#include "skylit/render/renderer.h"
+#include "skylit/spectrum/cie.h"
+
+namespace skylit {
+namespace {
+
+Scene cloud_scene(double sun_azimuth_deg) {
+  Scene scene;
+  scene.camera = Camera{{0, 0, 2}, {0, 0, 100}, {0, 1, 0}, 60.0};  // looking straight up
+  scene.sun = Sun{35, sun_azimuth_deg};
+  scene.materials.push_back({"ground", DiffuseMaterial{Spectrum(0.2f)}});
+  scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 20000), 0});
+  CloudShape c;
+  c.center_x = 0;
+  c.center_y = 0;
+  c.altitude = 1000;
+  c.semi_axis_a = 500;
+  c.semi_axis_b = 500;
+  c.max_thickness = 300;  // no texture: a smooth lens, thickest at the centre
+  scene.clouds.push_back(c);
+  scene.render = RenderSettings{8, 8, std::nullopt, 1};
+  return scene;
+}
+
+double luminance_toward(const Renderer& renderer, const Vec3& target) {
+  uint64_t rays = 0;
+  return luminance(renderer.radiance(Ray{{0, 0, 2}, normalize(target - Vec3{0, 0, 2})}, rays));
+}
+
+TEST(CloudRender, EdgeOutshinesCentreWithTheSunBehindTheCloud) {
+  // The camera under the cloud's centre looks up; the sun (35°) is beyond the cloud's
+  // north edge, so light scattered forward through the thin edge reaches the camera.
+  const Renderer renderer(cloud_scene(0.0));
+  const double centre = luminance_toward(renderer, {0, 0, 1000});
+  const double north_edge = luminance_toward(renderer, {0, 480, 1000});
+  EXPECT_GT(north_edge, 1.5 * centre) << north_edge << " vs " << centre;
+}
+
+TEST(CloudRender, SunlitSideIsBrighterWithTheSunBehindTheCamera) {
+  // The camera far south of the cloud, the sun behind it in the south: the cloud's
+  // south side faces the sun.
+  Scene scene = cloud_scene(180.0);
+  scene.camera = Camera{{0, -3000, 2}, {0, 0, 1000}, {0, 0, 1}, 40.0};
+  const Renderer renderer(scene);
+  uint64_t rays = 0;
+  const Vec3 eye{0, -3000, 2};
+  const double south = luminance(renderer.radiance(Ray{eye, normalize(Vec3{0, -400, 1000} - eye)}, rays));
+  const double north = luminance(renderer.radiance(Ray{eye, normalize(Vec3{0, 400, 1000} - eye)}, rays));
+  EXPECT_GT(south, north);
+}
+
+TEST(CloudRender, ShadowLandsWhereTheGeometrySays) {
+  // Sun at 35° from due south: the cloud (1000 m up) shades the ground 1000/tan 35° =
+  // 1428 m north of its centre, a disc of radius 500 m around (0, 1428).
+  const Renderer renderer(cloud_scene(180.0));
+  auto ground = [&](double y) {
+    uint64_t rays = 0;
+    return luminance(renderer.radiance(Ray{{0, y, 50}, {0, 0, -1}}, rays));
+  };
+  const double shade = 1000 / std::tan(radians(35.0));
+  EXPECT_LT(ground(shade), 0.5 * ground(shade - 800));  // in the shadow vs in the sun
+  EXPECT_LT(ground(shade), 0.5 * ground(shade + 800));
+  EXPECT_GT(ground(-200), 0.9 * ground(shade + 800));    // under the cloud itself: sunlit
+}
+
+}  // namespace
+}  // namespace skylit
