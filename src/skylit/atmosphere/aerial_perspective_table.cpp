@@ -5,8 +5,6 @@
 
 #include "skylit/spectrum/spectral_math.h"
 
-#include <tbb/parallel_for.h>
-
 namespace skylit {
 
 namespace {
@@ -27,20 +25,15 @@ AerialPerspectiveTable::AerialPerspectiveTable(const ScatteringIntegrator& integ
   std::vector<double> stops;
   for (int k = 1; k < kDistanceSize; ++k) stops.push_back(slice_distance(k));
   const double mu_sun = std::sin(sun_elevation_rad);
-  tbb::parallel_for(0, kElevationSize, [&](int j) {
-    for (int i = 0; i < kAzimuthSize; ++i) {
-      const RayCosines c = ray_cosines(
-          mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1), static_cast<double>(j) / (kElevationSize - 1)),
-          sun_elevation_rad);
-      const std::vector<ScatteredLight> light = integrator.up_to(observer_radius_m, c.mu, mu_sun, c.nu, stops);
-      in_scattered_.at(i, j, 0) = Spectrum(0.0f);
-      optical_depth_.at(i, j, 0) = Spectrum(0.0f);
-      for (int k = 1; k < kDistanceSize; ++k) {
-        const ScatteredLight& l = light[static_cast<size_t>(k - 1)];
-        in_scattered_.at(i, j, k) = l.radiance * sun_irradiance;
-        for (int b = 0; b < kSpectralBins; ++b)
-          optical_depth_.at(i, j, k)[b] = -std::log(std::max(l.transmittance[b], 1e-30f));
-      }
+  mapping_.for_each_node(kAzimuthSize, kElevationSize, sun_elevation_rad, [&](int i, int j, const RayCosines& c) {
+    const std::vector<ScatteredLight> light = integrator.up_to(observer_radius_m, c.mu, mu_sun, c.nu, stops);
+    in_scattered_.at(i, j, 0) = Spectrum(0.0f);
+    optical_depth_.at(i, j, 0) = Spectrum(0.0f);
+    for (int k = 1; k < kDistanceSize; ++k) {
+      const ScatteredLight& l = light[static_cast<size_t>(k - 1)];
+      in_scattered_.at(i, j, k) = l.radiance * sun_irradiance;
+      for (int b = 0; b < kSpectralBins; ++b)
+        optical_depth_.at(i, j, k)[b] = -std::log(std::max(l.transmittance[b], 1e-30f));
     }
   });
 }

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
-
 namespace skylit {
 
 namespace {
@@ -64,13 +62,8 @@ SkyViewTable::SkyViewTable(const ScatteringIntegrator& integrator, const Spectru
                            double observer_radius_m, double ground_radius_m, double sun_elevation_rad)
     : mapping_(observer_radius_m, ground_radius_m), table_(kAzimuthSize, kElevationSize) {
   const double mu_sun = std::sin(sun_elevation_rad);
-  tbb::parallel_for(0, kElevationSize, [&](int j) {
-    for (int i = 0; i < kAzimuthSize; ++i) {
-      const RayCosines c = ray_cosines(
-          mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1), static_cast<double>(j) / (kElevationSize - 1)),
-          sun_elevation_rad);
-      table_.at(i, j) = integrator.along_ray(observer_radius_m, c.mu, mu_sun, c.nu, kSegments).radiance * sun_irradiance;
-    }
+  mapping_.for_each_node(kAzimuthSize, kElevationSize, sun_elevation_rad, [&](int i, int j, const RayCosines& c) {
+    table_.at(i, j) = integrator.along_ray(observer_radius_m, c.mu, mu_sun, c.nu, kSegments).radiance * sun_irradiance;
   });
 }
 

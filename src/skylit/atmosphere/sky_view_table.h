@@ -5,6 +5,8 @@
 // air. Built once per scene; rendering only reads it.
 #pragma once
 
+#include <tbb/parallel_for.h>
+
 #include "skylit/atmosphere/scattering_integrator.h"
 #include "skylit/geometry/vec3.h"
 #include "skylit/spectrum/spectrum_grid.h"
@@ -25,6 +27,11 @@ class SkyDirectionMapping {
   SkyDirectionMapping(double observer_radius_m, double ground_radius_m);
   void to_unit(const RelativeDirection& d, double& u_azimuth, double& u_elevation) const;
   RelativeDirection from_unit(double u_azimuth, double u_elevation) const;
+
+  // Calls f(i, j, cosines) for every node (i, j) of a size_x × size_y table over this
+  // mapping (azimuth along x, elevation along y), rows in parallel.
+  template <typename F>
+  void for_each_node(int size_x, int size_y, double sun_elevation_rad, F&& f) const;
   double horizon_elevation_rad() const { return horizon_; }
 
  private:
@@ -39,6 +46,15 @@ struct RayCosines {
   double mu, nu;
 };
 RayCosines ray_cosines(const RelativeDirection& direction, double sun_elevation_rad);
+
+template <typename F>
+void SkyDirectionMapping::for_each_node(int size_x, int size_y, double sun_elevation_rad, F&& f) const {
+  tbb::parallel_for(0, size_y, [&](int j) {
+    for (int i = 0; i < size_x; ++i)
+      f(i, j, ray_cosines(from_unit(static_cast<double>(i) / (size_x - 1), static_cast<double>(j) / (size_y - 1)),
+                          sun_elevation_rad));
+  });
+}
 
 class SkyViewTable {
  public:
