@@ -73,8 +73,9 @@ struct BvhNode {
 struct ShadowVolumes::Data {
   Vec3 w, u, v;  // light frame: w toward the sun
   double scale = 1;  // largest coordinate magnitude of the casting triangles, >= 1 m
-  std::vector<Prism> prisms;  // in BVH leaf order
-  std::vector<BvhNode> nodes;
+  std::vector<Prism> prisms;  // in BVH leaf order; for a point light, frusta in mesh order
+  std::vector<BvhNode> nodes;  // empty for a point light
+  bool point_light = false;
 };
 
 namespace {
@@ -117,6 +118,31 @@ double signed_volume(const TriangleMesh& mesh) {
   return sum / 6;
 }
 
+// Mesh `id`, checked: not null, finite, indices in range (std::invalid_argument).
+const TriangleMesh& checked_mesh(const std::vector<const TriangleMesh*>& meshes, size_t id) {
+  if (!meshes[id]) throw std::invalid_argument("ShadowVolumes: mesh " + std::to_string(id) + " is null");
+  const TriangleMesh& mesh = *meshes[id];
+  for (const Vec3& p : mesh.vertices)
+    if (!finite(p)) throw std::invalid_argument("ShadowVolumes: mesh " + std::to_string(id) + " has a non-finite coordinate");
+  for (const auto& t : mesh.triangles)
+    for (uint32_t index : t)
+      if (index >= mesh.vertices.size())
+        throw std::invalid_argument("ShadowVolumes: mesh " + std::to_string(id) + " refers to vertex " +
+                                    std::to_string(index) + " of " + std::to_string(mesh.vertices.size()));
+  return mesh;
+}
+
+// Which triangles of a mesh cast. A closed surface: a ray from outside toward the light
+// that meets it leaves it through a triangle facing the light (winding numbers: it
+// must cross outward as often as inward), so those triangles alone cast the whole
+// shadow. The volume's sign says which way "outward" is wound. Otherwise every
+// triangle casts. +1: triangles whose normal faces the light; −1: away; 0: all.
+int casting_side(const TriangleMesh& mesh) {
+  if (!closed_and_oriented(mesh)) return 0;
+  const double volume = signed_volume(mesh);
+  return volume > 0 ? 1 : (volume < 0 ? -1 : 0);
+}
+
 // The prism below triangle (p, q, r) along -w, or false if it has no volume (the
 // triangle is degenerate or edge-on to the sun).
 bool make_prism(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& w, Prism& prism) {
@@ -146,6 +172,30 @@ bool make_prism(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& w, Pris
   return true;
 }
 
+// The frustum behind triangle (p, q, r) seen from a point light at `light`, or false if
+// it has no volume (degenerate, or edge-on to the light). Same face order as a prism:
+// three sides through the light and an edge, then the cap (the triangle's plane).
+bool make_frustum(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& light, Prism& frustum) {
+  const Vec3 corners[3] = {p, q, r};
+  for (int i = 0; i < 3; ++i) {
+    // As for prisms, the plane through the light and an edge is built from the edge's
+    // ends in one canonical order, so two triangles sharing the edge get it bit for bit.
+    Vec3 a = corners[i], b = corners[(i + 1) % 3];
+    if (lexicographic_less(b, a)) std::swap(a, b);
+    const Vec3 m = cross(a - light, b - light);
+    const double side = dot(m, corners[(i + 2) % 3] - light);
+    if (!(side != 0)) return false;
+    const double sign = side > 0 ? 1.0 : -1.0;
+    frustum.faces[i] = {sign * m, sign * dot(m, light)};
+  }
+  const Vec3 n = cross(q - p, r - p);
+  const double facing = dot(n, light - p);
+  if (!(facing != 0)) return false;
+  const Vec3 away = facing > 0 ? -n : n;  // from the triangle away from the light
+  frustum.faces[3] = {away, dot(away, p)};
+  return true;
+}
+
 // Clips origin + t direction, t in [lo, hi], to the prism; true if something is left.
 bool clip(const Prism& prism, const Vec3& origin, const Vec3& direction, double& lo, double& hi) {
   for (int i = 0; i < 4; ++i) {
@@ -156,6 +206,7 @@ bool clip(const Prism& prism, const Vec3& origin, const Vec3& direction, double&
       lo = std::max(lo, -a / b);
     } else if (b < 0) {
       hi = std::min(hi, -a / b);
+      if (!(lo < hi)) return false;
     } else if (a < 0 || (i == 3 && a == 0)) {
       // Parallel to the face and outside. The sides are closed, so a ray lying in a
       // side shared by two prisms is in both; the cap is open, so a ray running
@@ -291,26 +342,9 @@ std::unique_ptr<const ShadowVolumes::Data> ShadowVolumes::build(const std::vecto
   std::vector<Prism> prisms;
   std::vector<std::array<Vec3, 3>> corners;  // of each prism's triangle, for its footprint
   for (size_t id = 0; id < meshes.size(); ++id) {
-    if (!meshes[id]) throw std::invalid_argument("ShadowVolumes: mesh " + std::to_string(id) + " is null");
-    const TriangleMesh& mesh = *meshes[id];
-    for (const Vec3& p : mesh.vertices)
-      if (!finite(p))
-        throw std::invalid_argument("ShadowVolumes: mesh " + std::to_string(id) + " has a non-finite coordinate");
-    for (const auto& t : mesh.triangles)
-      for (uint32_t index : t)
-        if (index >= mesh.vertices.size())
-          throw std::invalid_argument("ShadowVolumes: mesh " + std::to_string(id) + " refers to vertex " +
-                                      std::to_string(index) + " of " + std::to_string(mesh.vertices.size()));
+    const TriangleMesh& mesh = checked_mesh(meshes, id);
     if (mesh.triangles.empty()) continue;
-    // A closed surface: a ray from outside toward the sun that meets it leaves it
-    // through a triangle facing the sun (winding numbers: it must cross outward as
-    // often as inward), so those triangles alone cast the whole shadow. The volume's
-    // sign says which way "outward" is wound. Otherwise every triangle casts.
-    int keep = 0;  // +1: triangles whose normal faces the sun; -1: away; 0: all
-    if (closed_and_oriented(mesh)) {
-      const double volume = signed_volume(mesh);
-      keep = volume > 0 ? 1 : (volume < 0 ? -1 : 0);
-    }
+    const int keep = casting_side(mesh);
     for (const auto& t : mesh.triangles) {
       const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
       if (keep != 0 && !(keep * dot(cross(q - p, r - p), data->w) > 0)) continue;
@@ -387,6 +421,36 @@ ShadowVolumes::ShadowVolumes(const std::vector<TriangleMesh>& meshes, const Vec3
 ShadowVolumes::ShadowVolumes(const std::vector<const TriangleMesh*>& meshes, const Vec3& to_sun)
     : data_(build(meshes, to_sun)) {}
 
+ShadowVolumes::ShadowVolumes(std::unique_ptr<const Data> data) : data_(std::move(data)) {}
+
+ShadowVolumes ShadowVolumes::for_point_light(const std::vector<const TriangleMesh*>& meshes, const Vec3& light) {
+  return ShadowVolumes(build_point(meshes, light));
+}
+
+std::unique_ptr<const ShadowVolumes::Data> ShadowVolumes::build_point(const std::vector<const TriangleMesh*>& meshes,
+                                                                      const Vec3& light) {
+  if (!finite(light)) throw std::invalid_argument("ShadowVolumes: the light's position must be finite");
+  auto data = std::make_unique<Data>();
+  data->point_light = true;
+  data->w = {0, 0, 1};
+  data->scale = std::max(1.0, max_abs(light));
+  for (size_t id = 0; id < meshes.size(); ++id) {
+    const TriangleMesh& mesh = checked_mesh(meshes, id);
+    if (mesh.triangles.empty()) continue;
+    // A closed surface is left through triangles facing the light, as for the sun.
+    const int keep = casting_side(mesh);
+    for (const auto& t : mesh.triangles) {
+      const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
+      if (keep != 0 && !(keep * dot(cross(q - p, r - p), light - p) > 0)) continue;
+      Prism frustum;
+      if (!make_frustum(p, q, r, light, frustum)) continue;
+      data->prisms.push_back(frustum);
+      data->scale = std::max({data->scale, max_abs(p), max_abs(q), max_abs(r)});
+    }
+  }
+  return data;
+}
+
 ShadowVolumes::~ShadowVolumes() = default;
 ShadowVolumes::ShadowVolumes(ShadowVolumes&&) noexcept = default;
 ShadowVolumes& ShadowVolumes::operator=(ShadowVolumes&&) noexcept = default;
@@ -412,34 +476,25 @@ double ShadowVolumes::sunlit_length(const Ray& ray, double t_min, double t_max) 
   return sum;
 }
 
-void ShadowVolumes::sunlit_intervals(const Ray& ray, double t_min, double t_max, std::vector<Interval>& out) const {
-  out.clear();
-  if (std::isnan(t_min) || std::isnan(t_max) || t_min > t_max) return;
-  const Data& d = *data_;
-  const Vec3& o = ray.origin;
-  const Vec3& dir = ray.direction;
-  if (!finite(o) || !finite(dir) || d.nodes.empty()) {
-    if (t_max > t_min) out.push_back({t_min, t_max});
-    return;
-  }
-  const double dir_length = length(dir);
-  const double tolerance = dir_length > 0 ? kRelativeTolerance * std::max(d.scale, max_abs(o)) / dir_length : 0;
+namespace {
 
-  // Shadow: every prism's interval, collected in `out` and then turned into sunlight.
+void collect_prism_shadows(const Vec3& u, const Vec3& v, const Vec3& w, const std::vector<BvhNode>& nodes,
+                           const std::vector<Prism>& prisms, const Vec3& o, const Vec3& dir, double t_min, double t_max,
+                           std::vector<Interval>& out) {
   LightRay r;
-  r.q0[0] = dot(o, d.u);
-  r.q0[1] = dot(o, d.v);
-  r.dq[0] = dot(dir, d.u);
-  r.dq[1] = dot(dir, d.v);
+  r.q0[0] = dot(o, u);
+  r.q0[1] = dot(o, v);
+  r.dq[0] = dot(dir, u);
+  r.dq[1] = dot(dir, v);
   for (int k = 0; k < 2; ++k) r.inv[k] = r.dq[k] != 0 ? 1 / r.dq[k] : 0;
-  r.h0 = dot(o, d.w);
-  r.dh = dot(dir, d.w);
+  r.h0 = dot(o, w);
+  r.dh = dot(dir, w);
   std::array<uint32_t, kMaxDepth + 2> stack;
   size_t top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const uint32_t index = stack[--top];
-    const BvhNode& node = d.nodes[index];
+    const BvhNode& node = nodes[index];
     if (!may_meet(node, r, t_min, t_max)) continue;
     if (node.count == 0) {
       stack[top++] = node.index;
@@ -448,10 +503,13 @@ void ShadowVolumes::sunlit_intervals(const Ray& ray, double t_min, double t_max,
     }
     for (uint32_t i = node.index; i < node.index + node.count; ++i) {
       double lo = t_min, hi = t_max;
-      if (clip(d.prisms[i], o, dir, lo, hi)) out.push_back({lo, hi});
+      if (clip(prisms[i], o, dir, lo, hi)) out.push_back({lo, hi});
     }
   }
+}
 
+// Turns the shadow intervals in `out` into the lit pieces of [t_min, t_max].
+void unite_and_complement(double t_min, double t_max, double tolerance, std::vector<Interval>& out) {
   // Union of the shadow intervals; gaps within the tolerance are closed.
   std::sort(out.begin(), out.end(),
             [](const Interval& a, const Interval& b) { return a.begin < b.begin || (a.begin == b.begin && a.end < b.end); });
@@ -476,6 +534,33 @@ void ShadowVolumes::sunlit_intervals(const Ray& ray, double t_min, double t_max,
   }
   out.resize(written);
   if (t_max - cursor > tolerance) out.push_back({cursor, t_max});
+}
+
+}  // namespace
+
+void ShadowVolumes::sunlit_intervals(const Ray& ray, double t_min, double t_max, std::vector<Interval>& out) const {
+  out.clear();
+  if (std::isnan(t_min) || std::isnan(t_max) || t_min > t_max) return;
+  const Data& d = *data_;
+  const Vec3& o = ray.origin;
+  const Vec3& dir = ray.direction;
+  if (!finite(o) || !finite(dir) || (d.nodes.empty() && !d.point_light) || d.prisms.empty()) {
+    if (t_max > t_min) out.push_back({t_min, t_max});
+    return;
+  }
+  const double dir_length = length(dir);
+  const double tolerance = dir_length > 0 ? kRelativeTolerance * std::max(d.scale, max_abs(o)) / dir_length : 0;
+
+  // Shadow: every volume's interval, collected in `out` and then turned into light.
+  if (d.point_light) {
+    for (const Prism& frustum : d.prisms) {
+      double lo = t_min, hi = t_max;
+      if (clip(frustum, o, dir, lo, hi)) out.push_back({lo, hi});
+    }
+  } else {
+    collect_prism_shadows(d.u, d.v, d.w, d.nodes, d.prisms, o, dir, t_min, t_max, out);
+  }
+  unite_and_complement(t_min, t_max, tolerance, out);
 }
 
 }  // namespace skylit

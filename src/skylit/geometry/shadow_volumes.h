@@ -11,6 +11,13 @@
 // a convex prism in one interval, found by clipping; the shadow is the union of the
 // intervals and the sunlight is its complement. A BVH over the prisms' footprints
 // in the plane perpendicular to the sun finds the few prisms a ray can meet.
+//
+// A point light (a street lamp, a headlight) works the same way with frusta for
+// prisms: each casting triangle's volume is bounded by the three planes through the
+// light and its edges and by its own plane, so the same clipping gives exact lit
+// intervals. The prism BVH needs a single direction of light; for a point light the
+// volumes are tested one by one after a bounding-sphere test on the part of the ray
+// beyond each triangle (night scenes have few casting triangles per lamp).
 #pragma once
 
 #include <cstddef>
@@ -41,6 +48,8 @@ class ShadowVolumes {
   ShadowVolumes(const std::vector<TriangleMesh>& meshes, const Vec3& to_sun);
   // The same without copying meshes held elsewhere (e.g. in render/Scene objects).
   ShadowVolumes(const std::vector<const TriangleMesh*>& meshes, const Vec3& to_sun);
+  // The shadow volumes for a point light at `light` (world coordinates, finite).
+  static ShadowVolumes for_point_light(const std::vector<const TriangleMesh*>& meshes, const Vec3& light);
   ~ShadowVolumes();
   ShadowVolumes(ShadowVolumes&&) noexcept;
   ShadowVolumes& operator=(ShadowVolumes&&) noexcept;
@@ -65,12 +74,14 @@ class ShadowVolumes {
 
   // Number of prisms (casting triangles) built.
   size_t volume_count() const;
-  // The unit vector toward the sun.
+  // The unit vector toward the sun (for a point light: meaningless).
   const Vec3& to_sun() const;
 
  private:
   struct Data;
+  explicit ShadowVolumes(std::unique_ptr<const Data> data);
   static std::unique_ptr<const Data> build(const std::vector<const TriangleMesh*>& meshes, const Vec3& to_sun);
+  static std::unique_ptr<const Data> build_point(const std::vector<const TriangleMesh*>& meshes, const Vec3& light);
   std::unique_ptr<const Data> data_;
 };
 
