@@ -198,6 +198,28 @@ double IntensityDistribution::luminous_flux() const {
 
 double IntensityDistribution::peak_candela() const { return peak_; }
 
+double IntensityDistribution::max_gamma_deg() const {
+  switch (kind_) {
+    case Kind::kIsotropic: return 180.0;
+    case Kind::kCosine: return 90.0;
+    case Kind::kSpot: return outer_deg_;
+    case Kind::kTable: break;
+  }
+  // Bilinear interpolation reaches 0 only at the grid angle after the last non-zero
+  // value; beyond the measured range the intensity is 0.
+  const size_t n = gamma_.size();
+  size_t last = 0;
+  bool any = false;
+  for (size_t ic = 0; ic < c_.size(); ++ic)
+    for (size_t ig = 0; ig < n; ++ig)
+      if (values_[ic * n + ig] > 0) {
+        last = std::max(last, ig);
+        any = true;
+      }
+  if (!any) return 0.0;
+  return last + 1 < n ? gamma_[last + 1] : gamma_.back();
+}
+
 IntensityDistribution IntensityDistribution::scaled(double factor) const {
   IntensityDistribution d = *this;
   d.peak_ *= factor;

@@ -60,6 +60,9 @@ class IntensityDistribution {
   double luminous_flux() const;
   // The largest candela value anywhere (the table's maximum or the shape's peak).
   double peak_candela() const;
+  // The largest γ (degrees) toward which any light goes: beyond it the intensity is 0
+  // at every C (180 if light may go everywhere).
+  double max_gamma_deg() const;
   // The same distribution with every value multiplied by factor (≥ 0).
   IntensityDistribution scaled(double factor) const;
 
