@@ -1,12 +1,11 @@
 #include "skylit/io/scene_loader.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "skylit/io/scene_overrides.h"
 #include "skylit/io/scene_parts.h"
 #include "skylit/util/error.h"
+#include "skylit/util/text_file.h"
 
 namespace skylit {
 
@@ -53,21 +52,13 @@ RenderSettings read_render(const JsonReader& j) {
   return render;
 }
 
-std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path.string() + ": cannot read the scene file");
-  return text.str();
-}
 
 }  // namespace
 
 Scene scene_from_json(const nlohmann::json& document, const std::string& source, const std::filesystem::path& base_dir) {
   const JsonReader root(document, source);
   if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
-  root.allow_only({"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "objects", "render"});
+  root.allow_only({"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "objects", "lights", "render"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
   read_sun_and_atmosphere(root, scene);
@@ -75,12 +66,13 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
   scene.materials = read_materials(root.required("materials"));
   scene.objects = read_objects(root.required("objects"), scene.materials, base_dir);
+  if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
   return scene;
 }
 
 Scene load_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides) {
-  nlohmann::json document = parse_json_text(read_text_file(scene_file), scene_file.string());
+  nlohmann::json document = parse_json_text(read_text_file(scene_file, "scene file"), scene_file.string());
   for (const std::string& assignment : overrides) apply_override(document, assignment);
   return scene_from_json(document, scene_file.string(), scene_file.parent_path());
 }

@@ -17,6 +17,7 @@ FogSettings read_fog(const JsonReader& fog);
 void read_clouds(const JsonReader& clouds, Scene& scene);
 std::vector<NamedMaterial> read_materials(const JsonReader& materials);
 Spectrum read_reflectance(const JsonReader& reflectance);
+std::vector<SceneLight> read_lights(const JsonReader& lights, const std::filesystem::path& base_dir);
 std::vector<SceneObject> read_objects(const JsonReader& objects, const std::vector<NamedMaterial>& materials,
                                       const std::filesystem::path& base_dir);
 

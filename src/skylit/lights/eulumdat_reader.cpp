@@ -11,6 +11,7 @@
 
 #include "skylit/lights/number_text.h"
 #include "skylit/util/error.h"
+#include "skylit/util/text_file.h"
 
 namespace skylit {
 namespace {
@@ -168,11 +169,7 @@ EulumdatPhotometry parse_eulumdat(const std::string& text, const std::string& na
 }
 
 EulumdatPhotometry read_eulumdat(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ":1: cannot open the EULUMDAT file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_eulumdat(text.str(), file.string());
+  return parse_eulumdat(read_text_file(file, "EULUMDAT file"), file.string());
 }
 
 }  // namespace skylit

@@ -13,6 +13,7 @@
 
 #include "skylit/lights/number_text.h"
 #include "skylit/util/error.h"
+#include "skylit/util/text_file.h"
 
 namespace skylit {
 namespace {
@@ -281,11 +282,7 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
 }
 
 IesPhotometry read_ies(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ":1: cannot open the IES file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_ies(text.str(), file.string());
+  return parse_ies(read_text_file(file, "IES file"), file.string());
 }
 
 }  // namespace skylit

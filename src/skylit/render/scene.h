@@ -12,6 +12,7 @@
 #include "skylit/clouds/cloud_layer.h"
 #include "skylit/geometry/triangle_mesh.h"
 #include "skylit/geometry/vec3.h"
+#include "skylit/lights/luminaire.h"
 #include "skylit/material/material.h"
 #include "skylit/media/fog_settings.h"
 
@@ -45,6 +46,16 @@ struct SceneObject {
   uint32_t material_index;  // into Scene::materials
 };
 
+// A luminaire (§7, Fig. 9): where it is, its intensity distribution in absolute
+// candela, and its lamp's spectrum per candela (lights/lamp_spectrum.h), so that
+// luminaire.intensity(direction) × spectrum_per_candela is the spectral radiant
+// intensity toward that direction in W sr⁻¹ nm⁻¹.
+struct SceneLight {
+  std::string name;
+  Luminaire luminaire;
+  Spectrum spectrum_per_candela;
+};
+
 struct Scene {
   Camera camera;
   Sun sun;
@@ -57,6 +68,7 @@ struct Scene {
   std::optional<CloudLayerSettings> cloud_layer;
   std::vector<NamedMaterial> materials;
   std::vector<SceneObject> objects;
+  std::vector<SceneLight> lights;
   RenderSettings render;
 };
 
