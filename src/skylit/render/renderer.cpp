@@ -57,6 +57,11 @@ Renderer::Renderer(const Scene& scene)
     for (const SceneObject& object : scene.objects) meshes.push_back(&object.mesh);
     fog_ = std::make_unique<FogMedium>(*scene.fog, meshes, sky_, scene.camera.position);
   }
+  if (!scene.lights.empty()) {
+    std::vector<const TriangleMesh*> meshes;
+    for (const SceneObject& object : scene.objects) meshes.push_back(&object.mesh);
+    lamps_ = std::make_unique<SceneLamps>(scene.lights, tracer_, meshes, fog_ ? &fog_->layer() : nullptr);
+  }
 }
 
 Spectrum Renderer::measure_cloud_sky_share() const {
@@ -86,6 +91,7 @@ Renderer::Between Renderer::between(const Ray& ray, double distance) const {
             {Spectrum(1.0f), Spectrum(0.0f)},
             {Spectrum(0.0f), 1.0}};
   if (fog_) b.fog = fog_->along(ray, distance);
+  if (fog_ && lamps_) b.fog.in_scattered += lamps_->in_scattered(ray, distance);
   if (clouds_) b.clouds = clouds_->scatter(ray.origin, ray.direction, 0.0, std::min(distance, 1e7), cloud_light_);
   return b;
 }
@@ -156,6 +162,7 @@ Spectrum Renderer::shade(const Ray& ray, const SurfacePoint& point, const Cached
   radiance += sky_light.specular_radiance * share;
   if (has_specular(material))
     radiance += specular_reflection(material, point.normal, to_sun_, to_viewer) * sun;
+  if (lamps_) radiance += lamps_->reflected(point, material, to_viewer, rays);
   // Mirror part (window glass): what lies in the mirror direction.
   if (const std::optional<Spectrum> mirror = mirror_reflectance(material, point.normal, to_viewer))
     radiance += *mirror * mirrored(point, mirror_direction(point.normal, to_viewer), rays);
@@ -260,7 +267,29 @@ XyzImage Renderer::render(const RenderOptions& options) const {
       for (int tile = range.begin(); tile != range.end(); ++tile) render_tile(tile);
     });
   });
+  if (lamps_) add_seen_lamps(image, camera);
   return image;
+}
+
+void Renderer::add_seen_lamps(XyzImage& image, const PinholeCamera& camera) const {
+  const Vec3& eye = scene_.camera.position;
+  for (size_t i = 0; i < lamps_->size(); ++i) {
+    const Vec3& lamp = lamps_->position(i);
+    const std::optional<std::pair<double, double>> at = camera.project(lamp);
+    if (!at) continue;
+    const int x = static_cast<int>(std::floor(at->first)), y = static_cast<int>(std::floor(at->second));
+    if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+    const Vec3 to_lamp = lamp - eye;
+    const double distance = length(to_lamp);
+    if (!(distance > 0)) continue;
+    const Vec3 direction = to_lamp / distance;
+    rays_traced_.fetch_add(1, std::memory_order_relaxed);
+    if (tracer_.occluded(Ray{eye, direction, 0.0, distance * (1 - 1e-6)})) continue;
+    const Spectrum irradiance = lamps_->irradiance_from(i, eye) * sky_.aerial_perspective(direction, distance).transmittance;
+    const Xyz added = xyz_from_spectrum(irradiance * static_cast<float>(1.0 / camera.pixel_solid_angle(x + 0.5, y + 0.5)));
+    const Xyz old = image.at(x, y);
+    image.set(x, y, {old.x + added.x, old.y + added.y, old.z + added.z});
+  }
 }
 
 }  // namespace skylit

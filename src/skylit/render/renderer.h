@@ -21,6 +21,7 @@
 #include "skylit/io/image.h"
 #include "skylit/render/camera.h"
 #include "skylit/render/fog_medium.h"
+#include "skylit/render/scene_lamps.h"
 #include "skylit/render/scene.h"
 #include "skylit/render/surface_cache.h"
 #include "skylit/sky/sky_light.h"
@@ -85,6 +86,10 @@ class Renderer {
   // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
   // or the sky and the sun.
   Spectrum mirrored(const SurfacePoint& point, const Vec3& direction, uint64_t& rays) const;
+  // Adds each lamp the camera sees directly (not hidden by an object) to the pixel it
+  // falls in: a point source's irradiance at the camera spread over that pixel's solid
+  // angle, through the fog and the air.
+  void add_seen_lamps(XyzImage& image, const PinholeCamera& camera) const;
   // The light a hit obstacle sends back along `ray`, for the sky light's one bounce:
   // its Lambertian part, lit by the sun and the unobstructed sky.
   Spectrum obstacle_radiance(const Ray& ray, const Hit& hit, uint64_t& rays) const;
@@ -98,6 +103,7 @@ class Renderer {
   std::unique_ptr<SkyLight> sky_light_;
   std::unique_ptr<FogMedium> fog_;  // none without fog
   std::unique_ptr<CloudLayer> clouds_;  // none without clouds
+  std::unique_ptr<SceneLamps> lamps_;   // none without lights
   CloudLighting cloud_light_;
   Spectrum cloud_sky_share_{1.0f};
   mutable std::atomic<uint64_t> rays_traced_{0};

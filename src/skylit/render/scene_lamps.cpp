@@ -1,0 +1,69 @@
+#include "skylit/render/scene_lamps.h"
+
+#include <cmath>
+
+#include "skylit/material/reflection.h"
+
+namespace skylit {
+
+SceneLamps::SceneLamps(const std::vector<SceneLight>& lights, const RayTracer& tracer,
+                       const std::vector<const TriangleMesh*>& meshes, const FogLayer* fog)
+    : tracer_(tracer), fog_(fog) {
+  for (const SceneLight& light : lights) {
+    Lamp lamp{&light, nullptr, nullptr};
+    if (fog) {
+      lamp.volumes = std::make_unique<ShadowVolumes>(ShadowVolumes::for_point_light(meshes, light.luminaire.position()));
+      lamp.glow = std::make_unique<LampInScatter>(*fog, light.luminaire, light.spectrum_per_candela);
+    }
+    lamps_.push_back(std::move(lamp));
+  }
+}
+
+Spectrum SceneLamps::irradiance_from(size_t index, const Vec3& point) const {
+  const Luminaire& luminaire = lamps_[index].light->luminaire;
+  const Vec3 from_lamp = point - luminaire.position();
+  const double d2 = dot(from_lamp, from_lamp);
+  if (!(d2 > 0)) return Spectrum(0.0f);
+  const double candela = luminaire.intensity(from_lamp);
+  if (!(candela > 0)) return Spectrum(0.0f);
+  Spectrum e = lamps_[index].light->spectrum_per_candela * static_cast<float>(candela / d2);
+  if (fog_) e *= fog_->transmittance(fog_->column_between(luminaire.position(), point));
+  return e;
+}
+
+Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer,
+                               uint64_t& rays) const {
+  Spectrum radiance;
+  const bool glossy = has_specular(material);
+  for (size_t i = 0; i < lamps_.size(); ++i) {
+    const Vec3 to_lamp = position(i) - point.position;
+    const double distance = length(to_lamp);
+    if (!(distance > 0)) continue;
+    const Vec3 l = to_lamp / distance;
+    const double cos_in = dot(point.normal, l);
+    if (!(cos_in > 0)) continue;
+    const Spectrum e = irradiance_from(i, point.position);
+    if (e.is_black()) continue;
+    ++rays;
+    const Vec3 origin = offset_from_surface(point.position, point.normal);
+    if (tracer_.occluded(Ray{origin, l, 0.0, length(position(i) - origin) * (1 - 1e-6)})) continue;
+    radiance += diffuse_albedo(material, dot(point.normal, to_viewer)) * e * static_cast<float>(cos_in / kPi);
+    if (glossy) radiance += specular_reflection(material, point.normal, l, to_viewer) * e;
+  }
+  return radiance;
+}
+
+Spectrum SceneLamps::in_scattered(const Ray& ray, double distance) const {
+  Spectrum sum;
+  if (!fog_) return sum;
+  const RaySpan span = fog_->clip(ray.origin.z, ray.direction.z, 0.0, distance);
+  if (span.empty()) return sum;
+  std::vector<Interval> lit;
+  for (const Lamp& lamp : lamps_) {
+    lamp.volumes->sunlit_intervals(ray, span.lo, span.hi, lit);
+    if (!lit.empty()) sum += lamp.glow->along(ray, lit);
+  }
+  return sum;
+}
+
+}  // namespace skylit

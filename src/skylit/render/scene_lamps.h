@@ -1,0 +1,60 @@
+// The scene's luminaires as the renderer meets them (§7, Fig. 9): the light they put
+// on surfaces, with hard shadows from occlusion rays toward each lamp (a point
+// source), dimmed by the fog on the way; and the light the fog scatters from them
+// toward the camera, over the parts of each view ray the lamp lights (shadow volumes
+// from the lamp: the beams of headlights, the shadows of poles), integrated without
+// sampling noise (media/lamp_in_scatter.h).
+//
+// Not included, and why (docs/lights.md): the clear air's own scattering of lamp light
+// (Rayleigh and aerosol scattering coefficients near the ground are 1e-5 to 1e-4 m⁻¹,
+// two to three orders below a light fog's); the air's extinction over a street's
+// tens of metres (< 1 %); lamp light reflected twice.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "skylit/geometry/ray_tracer.h"
+#include "skylit/geometry/shadow_volumes.h"
+#include "skylit/media/fog_layer.h"
+#include "skylit/media/lamp_in_scatter.h"
+#include "skylit/render/scene.h"
+#include "skylit/render/surface_cache.h"
+
+namespace skylit {
+
+class SceneLamps {
+ public:
+  // `fog` may be null (clear air: no glow); it must outlive this object, as must the
+  // lights, the tracer and the meshes.
+  SceneLamps(const std::vector<SceneLight>& lights, const RayTracer& tracer,
+             const std::vector<const TriangleMesh*>& meshes, const FogLayer* fog);
+
+  bool empty() const { return lamps_.empty(); }
+
+  // W m⁻² sr⁻¹ nm⁻¹ a surface point reflects toward the viewer from all lamps
+  // (Lambertian and glossy parts), counting the occlusion rays it traces in `rays`.
+  Spectrum reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer, uint64_t& rays) const;
+
+  // W m⁻² sr⁻¹ nm⁻¹ the fog scatters toward the ray's origin from all lamps, over
+  // [0, distance] (distance may be infinite).
+  Spectrum in_scattered(const Ray& ray, double distance) const;
+
+  // A lamp's spectral irradiance (W m⁻² nm⁻¹) on a plane facing it at `point`, through
+  // the fog but not checked for occlusion.
+  Spectrum irradiance_from(size_t lamp, const Vec3& point) const;
+  size_t size() const { return lamps_.size(); }
+  const Vec3& position(size_t lamp) const { return lamps_[lamp].light->luminaire.position(); }
+
+ private:
+  struct Lamp {
+    const SceneLight* light;
+    std::unique_ptr<ShadowVolumes> volumes;  // with fog only
+    std::unique_ptr<LampInScatter> glow;      // with fog only
+  };
+  std::vector<Lamp> lamps_;
+  const RayTracer& tracer_;
+  const FogLayer* fog_;
+};
+
+}  // namespace skylit

@@ -1,0 +1,126 @@
+// Lamps in rendered scenes (render/scene_lamps.h): the illuminance they put on the
+// ground (inverse square and cosine law, through the renderer's spectra and observer),
+// their shadows, and their glow in homogeneous fog against the closed form of Sun et
+// al. (2005); the lamp itself seen as a point in the image.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../reference_quadrature.h"
+#include "skylit/geometry/primitives.h"
+#include "skylit/lights/lamp_spectrum.h"
+#include "skylit/render/renderer.h"
+#include "skylit/spectrum/cie.h"
+
+namespace skylit {
+namespace {
+
+constexpr double kReflectance = 0.5;
+
+// A dark night (sun 40° below the horizon: no twilight), a grey ground, one isotropic
+// 1000 cd LED lamp 5 m up.
+Scene night_scene() {
+  Scene scene;
+  scene.camera = Camera{{0, -20, 1.6}, {0, 0, 0}, {0, 0, 1}, 50.0};
+  scene.sun = Sun{-40, 180};
+  scene.materials.push_back({"ground", DiffuseMaterial{Spectrum(static_cast<float>(kReflectance))}});
+  scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 2000), 0});
+  LampSpectrumSettings led;
+  scene.lights.push_back({"lamp", Luminaire({0, 0, 5}, IntensityDistribution::isotropic(1000.0)),
+                          lamp_spectrum_per_candela(led)});
+  scene.render = RenderSettings{16, 16, std::nullopt, 1};
+  return scene;
+}
+
+double ground_luminance(const Renderer& renderer, double x) {
+  uint64_t rays = 0;
+  return luminance(renderer.radiance(Ray{{x, 0, 1}, {0, 0, -1}}, rays));
+}
+
+TEST(LampRender, GroundLuminanceFollowsInverseSquareAndCosineLaw) {
+  // E = I cos θ / d²; a Lambertian ground of reflectance ρ shows L = ρE/π. Below the
+  // lamp 40 lx. Tolerance 0.5 % plus the night sky's own light (bounded below).
+  const Scene scene = night_scene();
+  const Renderer renderer(scene);
+  Scene dark = scene;
+  dark.lights.clear();
+  const Renderer sky_only(dark);
+  for (double x : {0.0, 2.0, 5.0, 12.0}) {
+    const double d2 = x * x + 25.0, cos_theta = 5.0 / std::sqrt(d2);
+    const double expected = kReflectance * 1000.0 * cos_theta / d2 / kPi;
+    const double sky = ground_luminance(sky_only, x);
+    EXPECT_LT(sky, 1e-3 * expected) << "the night sky at x = " << x;
+    EXPECT_NEAR(ground_luminance(renderer, x), expected, 0.005 * expected + sky) << "x = " << x;
+  }
+}
+
+TEST(LampRender, AnObjectBetweenLampAndGroundCastsAShadow) {
+  Scene scene = night_scene();
+  scene.materials.push_back({"board", DiffuseMaterial{Spectrum(0.3f)}});
+  scene.objects.push_back({"board", make_box({3, -1, 2}, {5, 1, 2.2}), 1});  // over x ≈ 4–8 m on the ground
+  const Renderer renderer(scene);
+  const Renderer open(night_scene());
+  EXPECT_LT(ground_luminance(renderer, 6.0), 1e-3 * ground_luminance(open, 6.0));   // in the shadow
+  EXPECT_NEAR(ground_luminance(renderer, 12.0), ground_luminance(open, 12.0), 1e-6);  // beyond it
+  EXPECT_NEAR(ground_luminance(renderer, 1.0), ground_luminance(open, 1.0), 1e-6);    // before it
+}
+
+// Sun et al. 2005 for an isotropic lamp (intensity I) in a homogeneous isotropic
+// medium of extinction σ, a ray passing at h from the lamp with its foot s0 ahead:
+// L = σ I e^{−σ s0}/(2π h) ∫_{θ0/2}^{π/2} e^{−σ h tan ξ} dξ, θ0 = atan2(h, s0).
+double glow_closed_form(double sigma, double intensity, double h, double s0) {
+  const double theta0 = std::atan2(h, s0);
+  return sigma * intensity * std::exp(-sigma * s0) / (2 * kPi * h) *
+         testing::integrate([&](double xi) { return std::exp(-sigma * h * std::tan(xi)); }, theta0 / 2, kPi / 2 - 1e-12,
+                            1e-12);
+}
+
+TEST(LampRender, GlowInHomogeneousFogFallsOffAsTheClosedForm) {
+  // Horizontal view rays passing the lamp at growing distances, in a homogeneous fog
+  // (σ = 0.01 m⁻¹, isotropic phase) with nothing in the way: the rendered luminance
+  // is the closed form's (the LED spectrum is one candela per candela); tolerance 2e-3
+  // (the quadrature's, tests/media/lamp_in_scatter_test.cpp) plus 1e-6 cd/m² of sky.
+  Scene scene = night_scene();
+  scene.objects.clear();
+  scene.materials.resize(1);
+  scene.objects.push_back({"ground", make_ground_plane({0, 0, -100}, 2000), 0});
+  scene.lights[0] = {"lamp", Luminaire({0, 30, 10}, IntensityDistribution::isotropic(1000.0)),
+                     scene.lights[0].spectrum_per_candela};
+  FogSettings fog;
+  fog.density_at_ground = 1.0;
+  fog.unit_density_extinction_per_m = 0.01;
+  fog.scale_height_m = std::numeric_limits<double>::infinity();
+  fog.bottom_altitude_m = -50;
+  fog.top_altitude_m = 1000;
+  fog.phase = FogPhase::henyey_greenstein;
+  fog.asymmetry = 0;
+  scene.fog = fog;
+  const Renderer renderer(scene);
+  double previous = std::numeric_limits<double>::infinity();
+  for (double offset : {0.5, 2.0, 8.0, 30.0}) {
+    uint64_t rays = 0;
+    const double got = luminance(renderer.radiance(Ray{{offset, 0, 10}, {0, 1, 0}}, rays));
+    const double expected = glow_closed_form(0.01, 1000.0, offset, 30.0);
+    EXPECT_NEAR(got, expected, 2e-3 * expected + 1e-6) << "offset " << offset;
+    EXPECT_LT(got, previous);
+    previous = got;
+  }
+}
+
+TEST(LampRender, LampSeenDirectlyLightsItsPixel) {
+  // The camera looks at the lamp: its pixel holds the lamp's illuminance at the camera
+  // spread over the pixel's solid angle, so pixel luminance × solid angle = I/d² (lx),
+  // to the air's transmittance over 20 m (> 0.99).
+  Scene scene = night_scene();
+  scene.camera = Camera{{0, -20, 5}, {0, 0, 5}, {0, 0, 1}, 20.0};
+  scene.render = RenderSettings{33, 33, std::nullopt, 1};
+  const XyzImage image = Renderer(scene).render({1, {}});
+  const PinholeCamera camera(scene.camera, 33, 33);
+  const double solid_angle = camera.pixel_solid_angle(16.5, 16.5);
+  const double expected = 1000.0 / (20.0 * 20.0);
+  EXPECT_NEAR(image.at(16, 16).y * solid_angle, expected, 0.01 * expected);
+  EXPECT_LT(image.at(15, 16).y * solid_angle, 1e-3 * expected);  // only that pixel
+}
+
+}  // namespace
+}  // namespace skylit
