@@ -196,6 +196,21 @@ bool make_frustum(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& light
   return true;
 }
 
+// Whether triangle (p, q, r) lies wholly outside the cone of half-angle max_gamma_deg
+// about the unit `aim` from `apex`, by its bounding sphere (conservative: false when
+// unsure).
+bool outside_cone(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& apex, const Vec3& aim,
+                  double max_gamma_deg) {
+  if (!(max_gamma_deg < 180)) return false;
+  const Vec3 centre = (p + q + r) / 3.0;
+  const double radius = std::max({length(p - centre), length(q - centre), length(r - centre)});
+  const Vec3 to_centre = centre - apex;
+  const double distance = length(to_centre);
+  if (!(distance > radius)) return false;
+  const double angle = std::acos(std::clamp(dot(to_centre, aim) / distance, -1.0, 1.0));
+  return angle - std::asin(radius / distance) > max_gamma_deg * kPi / 180;
+}
+
 // Clips origin + t direction, t in [lo, hi], to the prism; true if something is left.
 bool clip(const Prism& prism, const Vec3& origin, const Vec3& direction, double& lo, double& hi) {
   for (int i = 0; i < 4; ++i) {
@@ -423,12 +438,14 @@ ShadowVolumes::ShadowVolumes(const std::vector<const TriangleMesh*>& meshes, con
 
 ShadowVolumes::ShadowVolumes(std::unique_ptr<const Data> data) : data_(std::move(data)) {}
 
-ShadowVolumes ShadowVolumes::for_point_light(const std::vector<const TriangleMesh*>& meshes, const Vec3& light) {
-  return ShadowVolumes(build_point(meshes, light));
+ShadowVolumes ShadowVolumes::for_point_light(const std::vector<const TriangleMesh*>& meshes, const Vec3& light,
+                                             const Vec3& aim, double max_gamma_deg) {
+  return ShadowVolumes(build_point(meshes, light, aim, max_gamma_deg));
 }
 
 std::unique_ptr<const ShadowVolumes::Data> ShadowVolumes::build_point(const std::vector<const TriangleMesh*>& meshes,
-                                                                      const Vec3& light) {
+                                                                      const Vec3& light, const Vec3& aim,
+                                                                      double max_gamma_deg) {
   if (!finite(light)) throw std::invalid_argument("ShadowVolumes: the light's position must be finite");
   auto data = std::make_unique<Data>();
   data->point_light = true;
@@ -442,6 +459,7 @@ std::unique_ptr<const ShadowVolumes::Data> ShadowVolumes::build_point(const std:
     for (const auto& t : mesh.triangles) {
       const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
       if (keep != 0 && !(keep * dot(cross(q - p, r - p), light - p) > 0)) continue;
+      if (outside_cone(p, q, r, light, aim, max_gamma_deg)) continue;
       Prism frustum;
       if (!make_frustum(p, q, r, light, frustum)) continue;
       data->prisms.push_back(frustum);

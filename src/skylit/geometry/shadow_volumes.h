@@ -48,8 +48,12 @@ class ShadowVolumes {
   ShadowVolumes(const std::vector<TriangleMesh>& meshes, const Vec3& to_sun);
   // The same without copying meshes held elsewhere (e.g. in render/Scene objects).
   ShadowVolumes(const std::vector<const TriangleMesh*>& meshes, const Vec3& to_sun);
-  // The shadow volumes for a point light at `light` (world coordinates, finite).
-  static ShadowVolumes for_point_light(const std::vector<const TriangleMesh*>& meshes, const Vec3& light);
+  // The shadow volumes for a point light at `light` (world coordinates, finite) that
+  // shines only within `max_gamma_deg` of the unit vector `aim` (180: everywhere).
+  // Triangles wholly outside that cone cast no volume: their shadow lies where the
+  // light does not go.
+  static ShadowVolumes for_point_light(const std::vector<const TriangleMesh*>& meshes, const Vec3& light,
+                                       const Vec3& aim = {0, 0, -1}, double max_gamma_deg = 180);
   ~ShadowVolumes();
   ShadowVolumes(ShadowVolumes&&) noexcept;
   ShadowVolumes& operator=(ShadowVolumes&&) noexcept;
@@ -81,7 +85,8 @@ class ShadowVolumes {
   struct Data;
   explicit ShadowVolumes(std::unique_ptr<const Data> data);
   static std::unique_ptr<const Data> build(const std::vector<const TriangleMesh*>& meshes, const Vec3& to_sun);
-  static std::unique_ptr<const Data> build_point(const std::vector<const TriangleMesh*>& meshes, const Vec3& light);
+  static std::unique_ptr<const Data> build_point(const std::vector<const TriangleMesh*>& meshes, const Vec3& light,
+                                                 const Vec3& aim, double max_gamma_deg);
   std::unique_ptr<const Data> data_;
 };
 

@@ -220,6 +220,21 @@ double IntensityDistribution::max_gamma_deg() const {
   return last + 1 < n ? gamma_[last + 1] : gamma_.back();
 }
 
+double IntensityDistribution::angular_detail_deg() const {
+  constexpr double kSmooth = 30.0, kFinest = 1.0;
+  switch (kind_) {
+    case Kind::kIsotropic:
+    case Kind::kCosine: return kSmooth;
+    case Kind::kSpot:
+      // A hard edge is where the lamp's cone is cut exactly; inside it is constant.
+      return outer_deg_ > inner_deg_ ? std::clamp(0.5 * (outer_deg_ - inner_deg_), kFinest, kSmooth) : kSmooth;
+    case Kind::kTable: break;
+  }
+  double step = kSmooth;
+  for (size_t i = 1; i < gamma_.size(); ++i) step = std::min(step, gamma_[i] - gamma_[i - 1]);
+  return std::clamp(3 * step, kFinest, kSmooth);
+}
+
 IntensityDistribution IntensityDistribution::scaled(double factor) const {
   IntensityDistribution d = *this;
   d.peak_ *= factor;

@@ -63,6 +63,10 @@ class IntensityDistribution {
   // The largest γ (degrees) toward which any light goes: beyond it the intensity is 0
   // at every C (180 if light may go everywhere).
   double max_gamma_deg() const;
+  // The angle (degrees) over which the intensity may change its slope: for a table
+  // three of its finest γ steps, for a soft-edged spot half its edge's width, for
+  // smooth shapes 30°. A quadrature over directions should not take larger steps.
+  double angular_detail_deg() const;
   // The same distribution with every value multiplied by factor (≥ 0).
   IntensityDistribution scaled(double factor) const;
 

@@ -91,8 +91,10 @@ FogLayer::FogLayer(const FogSettings& s)
   }
   log_rho0_ = std::log(rho0_);                    // −∞ for no fog, handled by the callers
   eta_ = clamp_huge(1.0 / s.scale_height_m);      // 0 for h0 = ±∞
-  for (int i = 0; i < kSpectralBins; ++i)
+  for (int i = 0; i < kSpectralBins; ++i) {
     sigma_bins_[static_cast<size_t>(i)] = unit_density_extinction_per_m(kGrid.center_nm(i));
+    grey_ = grey_ && sigma_bins_[static_cast<size_t>(i)] == sigma_bins_[0];
+  }
 }
 
 double FogLayer::density(double z) const {

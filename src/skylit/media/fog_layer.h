@@ -68,6 +68,8 @@ class FogLayer {
   // given length and rises by dz = z_v·length over it.
   double piece_column(double z_start_m, double rise_m, double length_m) const;
 
+  // Whether σ is the same in every bin (b = 0, the default): then e^(−σ·N) is one number.
+  bool is_grey() const { return grey_; }
   // e^(−σ(λ)·N) in each bin: the fog's transmittance along a column N.
   Spectrum transmittance(double column_m) const;
 
@@ -80,6 +82,7 @@ class FogLayer {
   double rho0_, log_rho0_, eta_, z_bottom_, z_top_, albedo_;
   double sigma0_, lambda0_, b_;
   std::array<double, kSpectralBins> sigma_bins_{};
+  bool grey_ = true;
   FogPhase phase_kind_;
   double asymmetry_;
   DropletPhaseParameters droplet_{};

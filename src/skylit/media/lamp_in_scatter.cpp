@@ -14,11 +14,12 @@ namespace {
 constexpr int kPhaseSteps = 4096;
 // The first Gauss–Legendre panel spans half the ray's first lit angle, but not less
 // than half the forward peak's width; each further panel is kPanelGrowth times wider,
-// up to kMaxPanel (14°: the structure of street-lamp distributions) and a quarter of
-// the lit piece (a narrow beam crossed by the ray gets at least four panels).
+// up to kMaxPanel and the lamp distribution's angular detail: as the point runs along
+// the ray, the direction from the lamp turns by exactly dθ, so a panel of width Δθ
+// sweeps Δθ of the distribution.
 constexpr double kPhasePeakWidth = 0.02;  // rad
 constexpr double kPanelGrowth = 3.0;
-constexpr double kMaxPanel = 0.25;  // rad
+constexpr double kMaxPanel = 0.5;  // rad
 // Four-point Gauss–Legendre on [−1, 1] (Abramowitz & Stegun 25.4.30).
 constexpr std::array<double, 4> kNodes{-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
                                        0.8611363115940526};
@@ -35,6 +36,10 @@ LampInScatter::LampInScatter(const FogLayer& layer, const Luminaire& lamp, const
     sigma_[k] = static_cast<float>(sigma[k]);
     grey_ = grey_ && sigma[k] == sigma[0];
   }
+  const double z = lamp.position().z;
+  lamp_inside_ = z >= layer.bottom_m() && z <= layer.top_m();
+  lamp_density_ = layer.density(z);
+  max_panel_ = std::min(kMaxPanel, lamp.distribution().angular_detail_deg() * kPi / 180);
   cos_max_gamma_ = std::cos(lamp.distribution().max_gamma_deg() * kPi / 180);
   phase_table_.resize(kPhaseSteps + 1);
   for (int i = 0; i <= kPhaseSteps; ++i) phase_table_[i] = static_cast<float>(layer.phase(std::cos(kPi * i / kPhaseSteps)));
@@ -95,12 +100,21 @@ void LampInScatter::emitting_intervals(const Ray& ray, double s_min, double s_ma
   }
 }
 
-void LampInScatter::integrate(const Ray& ray, double s0, double h, double theta_lo, double theta_hi, double& grey,
-                              Spectrum& spectral) const {
+namespace {
+
+// (1 − e^(−x))/x with e = e^(−x) given, continued to 1 at x = 0: the mean of e^(−t) over
+// [0, x], which turns an exponential density into a column.
+double mean_decay(double x, double e) { return std::abs(x) < 1e-6 ? 1 - 0.5 * x : (1 - e) / x; }
+
+}  // namespace
+
+void LampInScatter::integrate(const Ray& ray, const RayInLayer& in, double s0, double h, double theta_lo,
+                              double theta_hi, double& grey, Spectrum& spectral) const {
   const Vec3& o = ray.origin;
   const Vec3& d = ray.direction;
   const Vec3& lamp = lamp_.position();
-  const double max_width = std::min(kMaxPanel, 0.25 * (theta_hi - theta_lo));
+  const double eta = layer_.inverse_scale_height_per_m();
+  const double max_width = max_panel_;
   double width = std::min(0.5 * std::max(theta_lo, kPhasePeakWidth), max_width);
   for (double lo = theta_lo; lo < theta_hi; width = std::min(width * kPanelGrowth, max_width)) {
     const double hi = std::min(theta_hi, lo + width);
@@ -108,13 +122,26 @@ void LampInScatter::integrate(const Ray& ray, double s0, double h, double theta_
     for (int k = 0; k < 4; ++k) {
       const double theta = middle + half * kNodes[k];
       const double s = s0 - h / std::tan(theta);
+      if (!(s >= in.lo && s <= in.hi)) continue;  // outside the layer: no fog
       const Vec3 p = o + s * d;
-      const double rho = layer_.density(p.z);
-      if (!(rho > 0)) continue;
       const double intensity = lamp_.intensity(p - lamp);
       if (!(intensity > 0)) continue;
+      // Along the view ray inside the layer ρ falls as e^(−η z_v (s − s_in)): one
+      // exponential gives the density here and the column back to where the ray
+      // entered (Eq. 10 in closed form).
+      const double x = in.decay_per_m * (s - in.lo), e = std::exp(-x);
+      const double rho = in.entry_density * e;
+      if (!(rho > 0)) continue;
+      const double view_column = in.entry_density * (s - in.lo) * mean_decay(x, e);
+      double lamp_column;
+      if (lamp_inside_) {
+        const double r = length(p - lamp), y = eta * (p.z - lamp.z);
+        lamp_column = lamp_density_ * r * mean_decay(y, std::exp(-y));
+      } else {
+        lamp_column = layer_.column_between(lamp, p);
+      }
       const double weight = half * kWeights[k] * rho * intensity * phase(theta);
-      const double column = layer_.column(o.z, d.z, 0.0, s) + layer_.column_between(lamp, p);
+      const double column = view_column + lamp_column;
       if (grey_) {
         grey += weight * std::exp(-sigma_[0] * column);
       } else {
@@ -131,12 +158,17 @@ Spectrum LampInScatter::along(const Ray& ray, const std::vector<Interval>& lit) 
   const double s0 = dot(to_lamp, ray.direction);
   const double h = std::max(length(to_lamp - s0 * ray.direction), kLampSourceRadiusM);
   auto angle_at = [&](double s) { return std::isfinite(s) ? std::atan2(h, s0 - s) : kPi; };
+  // Where the view ray is in the layer, and the density where it enters.
+  const RaySpan span = layer_.clip(ray.origin.z, ray.direction.z, 0.0, std::numeric_limits<double>::infinity());
+  if (span.empty()) return Spectrum(0.0f);
+  const double z_in = std::clamp(ray.origin.z + ray.direction.z * span.lo, layer_.bottom_m(), layer_.top_m());
+  const RayInLayer in{span.lo, span.hi, layer_.density(z_in), layer_.inverse_scale_height_per_m() * ray.direction.z};
   double grey = 0;
   Spectrum spectral;
   std::vector<Interval> emitting;
   for (const Interval& piece : lit) {
     emitting_intervals(ray, piece.begin, piece.end, emitting);
-    for (const Interval& e : emitting) integrate(ray, s0, h, angle_at(e.begin), angle_at(e.end), grey, spectral);
+    for (const Interval& e : emitting) integrate(ray, in, s0, h, angle_at(e.begin), angle_at(e.end), grey, spectral);
   }
   const float scale = static_cast<float>(layer_.single_scattering_albedo() / h);
   if (grey_) return spectrum_ * (sigma_ * static_cast<float>(grey * scale));

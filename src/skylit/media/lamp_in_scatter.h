@@ -53,7 +53,12 @@ class LampInScatter {
 
  private:
   // ∫ over θ in [theta_lo, theta_hi] for a ray at distance h from the lamp with foot s₀.
-  void integrate(const Ray& ray, double s0, double h, double theta_lo, double theta_hi,
+  struct RayInLayer {
+    double lo, hi;          // the view ray's parameter range inside the layer
+    double entry_density;   // ρ where it enters (at lo)
+    double decay_per_m;     // η·z_v: ρ(s) = entry_density·e^(−decay_per_m·(s − lo))
+  };
+  void integrate(const Ray& ray, const RayInLayer& in, double s0, double h, double theta_lo, double theta_hi,
                  double& grey, Spectrum& spectral) const;
   double phase(double theta) const;
 
@@ -63,6 +68,9 @@ class LampInScatter {
   Spectrum sigma_;  // the fog's extinction at unit density in each bin
   bool grey_;       // σ the same in every bin: one exponential per node
   double cos_max_gamma_;
+  double max_panel_;      // rad: the widest Gauss–Legendre panel
+  bool lamp_inside_;      // the lamp is in the layer: its paths to the view ray stay in it
+  double lamp_density_;   // ρ at the lamp
   std::vector<float> phase_table_;  // F(θ) on a uniform θ grid
 };
 

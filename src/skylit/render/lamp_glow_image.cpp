@@ -1,0 +1,163 @@
+#include "skylit/render/lamp_glow_image.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <optional>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "skylit/spectrum/cie.h"
+
+namespace skylit {
+
+namespace {
+
+// The coarsest blocks: 8 pixels on a side (9 × 9 centres).
+constexpr int kBlock = 8;
+// Two view hits count as the same surface seen alike when they are on one object and
+// their distances differ by at most this fraction.
+constexpr double kDistanceTolerance = 0.02;
+
+bool same_surface(const ViewHit& a, const ViewHit& b, double distance) {
+  if (a.mesh != b.mesh) return false;
+  if (a.mesh == ViewHit::kSky) return true;
+  return std::abs(a.distance - distance) <= kDistanceTolerance * distance;
+}
+
+// Whether the glow at a block's middle is what bilinear interpolation of its corners
+// predicts, within kGlowTolerance in every channel.
+bool interpolates(const std::array<Xyz, 4>& c, const Xyz& middle, double u, double v) {
+  auto close = [&](double a, double b, double p, double q, double actual) {
+    const double predicted = (1 - v) * ((1 - u) * a + u * b) + v * ((1 - u) * p + u * q);
+    return std::abs(predicted - actual) <= kGlowTolerance * std::max(predicted, actual);
+  };
+  return close(c[0].x, c[1].x, c[2].x, c[3].x, middle.x) && close(c[0].y, c[1].y, c[2].y, c[3].y, middle.y) &&
+         close(c[0].z, c[1].z, c[2].z, c[3].z, middle.z);
+}
+
+}  // namespace
+
+LampGlowImage::LampGlowImage(const PinholeCamera& camera, int width, int height, const RayTracer& tracer,
+                             const SceneLamps& lamps)
+    : camera_(camera), lamps_(lamps), width_(width), height_(height), centres_(static_cast<size_t>(width) * height) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < width; ++x) {
+        const std::optional<Hit> hit = tracer.intersect(camera.ray_through(x + 0.5, y + 0.5));
+        if (hit) centre(x, y).hit = {hit->mesh_id, hit->t};
+      }
+  });
+  const int blocks_x = (width + kBlock - 1) / kBlock, blocks_y = (height + kBlock - 1) / kBlock;
+  std::atomic<uint64_t> evaluations{0};
+  tbb::parallel_for(tbb::blocked_range<int>(0, blocks_x * blocks_y), [&](const tbb::blocked_range<int>& range) {
+    uint64_t count = 0;
+    for (int b = range.begin(); b != range.end(); ++b) fill_block((b % blocks_x) * kBlock, (b / blocks_x) * kBlock, count);
+    evaluations.fetch_add(count, std::memory_order_relaxed);
+  });
+  evaluations_ = evaluations.load();
+}
+
+Xyz LampGlowImage::evaluate(const Ray& ray, const ViewHit& hit) const {
+  return xyz_from_spectrum(lamps_.in_scattered(ray, hit.distance));
+}
+
+void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
+  // The block's centres run from (bx, by) to (x_end, y_end), corners included; it
+  // writes those it owns (up to the next block's first row and column, exclusive).
+  const int x_end = std::min(bx + kBlock, width_ - 1), y_end = std::min(by + kBlock, height_ - 1);
+  const int x_own = bx + kBlock >= width_ ? width_ - 1 : bx + kBlock - 1;
+  const int y_own = by + kBlock >= height_ ? height_ - 1 : by + kBlock - 1;
+  std::array<std::optional<Xyz>, (kBlock + 1) * (kBlock + 1)> memo;
+  auto value = [&](int x, int y) -> const Xyz& {
+    std::optional<Xyz>& v = memo[static_cast<size_t>(y - by) * (kBlock + 1) + (x - bx)];
+    if (!v) {
+      v = evaluate(camera_.ray_through(x + 0.5, y + 0.5), centre(x, y).hit);
+      ++evaluations;
+    }
+    return *v;
+  };
+  auto set = [&](int x, int y, const Xyz& v) {
+    if (x > x_own || y > y_own) return;
+    Centre& c = centre(x, y);
+    c.xyz[0] = static_cast<float>(v.x);
+    c.xyz[1] = static_cast<float>(v.y);
+    c.xyz[2] = static_cast<float>(v.z);
+  };
+  auto refine = [&](auto&& self, int x0, int y0, int x1, int y1) -> void {
+    if (x1 - x0 <= 1 && y1 - y0 <= 1) {
+      for (int y : {y0, y1})
+        for (int x : {x0, x1}) set(x, y, value(x, y));
+      return;
+    }
+    const std::array<Xyz, 4> c{value(x0, y0), value(x1, y0), value(x0, y1), value(x1, y1)};
+    const ViewHit& h00 = centre(x0, y0).hit;
+    const int mx = (x0 + x1) / 2, my = (y0 + y1) / 2;
+    bool accept = interpolates(c, value(mx, my), x1 > x0 ? double(mx - x0) / (x1 - x0) : 0,
+                               y1 > y0 ? double(my - y0) / (y1 - y0) : 0);
+    // Every centre in the block on the corners' object, at the distance the corners'
+    // distances interpolate to (or all of them sky).
+    for (int y = y0; accept && y <= y1; ++y)
+      for (int x = x0; accept && x <= x1; ++x) {
+        const ViewHit& h = centre(x, y).hit;
+        if (h.mesh != h00.mesh) accept = false;
+        if (!accept || h.mesh == ViewHit::kSky) continue;
+        const double u = x1 > x0 ? double(x - x0) / (x1 - x0) : 0, v = y1 > y0 ? double(y - y0) / (y1 - y0) : 0;
+        const double d = (1 - v) * ((1 - u) * h00.distance + u * centre(x1, y0).hit.distance) +
+                         v * ((1 - u) * centre(x0, y1).hit.distance + u * centre(x1, y1).hit.distance);
+        accept = std::abs(h.distance - d) <= kDistanceTolerance * h.distance;
+      }
+    if (accept) {
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          const double u = x1 > x0 ? double(x - x0) / (x1 - x0) : 0, v = y1 > y0 ? double(y - y0) / (y1 - y0) : 0;
+          auto mix = [&](double a, double b, double p, double q) {
+            return (1 - v) * ((1 - u) * a + u * b) + v * ((1 - u) * p + u * q);
+          };
+          set(x, y, {mix(c[0].x, c[1].x, c[2].x, c[3].x), mix(c[0].y, c[1].y, c[2].y, c[3].y),
+                     mix(c[0].z, c[1].z, c[2].z, c[3].z)});
+        }
+      return;
+    }
+    if (x1 - x0 >= 2 && y1 - y0 >= 2) {
+      self(self, x0, y0, mx, my);
+      self(self, mx, y0, x1, my);
+      self(self, x0, my, mx, y1);
+      self(self, mx, my, x1, y1);
+    } else if (x1 - x0 >= 2) {
+      self(self, x0, y0, mx, y1);
+      self(self, mx, y0, x1, y1);
+    } else {
+      self(self, x0, y0, x1, my);
+      self(self, x0, my, x1, y1);
+    }
+  };
+  refine(refine, bx, by, x_end, y_end);
+}
+
+Xyz LampGlowImage::at(double x, double y, const Ray& ray, const ViewHit& hit) const {
+  // The four pixel centres around the sample, bilinear weights, only those that see
+  // what the sample sees.
+  const double cx = std::clamp(x - 0.5, 0.0, width_ - 1.0), cy = std::clamp(y - 0.5, 0.0, height_ - 1.0);
+  const int x0 = std::min(static_cast<int>(cx), width_ - 1), y0 = std::min(static_cast<int>(cy), height_ - 1);
+  const int x1 = std::min(x0 + 1, width_ - 1), y1 = std::min(y0 + 1, height_ - 1);
+  const double fx = cx - x0, fy = cy - y0;
+  double weight = 0, sum[3] = {0, 0, 0};
+  auto take = [&](int px, int py, double w) {
+    const Centre& c = centre(px, py);
+    if (!same_surface(c.hit, hit, hit.distance)) return;
+    w += 1e-6;  // a sample exactly on a centre still counts its neighbours' side
+    weight += w;
+    for (int k = 0; k < 3; ++k) sum[k] += w * c.xyz[k];
+  };
+  take(x0, y0, (1 - fx) * (1 - fy));
+  take(x1, y0, fx * (1 - fy));
+  take(x0, y1, (1 - fx) * fy);
+  take(x1, y1, fx * fy);
+  if (weight > 0) return {sum[0] / weight, sum[1] / weight, sum[2] / weight};
+  return evaluate(ray, hit);
+}
+
+}  // namespace skylit

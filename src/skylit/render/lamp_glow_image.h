@@ -1,0 +1,67 @@
+// The lamps' glow in fog over the whole image, found without evaluating it at every
+// sample. The glow (render/scene_lamps.h) costs a shadow-volume query and an integral
+// per lamp and view ray; it varies smoothly across the image except at the edges of
+// objects, of beams and of shadows. So it is computed at pixel centres by a quadtree:
+// the centres of 8-pixel blocks first; a block whose centres all see the same object
+// at distances its corners interpolate, and whose middle's glow its corners predict
+// within kGlowTolerance, is filled by bilinear interpolation; any other block is split
+// in four, down to single pixels, where every centre is evaluated exactly. A sample then takes the glow interpolated from the
+// pixel centres around it that see what it sees (the same object at a similar
+// distance), so edges stay antialiased; with none, it evaluates the glow itself.
+//
+// Limits (docs/lights.md): a shadow or beam narrower than a block's spacing that lies
+// wholly between its corners is not seen; the glow is added after the air's extinction
+// on the way, which over a street's length is under 1 %.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "skylit/geometry/ray_tracer.h"
+#include "skylit/render/camera.h"
+#include "skylit/render/scene_lamps.h"
+#include "skylit/spectrum/color_space.h"
+
+namespace skylit {
+
+// What a view ray meets: an object (the tracer's mesh id) at a distance, or the sky.
+struct ViewHit {
+  static constexpr uint32_t kSky = std::numeric_limits<uint32_t>::max();
+  uint32_t mesh = kSky;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+// A block is interpolated when the glow at its middle differs from what its corners
+// predict by at most this fraction (per channel).
+inline constexpr double kGlowTolerance = 0.01;
+
+class LampGlowImage {
+ public:
+  // Runs the quadtree over the image (in the calling TBB arena, in parallel).
+  LampGlowImage(const PinholeCamera& camera, int width, int height, const RayTracer& tracer, const SceneLamps& lamps);
+
+  // Absolute XYZ of the glow for a sample at image position (x, y) whose ray met `hit`.
+  Xyz at(double x, double y, const Ray& ray, const ViewHit& hit) const;
+
+  // How many glow evaluations the quadtree made (for the benchmark and tests).
+  uint64_t evaluations() const { return evaluations_; }
+
+ private:
+  struct Centre {
+    float xyz[3];
+    ViewHit hit;
+  };
+  Xyz evaluate(const Ray& ray, const ViewHit& hit) const;
+  void fill_block(int bx, int by, uint64_t& evaluations);
+  const Centre& centre(int x, int y) const { return centres_[static_cast<size_t>(y) * width_ + x]; }
+  Centre& centre(int x, int y) { return centres_[static_cast<size_t>(y) * width_ + x]; }
+
+  const PinholeCamera& camera_;
+  const SceneLamps& lamps_;
+  int width_, height_;
+  std::vector<Centre> centres_;
+  uint64_t evaluations_ = 0;
+};
+
+}  // namespace skylit
