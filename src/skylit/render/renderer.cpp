@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "skylit/material/reflection.h"
+#include "skylit/render/lamp_glow_image.h"
 #include "skylit/spectrum/cie.h"
 
 namespace skylit {
@@ -17,6 +18,9 @@ namespace skylit {
 namespace {
 
 constexpr int kTileSize = 32;
+// Neighbouring pixel centres that differ by more than this fraction (in X, Y or Z) mark
+// an edge, where the pixel gets its full grid of samples.
+constexpr double kEdgeContrast = 0.05;
 
 }  // namespace
 
@@ -91,7 +95,6 @@ Renderer::Between Renderer::between(const Ray& ray, double distance) const {
             {Spectrum(1.0f), Spectrum(0.0f)},
             {Spectrum(0.0f), 1.0}};
   if (fog_) b.fog = fog_->along(ray, distance);
-  if (fog_ && lamps_) b.fog.in_scattered += lamps_->in_scattered(ray, distance);
   if (clouds_) b.clouds = clouds_->scatter(ray.origin, ray.direction, 0.0, std::min(distance, 1e7), cloud_light_);
   return b;
 }
@@ -172,11 +175,14 @@ Spectrum Renderer::shade(const Ray& ray, const SurfacePoint& point, const Cached
 Spectrum Renderer::radiance(const Ray& ray, uint64_t& rays) const {
   ++rays;
   const std::optional<Hit> hit = tracer_.intersect(ray);
+  const double distance = hit ? hit->t : std::numeric_limits<double>::infinity();
+  // The lamps' glow exactly (render() takes it from a LampGlowImage instead).
+  const Spectrum glow = lamps_ && fog_ ? lamps_->in_scattered(ray, distance) : Spectrum(0.0f);
   if (!hit)
-    return seen_through(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction),
-                        between(ray, std::numeric_limits<double>::infinity()), true);
+    return glow + seen_through(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction),
+                               between(ray, distance), true);
   const SurfacePoint point = surface_point(ray, *hit);
-  return seen_through(shade(ray, point, sky_light_at(point, -ray.direction, rays), rays), between(ray, hit->t), false);
+  return glow + seen_through(shade(ray, point, sky_light_at(point, -ray.direction, rays), rays), between(ray, distance), false);
 }
 
 XyzImage Renderer::render(const RenderOptions& options) const {
@@ -228,10 +234,18 @@ XyzImage Renderer::render(const RenderOptions& options) const {
     if (!same) pixel = {true, distance, between(ray, distance)};
     return pixel.between;
   };
-  auto sample = [&](double x, double y, uint64_t& rays, PixelBetween& pixel_between) {
+  // The lamps' glow in fog, from pixel centres (lamp_glow_image.h).
+  std::unique_ptr<LampGlowImage> glow;
+  if (lamps_ && fog_) arena.execute([&] { glow = std::make_unique<LampGlowImage>(camera, width, height, tracer_, *lamps_); });
+  auto sample = [&](double x, double y, uint64_t& rays, PixelBetween& pixel_between, Xyz& glow_sum, uint32_t& mesh) {
     const Ray ray = camera.ray_through(x, y);
     ++rays;
     const std::optional<Hit> hit = tracer_.intersect(ray);
+    mesh = hit ? hit->mesh_id : ViewHit::kSky;
+    if (glow) {
+      const Xyz g = glow->at(x, y, ray, hit ? ViewHit{hit->mesh_id, hit->t} : ViewHit{});
+      glow_sum = {glow_sum.x + g.x, glow_sum.y + g.y, glow_sum.z + g.z};
+    }
     if (!hit)
       return seen_through(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction),
                           between_for(ray, std::numeric_limits<double>::infinity(), pixel_between), true);
@@ -241,32 +255,73 @@ XyzImage Renderer::render(const RenderOptions& options) const {
     return seen_through(shade(ray, point, *sky_light, rays), between_for(ray, point.distance, pixel_between), false);
   };
 
-  auto render_tile = [&](int tile) {
+  // A pixel's value from a regular grid × grid of samples inside it, averaged with equal
+  // weights (grid 1: its centre); `mesh` gets what the last sample met.
+  auto pixel_value = [&](int x, int y, int grid, uint64_t& rays, uint32_t& mesh) {
+    Spectrum sum;
+    Xyz glow_sum;
+    PixelBetween pixel_between;
+    for (int sy = 0; sy < grid; ++sy)
+      for (int sx = 0; sx < grid; ++sx)
+        sum += sample(x + (sx + 0.5) / grid, y + (sy + 0.5) / grid, rays, pixel_between, glow_sum, mesh);
+    const double mean = 1.0 / (grid * grid);
+    const Xyz pixel = xyz_from_spectrum(sum * static_cast<float>(mean));
+    return Xyz{pixel.x + glow_sum.x * mean, pixel.y + glow_sum.y * mean, pixel.z + glow_sum.z * mean};
+  };
+
+  // Two passes over the tiles (adaptive antialiasing): first one sample at every pixel's
+  // centre; then the full n × n grid only where an edge runs, that is where a pixel's
+  // centre and a neighbour's met different objects or differ in any of X, Y, Z by more
+  // than kEdgeContrast. Elsewhere the image is smooth at the pixel's scale and its
+  // centre stands for the grid's mean.
+  std::vector<uint32_t> centre_mesh(static_cast<size_t>(width) * height);
+  XyzImage refined;
+  const int passes = n > 1 ? 2 : 1;
+  auto is_edge = [&](int x, int y) {
+    const Xyz a = image.at(x, y);
+    const uint32_t mesh = centre_mesh[static_cast<size_t>(y) * width + x];
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx, ny = y + dy;
+        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+        if (centre_mesh[static_cast<size_t>(ny) * width + nx] != mesh) return true;
+        const Xyz b = image.at(nx, ny);
+        for (auto [p, q] : {std::pair{a.x, b.x}, std::pair{a.y, b.y}, std::pair{a.z, b.z}})
+          if (std::abs(p - q) > kEdgeContrast * std::max(std::abs(p), std::abs(q))) return true;
+      }
+    return false;
+  };
+  auto render_tile = [&](int tile, int pass) {
     const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
     const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
     uint64_t rays = 0;
     for (int y = y0; y < y1; ++y) {
       for (int x = x0; x < x1; ++x) {
-        // A regular n × n grid of samples inside the pixel, averaged with equal weights.
-        Spectrum sum;
-        PixelBetween pixel_between;
-        for (int sy = 0; sy < n; ++sy)
-          for (int sx = 0; sx < n; ++sx) sum += sample(x + (sx + 0.5) / n, y + (sy + 0.5) / n, rays, pixel_between);
-        image.set(x, y, xyz_from_spectrum(sum * static_cast<float>(1.0 / (n * n))));
+        uint32_t mesh = 0;
+        if (pass == 0) {
+          image.set(x, y, pixel_value(x, y, passes == 1 ? n : 1, rays, mesh));
+          centre_mesh[static_cast<size_t>(y) * width + x] = mesh;
+        } else if (is_edge(x, y)) {
+          refined.set(x, y, pixel_value(x, y, n, rays, mesh));
+        }
       }
     }
     rays_traced_.fetch_add(rays, std::memory_order_relaxed);
     if (options.on_progress) {
       std::lock_guard lock(progress_mutex);
-      options.on_progress(++tiles_done, tile_count);
+      options.on_progress(++tiles_done, passes * tile_count);
     }
   };
 
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
-      for (int tile = range.begin(); tile != range.end(); ++tile) render_tile(tile);
+  for (int pass = 0; pass < passes; ++pass) {
+    if (pass == 1) refined = image;  // the second pass reads the first's image and writes here
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
+        for (int tile = range.begin(); tile != range.end(); ++tile) render_tile(tile, pass);
+      });
     });
-  });
+  }
+  if (passes == 2) image = std::move(refined);
   if (lamps_) add_seen_lamps(image, camera);
   return image;
 }
