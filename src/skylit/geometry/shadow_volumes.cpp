@@ -30,6 +30,8 @@ constexpr size_t kLeafSize = 4;
 constexpr size_t kMaxLeafSize = 16;
 constexpr int kMaxDepth = 60;  // the query's stack has room for kMaxDepth + 2 entries
 constexpr int kBins = 16;
+// A point light's frusta are tested in groups of at most this many, each behind a cone.
+constexpr size_t kFrustaPerGroup = 8;
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
@@ -76,6 +78,14 @@ struct ShadowVolumes::Data {
   std::vector<Prism> prisms;  // in BVH leaf order; for a point light, frusta in mesh order
   std::vector<BvhNode> nodes;  // empty for a point light
   bool point_light = false;
+  // A point light's frusta in groups, each inside a cone from the light.
+  struct Group {
+    Vec3 axis;          // unit, from the light toward the group's bounding sphere
+    double sin_half;    // of the cone's half-angle; ≥ 1: the light is inside the sphere
+    uint32_t begin, end;  // frusta [begin, end)
+  };
+  std::vector<Group> groups;
+  Vec3 light;
 };
 
 namespace {
@@ -451,11 +461,29 @@ std::unique_ptr<const ShadowVolumes::Data> ShadowVolumes::build_point(const std:
   data->point_light = true;
   data->w = {0, 0, 1};
   data->scale = std::max(1.0, max_abs(light));
+  data->light = light;
   for (size_t id = 0; id < meshes.size(); ++id) {
     const TriangleMesh& mesh = checked_mesh(meshes, id);
     if (mesh.triangles.empty()) continue;
     // A closed surface is left through triangles facing the light, as for the sun.
     const int keep = casting_side(mesh);
+    std::vector<Vec3> corners;  // of the group being filled
+    auto close_group = [&] {
+      const uint32_t begin = data->groups.empty() ? 0 : data->groups.back().end;
+      const uint32_t end = static_cast<uint32_t>(data->prisms.size());
+      if (end == begin) return;
+      Vec3 centre{0, 0, 0};
+      for (const Vec3& c : corners) centre += c;
+      centre = centre / static_cast<double>(corners.size());
+      double radius = 0;
+      for (const Vec3& c : corners) radius = std::max(radius, length(c - centre));
+      const double distance = length(centre - light);
+      // Padded so that rounding never drops a frustum the exact clip would keep.
+      radius = radius * (1 + 1e-9) + kRelativeBoxPadding * data->scale;
+      data->groups.push_back({distance > radius ? (centre - light) / distance : Vec3{0, 0, 1},
+                              distance > radius ? radius / distance : 2.0, begin, end});
+      corners.clear();
+    };
     for (const auto& t : mesh.triangles) {
       const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
       if (keep != 0 && !(keep * dot(cross(q - p, r - p), light - p) > 0)) continue;
@@ -463,8 +491,11 @@ std::unique_ptr<const ShadowVolumes::Data> ShadowVolumes::build_point(const std:
       Prism frustum;
       if (!make_frustum(p, q, r, light, frustum)) continue;
       data->prisms.push_back(frustum);
+      corners.insert(corners.end(), {p, q, r});
       data->scale = std::max({data->scale, max_abs(p), max_abs(q), max_abs(r)});
+      if (corners.size() >= 3 * kFrustaPerGroup) close_group();
     }
+    close_group();
   }
   return data;
 }
@@ -571,9 +602,17 @@ void ShadowVolumes::sunlit_intervals(const Ray& ray, double t_min, double t_max,
 
   // Shadow: every volume's interval, collected in `out` and then turned into light.
   if (d.point_light) {
-    for (const Prism& frustum : d.prisms) {
-      double lo = t_min, hi = t_max;
-      if (clip(frustum, o, dir, lo, hi)) out.push_back({lo, hi});
+    // The view ray and the light span a plane; a group's cone that the plane misses
+    // (its axis further than the cone's half-angle from the plane) holds no frustum the
+    // ray can meet.
+    const Vec3 normal = cross(o - d.light, dir);
+    const double normal_length = length(normal);
+    for (const ShadowVolumes::Data::Group& g : d.groups) {
+      if (g.sin_half < 1 && normal_length > 0 && std::abs(dot(g.axis, normal)) > g.sin_half * normal_length) continue;
+      for (uint32_t i = g.begin; i < g.end; ++i) {
+        double lo = t_min, hi = t_max;
+        if (clip(d.prisms[i], o, dir, lo, hi)) out.push_back({lo, hi});
+      }
     }
   } else {
     collect_prism_shadows(d.u, d.v, d.w, d.nodes, d.prisms, o, dir, t_min, t_max, out);

@@ -28,8 +28,13 @@ constexpr std::array<double, 4> kWeights{0.3478548451374538, 0.6521451548625461,
 
 }  // namespace
 
-LampInScatter::LampInScatter(const FogLayer& layer, const Luminaire& lamp, const Spectrum& spectrum_per_candela)
-    : layer_(layer), lamp_(lamp), spectrum_(spectrum_per_candela) {
+LampInScatter::LampInScatter(const FogLayer& layer, const Luminaire& lamp, const Spectrum& spectrum_per_candela,
+                             const IntensityMap* map)
+    : layer_(layer),
+      lamp_(lamp),
+      own_map_(map ? nullptr : std::make_unique<IntensityMap>(lamp)),
+      map_(map ? map : own_map_.get()),
+      spectrum_(spectrum_per_candela) {
   const auto& sigma = layer.unit_density_extinction_bins();
   grey_ = true;
   for (int k = 0; k < kSpectralBins; ++k) {
@@ -124,7 +129,7 @@ void LampInScatter::integrate(const Ray& ray, const RayInLayer& in, double s0, d
       const double s = s0 - h / std::tan(theta);
       if (!(s >= in.lo && s <= in.hi)) continue;  // outside the layer: no fog
       const Vec3 p = o + s * d;
-      const double intensity = lamp_.intensity(p - lamp);
+      const double intensity = map_->candela(p - lamp);
       if (!(intensity > 0)) continue;
       // Along the view ray inside the layer ρ falls as e^(−η z_v (s − s_in)): one
       // exponential gives the density here and the column back to where the ray

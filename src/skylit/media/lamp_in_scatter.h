@@ -23,10 +23,12 @@
 // measured accuracy.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/shadow_volumes.h"
+#include "skylit/lights/intensity_map.h"
 #include "skylit/lights/luminaire.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/spectrum/spectrum.h"
@@ -40,8 +42,11 @@ inline constexpr double kLampSourceRadiusM = 0.05;
 
 class LampInScatter {
  public:
-  // The lamp and its spectrum per candela (lights/lamp_spectrum.h), in `layer`.
-  LampInScatter(const FogLayer& layer, const Luminaire& lamp, const Spectrum& spectrum_per_candela);
+  // The lamp and its spectrum per candela (lights/lamp_spectrum.h), in `layer`; the
+  // intensity is looked up in `map` (built here if none is given), which must be the
+  // lamp's and outlive this object.
+  LampInScatter(const FogLayer& layer, const Luminaire& lamp, const Spectrum& spectrum_per_candela,
+                const IntensityMap* map = nullptr);
 
   // W m⁻² sr⁻¹ nm⁻¹ scattered toward the ray's origin over the lit parts of the ray
   // (`lit`: parameter intervals along the unit direction, sorted, within the ray).
@@ -64,6 +69,8 @@ class LampInScatter {
 
   const FogLayer& layer_;
   const Luminaire& lamp_;
+  std::unique_ptr<IntensityMap> own_map_;
+  const IntensityMap* map_;
   Spectrum spectrum_;
   Spectrum sigma_;  // the fog's extinction at unit density in each bin
   bool grey_;       // σ the same in every bin: one exponential per node

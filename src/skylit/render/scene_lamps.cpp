@@ -10,11 +10,11 @@ SceneLamps::SceneLamps(const std::vector<SceneLight>& lights, const RayTracer& t
                        const std::vector<const TriangleMesh*>& meshes, const FogLayer* fog)
     : tracer_(tracer), fog_(fog) {
   for (const SceneLight& light : lights) {
-    Lamp lamp{&light, nullptr, nullptr};
+    Lamp lamp{&light, std::make_unique<IntensityMap>(light.luminaire), nullptr, nullptr};
     if (fog) {
       lamp.volumes = std::make_unique<ShadowVolumes>(ShadowVolumes::for_point_light(
           meshes, light.luminaire.position(), light.luminaire.aim(), light.luminaire.distribution().max_gamma_deg()));
-      lamp.glow = std::make_unique<LampInScatter>(*fog, light.luminaire, light.spectrum_per_candela);
+      lamp.glow = std::make_unique<LampInScatter>(*fog, light.luminaire, light.spectrum_per_candela, lamp.map.get());
     }
     lamps_.push_back(std::move(lamp));
   }
@@ -49,7 +49,7 @@ Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& materi
     const Vec3 l = to_lamp / distance;
     const double cos_in = dot(point.normal, l);
     if (!(cos_in > 0)) continue;
-    const double candela = luminaire.intensity(-to_lamp);
+    const double candela = lamps_[i].map->candela(-to_lamp);
     if (!(candela > 0)) continue;
     ++rays;
     if (tracer_.occluded(Ray{origin, l, 0.0, length(luminaire.position() - origin) * (1 - 1e-6)})) continue;

@@ -16,6 +16,7 @@
 
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/shadow_volumes.h"
+#include "skylit/lights/intensity_map.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/lamp_in_scatter.h"
 #include "skylit/render/scene.h"
@@ -49,6 +50,7 @@ class SceneLamps {
  private:
   struct Lamp {
     const SceneLight* light;
+    std::unique_ptr<IntensityMap> map;  // the luminaire's intensity, for fast look-ups
     std::unique_ptr<ShadowVolumes> volumes;  // with fog only
     std::unique_ptr<LampInScatter> glow;      // with fog only
   };
