@@ -17,13 +17,14 @@ namespace {
 
 // The coarsest blocks: 8 pixels on a side (9 × 9 centres).
 constexpr int kBlock = 8;
-// Two view hits count as the same surface seen alike when they are on one object and
-// their distances differ by at most this fraction.
+// The glow depends only on a view ray's direction and length: two view hits count as
+// alike when both are sky or their distances differ by at most this fraction, on one
+// object or on two that meet (a wall and the road).
 constexpr double kDistanceTolerance = 0.02;
 
-bool same_surface(const ViewHit& a, const ViewHit& b, double distance) {
-  if (a.mesh != b.mesh) return false;
-  if (a.mesh == ViewHit::kSky) return true;
+bool alike(const ViewHit& a, double distance) {
+  const bool sky = a.mesh == ViewHit::kSky, other_sky = !std::isfinite(distance);
+  if (sky || other_sky) return sky && other_sky;
   return std::abs(a.distance - distance) <= kDistanceTolerance * distance;
 }
 
@@ -97,17 +98,20 @@ void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
     const int mx = (x0 + x1) / 2, my = (y0 + y1) / 2;
     bool accept = interpolates(c, value(mx, my), x1 > x0 ? double(mx - x0) / (x1 - x0) : 0,
                                y1 > y0 ? double(my - y0) / (y1 - y0) : 0);
-    // Every centre in the block on the corners' object, at the distance the corners'
-    // distances interpolate to (or all of them sky).
+    // Every centre in the block at the distance the corners' distances interpolate to
+    // (or all of them sky).
+    const bool sky = h00.mesh == ViewHit::kSky;
     for (int y = y0; accept && y <= y1; ++y)
       for (int x = x0; accept && x <= x1; ++x) {
         const ViewHit& h = centre(x, y).hit;
-        if (h.mesh != h00.mesh) accept = false;
-        if (!accept || h.mesh == ViewHit::kSky) continue;
+        if (sky || h.mesh == ViewHit::kSky) {
+          accept = sky && h.mesh == ViewHit::kSky;
+          continue;
+        }
         const double u = x1 > x0 ? double(x - x0) / (x1 - x0) : 0, v = y1 > y0 ? double(y - y0) / (y1 - y0) : 0;
         const double d = (1 - v) * ((1 - u) * h00.distance + u * centre(x1, y0).hit.distance) +
                          v * ((1 - u) * centre(x0, y1).hit.distance + u * centre(x1, y1).hit.distance);
-        accept = std::abs(h.distance - d) <= kDistanceTolerance * h.distance;
+        accept = std::isfinite(d) && std::abs(h.distance - d) <= kDistanceTolerance * h.distance;
       }
     if (accept) {
       for (int y = y0; y <= y1; ++y)
@@ -138,8 +142,8 @@ void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
 }
 
 Xyz LampGlowImage::at(double x, double y, const Ray& ray, const ViewHit& hit) const {
-  // The four pixel centres around the sample, bilinear weights, only those that see
-  // what the sample sees.
+  // The four pixel centres around the sample, bilinear weights, only those whose view
+  // ray is as long as the sample's.
   const double cx = std::clamp(x - 0.5, 0.0, width_ - 1.0), cy = std::clamp(y - 0.5, 0.0, height_ - 1.0);
   const int x0 = std::min(static_cast<int>(cx), width_ - 1), y0 = std::min(static_cast<int>(cy), height_ - 1);
   const int x1 = std::min(x0 + 1, width_ - 1), y1 = std::min(y0 + 1, height_ - 1);
@@ -147,7 +151,7 @@ Xyz LampGlowImage::at(double x, double y, const Ray& ray, const ViewHit& hit) co
   double weight = 0, sum[3] = {0, 0, 0};
   auto take = [&](int px, int py, double w) {
     const Centre& c = centre(px, py);
-    if (!same_surface(c.hit, hit, hit.distance)) return;
+    if (!alike(c.hit, hit.distance)) return;
     w += 1e-6;  // a sample exactly on a centre still counts its neighbours' side
     weight += w;
     for (int k = 0; k < 3; ++k) sum[k] += w * c.xyz[k];

@@ -1,13 +1,15 @@
 // The lamps' glow in fog over the whole image, found without evaluating it at every
 // sample. The glow (render/scene_lamps.h) costs a shadow-volume query and an integral
-// per lamp and view ray; it varies smoothly across the image except at the edges of
-// objects, of beams and of shadows. So it is computed at pixel centres by a quadtree:
-// the centres of 8-pixel blocks first; a block whose centres all see the same object
-// at distances its corners interpolate, and whose middle's glow its corners predict
-// within kGlowTolerance, is filled by bilinear interpolation; any other block is split
-// in four, down to single pixels, where every centre is evaluated exactly. A sample then takes the glow interpolated from the
-// pixel centres around it that see what it sees (the same object at a similar
-// distance), so edges stay antialiased; with none, it evaluates the glow itself.
+// per lamp and view ray. It depends only on a view ray's direction and length, so it
+// varies smoothly across the image except where the length jumps (an object in front
+// of another) and at the edges of beams and shadows. So it is computed at pixel
+// centres by a quadtree: the centres of 8-pixel blocks first; a block whose centres'
+// distances its corners interpolate (within 2 %), and whose middle's glow its corners
+// predict within kGlowTolerance, is filled by bilinear interpolation; any other block
+// is split in four, down to single pixels, where every centre is evaluated exactly. A
+// sample then takes the glow interpolated from the pixel centres around it whose view
+// rays are as long as its own, so edges stay antialiased; with none, it evaluates the
+// glow itself.
 //
 // Limits (docs/lights.md): a shadow or beam narrower than a block's spacing that lies
 // wholly between its corners is not seen; the glow is added after the air's extinction
