@@ -48,7 +48,11 @@
 // Speed. prepare_sun(to_sun) tabulates t' on a kSunGridU × kSunGridV × kSunGridZ grid of
 // nodes over the bounding volume in the cloud's frame (u, v, z − z_mid); scatter() with
 // the same sun direction then interpolates it trilinearly instead of marching toward the
-// sun at every step (docs/clouds.md gives the measured error and speed-up).
+// sun at every step (docs/clouds.md gives the measured error and speed-up). The march
+// itself (view rays, shadows, the grid's build) skips the evaluation of T wherever a
+// bound on the margin g = T/2 − |z − z_mid| over a run of its steps (margin_bounds)
+// proves that g keeps its sign there: its steps are those of the plain fixed-step march
+// and the stretches it finds inside are the same, it only evaluates T less often.
 #pragma once
 
 #include <type_traits>
@@ -164,11 +168,24 @@ class Cloud {
   Spectrum radiance(const Vec3& o, const Vec3& d, double t_min, double t_max, const Spectrum& behind,
                     const CloudLighting& light) const;
 
+  // Bounds lo ≤ g(t) ≤ hi on the margin g = T/2 − |z − z_mid| (≥ 0 inside) at every
+  // point o + t·d with t in [t0, t1], from samples at the two ends (up to rounding; d need not be
+  // unit). Rigorous, not an estimate: the envelope (1 − r²)^p is non-decreasing in 1 − r²,
+  // an exact quadratic along the ray (so the unbounded slope of p < 1 at the rim does not
+  // matter); each texture factor moves no faster than its table's largest slope and,
+  // where its sine sum is never clipped at 0, stays within |f''|·length²/8 of its chord;
+  // z is linear (cloud.cpp, margin_bound). The march uses them to skip runs of steps
+  // where g cannot change sign.
+  void margin_bounds(const Vec3& o, const Vec3& d, double t0, double t1, double& lo, double& hi) const;
+
   // Calls inside(s0, s1) for each stretch of [t0, t1] (already clipped) found inside the
   // solid (the inside part of each step of the march, docs/clouds.md), in order;
-  // resolution scales the number of steps.
+  // resolution scales the number of steps. every_step evaluates T at every step's end
+  // instead of skipping where margin_bounds proves the sign of g: the same stretches,
+  // slower (for tests of the skipping).
   template <typename F>
-  void for_each_inside(const Vec3& o, const Vec3& d, double t0, double t1, double resolution, F&& inside) const;
+  void for_each_inside(const Vec3& o, const Vec3& d, double t0, double t1, double resolution, F&& inside,
+                       bool every_step = false) const;
 
  private:
   double texture(double w, const std::vector<CloudWave>& waves, double norm) const;
@@ -176,17 +193,47 @@ class Cloud {
   // the time of every march): kTextureSamples + 1 values over [−a, a] and [−b, b].
   static constexpr int kTextureSamples = 2048;
   static double table_lookup(const std::vector<double>& table, double w, double half_width);
+  // (1 − r²)^p as a function of q = 1 − r²: 0 for q ≤ 0, non-decreasing in q.
+  double envelope(double q) const;
   double local_thickness(double u, double v) const;
-  // g = T/2 − |z − z_mid| at o + t·d: ≥ 0 inside.
-  double inside_margin(const Vec3& o, const Vec3& d, double t) const;
+  // The margin g = T/2 − |z − z_mid| at o + t·d (≥ 0 inside), with the two texture
+  // factors f_u, f_v there (the march bounds g near t from them).
+  struct MarginSample {
+    double g, fu, fv;
+  };
+  MarginSample margin_sample(const Vec3& o, const Vec3& d, double t) const;
+  // A ray in the cloud's frame, for margin_bound: u(t)/a = u0 + du·t, v(t)/b likewise,
+  // z(t) − z_mid = w0 + dw·t; bounds on |df_u/dt|, |df_v/dt| along it, and on f_u's
+  // deviation from its chord over a stretch of length s (bend_u·s² + bend0_u; infinite
+  // where the texture has no curvature bound), f_v likewise; the margins for the
+  // rounding of g and q in samples up to t_far.
+  struct RayFrame {
+    double u0, v0, du, dv, inv_speed2, w0, dw;
+    double slope_u, slope_v, bend_u, bend0_u, bend_v, bend0_v;
+    double eps, q_slack;
+  };
+  RayFrame ray_frame(const Vec3& o, const Vec3& d, double t_far) const;
+  // The upper (or lower) bound of margin_bounds over [ta, tb] from the samples at both ends.
+  double margin_bound(const RayFrame& r, double ta, const MarginSample& a, double tb, const MarginSample& b,
+                      bool upper) const;
+  // One part of a march (march, cloud.cpp), and a run of its steps from end i to end j,
+  // both sampled.
+  struct MarchPart;
+  void march_span(const MarchPart& m, int i, const MarginSample& si, int j, const MarginSample& sj) const;
   int step_count(const Vec3& d, double length, double resolution) const;
-  void march(const Vec3& o, const Vec3& d, double t0, double t1, double resolution,
-             void (*sink)(void*, double, double), void* ctx) const;
+  // The sink gets the inside part of each step, in order; with whole_runs, a run of steps
+  // proven inside comes as one stretch (for sums of lengths). every_step: no skipping.
+  void march(const Vec3& o, const Vec3& d, double t0, double t1, double resolution, bool whole_runs,
+             bool every_step, void (*sink)(void*, double, double), void* ctx) const;
 
   CloudShape shape_;
   double cos_r_ = 1, sin_r_ = 0;
   double norm_u_ = 1, norm_v_ = 1;
   std::vector<double> texture_u_, texture_v_;
+  // Largest |slope| of the tabulated (piecewise-linear) textures, per metre along u, v.
+  double texture_slope_u_ = 0, texture_slope_v_ = 0;
+  // Bounds on |f''| of the textures' sine sums (infinite where max(0, ·) may clip them).
+  double texture_curvature_u_ = 0, texture_curvature_v_ = 0;
   double horizontal_scale_ = 0;  // step length wanted along the horizontal, m
   double extent_x_ = 0, extent_y_ = 0;
   bool empty_ = true;
@@ -197,8 +244,8 @@ class Cloud {
 
 template <typename F>
 void Cloud::for_each_inside(const Vec3& o, const Vec3& d, double t0, double t1, double resolution,
-                            F&& inside) const {
-  march(o, d, t0, t1, resolution,
+                            F&& inside, bool every_step) const {
+  march(o, d, t0, t1, resolution, false, every_step,
         [](void* ctx, double s0, double s1) { (*static_cast<std::remove_reference_t<F>*>(ctx))(s0, s1); },
         const_cast<void*>(static_cast<const void*>(&inside)));
 }
