@@ -94,6 +94,12 @@ void BM_Fig10Frame(benchmark::State& state) {
 }
 BENCHMARK(BM_Fig10Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The paper's Fig. 9: a street at night in light fog, eleven lamps, at 1280×720.
+void BM_Fig9Frame(benchmark::State& state) {
+  frames_of(state, skylit::load_scene(std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" / "fig9.json"));
+}
+BENCHMARK(BM_Fig9Frame)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 }  // namespace
 
 BENCHMARK_MAIN();

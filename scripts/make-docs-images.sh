@@ -24,6 +24,8 @@ mv "$out/fig7/fig7.png" "$out/fig7.png"
 for figure in fig8a fig8b fig8c fig8d; do
   $skylit render "examples/$figure.json" --quiet --set render.width=960 --set render.height=540 -o "$out/$figure.png"
 done
+# The paper's Fig. 9: a street at night, lamps and headlights in light fog.
+$skylit render examples/fig9.json --quiet --set render.width=960 --set render.height=540 -o "$out/fig9.png"
 # The paper's Fig. 10: clouds with the sun in front of and behind the camera.
 for figure in fig10a fig10b; do
   $skylit render "examples/$figure.json" --quiet --set render.width=960 --set render.height=540 -o "$out/$figure.png"
