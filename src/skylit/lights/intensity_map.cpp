@@ -15,7 +15,7 @@ IntensityMap::IntensityMap(const Luminaire& luminaire, int resolution)
       constant_(luminaire.distribution().kind() == IntensityDistribution::Kind::kIsotropic),
       constant_value_(luminaire.intensity(luminaire.aim())) {
   if (constant_) return;
-  texels_.resize(static_cast<size_t>(n_) * n_);
+  std::vector<double> exact(static_cast<size_t>(n_) * n_, 0.0);
   // Beyond the distribution's widest angle the intensity is 0: no need to look it up.
   const double cos_beyond = std::cos(std::min(180.0, luminaire.distribution().max_gamma_deg() + 1.0) * kPi / 180);
   tbb::parallel_for(0, n_, [&](int j) {
@@ -29,9 +29,14 @@ IntensityMap::IntensityMap(const Luminaire& luminaire, int resolution)
       }
       if (z / std::sqrt(x * x + y * y + z * z) < cos_beyond) continue;
       const Vec3 direction = x * c0_ + y * c90_ + z * nadir_;
-      texels_[static_cast<size_t>(j) * n_ + i] = static_cast<float>(luminaire.intensity(direction));
+      exact[static_cast<size_t>(j) * n_ + i] = luminaire.intensity(direction);
     }
   });
+  const double peak = *std::max_element(exact.begin(), exact.end());
+  scale_ = peak > 0 ? peak / 65535.0 : 0.0;
+  texels_.resize(exact.size());
+  for (size_t k = 0; k < exact.size(); ++k)
+    texels_[k] = static_cast<uint16_t>(scale_ > 0 ? std::lround(exact[k] / scale_) : 0);
 }
 
 void IntensityMap::position(double x, double y, double z, double& u, double& v) const {
@@ -55,10 +60,10 @@ double IntensityMap::candela(const Vec3& d) const {
   v = std::clamp(v, 0.0, n_ - 1.0);
   const int i = std::min(static_cast<int>(u), n_ - 2), j = std::min(static_cast<int>(v), n_ - 2);
   const double fu = u - i, fv = v - j;
-  const float* row = texels_.data() + static_cast<size_t>(j) * n_ + i;
+  const uint16_t* row = texels_.data() + static_cast<size_t>(j) * n_ + i;
   const double top = row[0] + fu * (row[1] - row[0]);
   const double bottom = row[n_] + fu * (row[n_ + 1] - row[n_]);
-  return top + fv * (bottom - top);
+  return scale_ * (top + fv * (bottom - top));
 }
 
 }  // namespace skylit

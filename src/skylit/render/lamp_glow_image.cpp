@@ -15,8 +15,9 @@ namespace skylit {
 
 namespace {
 
-// The coarsest blocks: 8 pixels on a side (9 × 9 centres).
-constexpr int kBlock = 8;
+// The coarsest blocks: 16 pixels on a side (17 × 17 centres).
+constexpr int kBlock = 16;
+constexpr int kSideCheck = 4;
 // The glow depends only on a view ray's direction and length: two view hits count as
 // alike when both are sky or their distances differ by at most this fraction, on one
 // object or on two that meet (a wall and the road).
@@ -96,8 +97,14 @@ void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
     const std::array<Xyz, 4> c{value(x0, y0), value(x1, y0), value(x0, y1), value(x1, y1)};
     const ViewHit& h00 = centre(x0, y0).hit;
     const int mx = (x0 + x1) / 2, my = (y0 + y1) / 2;
-    bool accept = interpolates(c, value(mx, my), x1 > x0 ? double(mx - x0) / (x1 - x0) : 0,
-                               y1 > y0 ? double(my - y0) / (y1 - y0) : 0);
+    // The corners must predict the middle, and on blocks of kSideCheck pixels or more
+    // also the middles of the four sides (which a split would need anyway), so that a
+    // feature between the middle and a corner is not missed.
+    const double um = x1 > x0 ? double(mx - x0) / (x1 - x0) : 0, vm = y1 > y0 ? double(my - y0) / (y1 - y0) : 0;
+    bool accept = interpolates(c, value(mx, my), um, vm);
+    if (accept && std::max(x1 - x0, y1 - y0) >= kSideCheck)
+      accept = interpolates(c, value(mx, y0), um, 0) && interpolates(c, value(mx, y1), um, 1) &&
+               interpolates(c, value(x0, my), 0, vm) && interpolates(c, value(x1, my), 1, vm);
     // Every centre in the block at the distance the corners' distances interpolate to
     // (or all of them sky).
     const bool sky = h00.mesh == ViewHit::kSky;

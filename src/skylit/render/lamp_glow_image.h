@@ -3,16 +3,19 @@
 // per lamp and view ray. It depends only on a view ray's direction and length, so it
 // varies smoothly across the image except where the length jumps (an object in front
 // of another) and at the edges of beams and shadows. So it is computed at pixel
-// centres by a quadtree: the centres of 8-pixel blocks first; a block whose centres'
-// distances its corners interpolate (within 2 %), and whose middle's glow its corners
-// predict within kGlowTolerance, is filled by bilinear interpolation; any other block
+// centres by a quadtree: the centres of 16-pixel blocks first; a block whose centres'
+// distances its corners interpolate (within 2 %), and whose middle's glow (and on
+// blocks of 4 pixels or more its sides' middles') its corners predict within
+// kGlowTolerance, is filled by bilinear interpolation; any other block
 // is split in four, down to single pixels, where every centre is evaluated exactly. A
 // sample then takes the glow interpolated from the pixel centres around it whose view
 // rays are as long as its own, so edges stay antialiased; with none, it evaluates the
 // glow itself.
 //
-// Limits (docs/lights.md): a shadow or beam narrower than a block's spacing that lies
-// wholly between its corners is not seen; the glow is added after the air's extinction
+// Measured against the exact glow at every centre of the Fig. 9 frame: within 0.6 %
+// for 99 % of pixels, 1.5 % at worst, from a tenth as many evaluations as pixels
+// (tests/render/lamp_glow_image_test.cpp). Limits (docs/lights.md): a shadow or beam
+// narrower than the checked points' spacing can slip between them; the glow is added after the air's extinction
 // on the way, which over a street's length is under 1 %.
 #pragma once
 
