@@ -31,7 +31,7 @@ TEST(LampGlowImage, PixelCentresMatchExactGlow) {
   const SceneLamps lamps(scene.lights, tracer, meshes, &layer);
   const int width = 480, height = 270;
   const PinholeCamera camera(scene.camera, width, height);
-  const LampGlowImage glow(camera, width, height, tracer, lamps);
+  const LampGlowImage glow(camera, width, height, LampGlowImage::trace_centres(camera, width, height, tracer), lamps);
   std::vector<double> errors;
   for (int y = 0; y < height; ++y)
     for (int x = y % 3; x < width; x += 3) {

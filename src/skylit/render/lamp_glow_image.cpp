@@ -42,16 +42,23 @@ bool interpolates(const std::array<Xyz, 4>& c, const Xyz& middle, double u, doub
 
 }  // namespace
 
-LampGlowImage::LampGlowImage(const PinholeCamera& camera, int width, int height, const RayTracer& tracer,
-                             const SceneLamps& lamps)
-    : camera_(camera), lamps_(lamps), width_(width), height_(height), centres_(static_cast<size_t>(width) * height) {
+std::vector<ViewHit> LampGlowImage::trace_centres(const PinholeCamera& camera, int width, int height,
+                                                  const RayTracer& tracer) {
+  std::vector<ViewHit> hits(static_cast<size_t>(width) * height);
   tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y)
       for (int x = 0; x < width; ++x) {
         const std::optional<Hit> hit = tracer.intersect(camera.ray_through(x + 0.5, y + 0.5));
-        if (hit) centre(x, y).hit = {hit->mesh_id, hit->t};
+        if (hit) hits[static_cast<size_t>(y) * width + x] = {hit->mesh_id, hit->t};
       }
   });
+  return hits;
+}
+
+LampGlowImage::LampGlowImage(const PinholeCamera& camera, int width, int height,
+                             const std::vector<ViewHit>& centre_hits, const SceneLamps& lamps)
+    : camera_(camera), lamps_(lamps), width_(width), height_(height), centres_(static_cast<size_t>(width) * height) {
+  for (size_t i = 0; i < centres_.size(); ++i) centres_[i].hit = centre_hits.at(i);
   const int blocks_x = (width + kBlock - 1) / kBlock, blocks_y = (height + kBlock - 1) / kBlock;
   std::atomic<uint64_t> evaluations{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, blocks_x * blocks_y), [&](const tbb::blocked_range<int>& range) {

@@ -6,17 +6,16 @@
 // centres by a quadtree: the centres of 16-pixel blocks first; a block whose centres'
 // distances its corners interpolate (within 2 %), and whose middle's glow (and on
 // blocks of 4 pixels or more its sides' middles') its corners predict within
-// kGlowTolerance, is filled by bilinear interpolation; any other block
-// is split in four, down to single pixels, where every centre is evaluated exactly. A
-// sample then takes the glow interpolated from the pixel centres around it whose view
-// rays are as long as its own, so edges stay antialiased; with none, it evaluates the
-// glow itself.
+// kGlowTolerance, is filled by bilinear interpolation; any other block is split in
+// four, down to single pixels, where every centre is evaluated exactly. A sample then
+// takes the glow interpolated from the pixel centres around it whose view rays are as
+// long as its own, so edges stay antialiased; with none, it evaluates the glow itself.
 //
 // Measured against the exact glow at every centre of the Fig. 9 frame: within 0.6 %
 // for 99 % of pixels, 1.5 % at worst, from a tenth as many evaluations as pixels
 // (tests/render/lamp_glow_image_test.cpp). Limits (docs/lights.md): a shadow or beam
-// narrower than the checked points' spacing can slip between them; the glow is added after the air's extinction
-// on the way, which over a street's length is under 1 %.
+// narrower than the checked points' spacing can slip between them; the glow is added
+// after the air's extinction on the way, which over a street's length is under 1 %.
 #pragma once
 
 #include <cstdint>
@@ -43,8 +42,19 @@ inline constexpr double kGlowTolerance = 0.01;
 
 class LampGlowImage {
  public:
-  // Runs the quadtree over the image (in the calling TBB arena, in parallel).
-  LampGlowImage(const PinholeCamera& camera, int width, int height, const RayTracer& tracer, const SceneLamps& lamps);
+  // Runs the quadtree over the image (in the calling TBB arena, in parallel), given what
+  // the ray through each pixel's centre meets (width × height, row by row from the top).
+  LampGlowImage(const PinholeCamera& camera, int width, int height, const std::vector<ViewHit>& centre_hits,
+                const SceneLamps& lamps);
+  // What the rays through the pixel centres meet.
+  static std::vector<ViewHit> trace_centres(const PinholeCamera& camera, int width, int height,
+                                            const RayTracer& tracer);
+
+  // Absolute XYZ of the glow at a pixel's centre.
+  Xyz centre_glow(int x, int y) const {
+    const Centre& c = centre(x, y);
+    return {c.xyz[0], c.xyz[1], c.xyz[2]};
+  }
 
   // Absolute XYZ of the glow for a sample at image position (x, y) whose ray met `hit`.
   Xyz at(double x, double y, const Ray& ray, const ViewHit& hit) const;

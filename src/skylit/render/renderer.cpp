@@ -234,16 +234,16 @@ XyzImage Renderer::render(const RenderOptions& options) const {
     if (!same) pixel = {true, distance, between(ray, distance)};
     return pixel.between;
   };
-  // The lamps' glow in fog, from pixel centres (lamp_glow_image.h).
+  // The lamps' glow in fog, from pixel centres (lamp_glow_image.h); made after the
+  // first pass, from the centres' view hits, and used by the second.
   std::unique_ptr<LampGlowImage> glow;
-  if (lamps_ && fog_) arena.execute([&] { glow = std::make_unique<LampGlowImage>(camera, width, height, tracer_, *lamps_); });
-  auto sample = [&](double x, double y, uint64_t& rays, PixelBetween& pixel_between, Xyz& glow_sum, uint32_t& mesh) {
+  auto sample = [&](double x, double y, uint64_t& rays, PixelBetween& pixel_between, Xyz& glow_sum, ViewHit& met) {
     const Ray ray = camera.ray_through(x, y);
     ++rays;
     const std::optional<Hit> hit = tracer_.intersect(ray);
-    mesh = hit ? hit->mesh_id : ViewHit::kSky;
+    met = hit ? ViewHit{hit->mesh_id, hit->t} : ViewHit{};
     if (glow) {
-      const Xyz g = glow->at(x, y, ray, hit ? ViewHit{hit->mesh_id, hit->t} : ViewHit{});
+      const Xyz g = glow->at(x, y, ray, met);
       glow_sum = {glow_sum.x + g.x, glow_sum.y + g.y, glow_sum.z + g.z};
     }
     if (!hit)
@@ -256,14 +256,14 @@ XyzImage Renderer::render(const RenderOptions& options) const {
   };
 
   // A pixel's value from a regular grid × grid of samples inside it, averaged with equal
-  // weights (grid 1: its centre); `mesh` gets what the last sample met.
-  auto pixel_value = [&](int x, int y, int grid, uint64_t& rays, uint32_t& mesh) {
+  // weights (grid 1: its centre); `met` gets what the last sample met.
+  auto pixel_value = [&](int x, int y, int grid, uint64_t& rays, ViewHit& met) {
     Spectrum sum;
     Xyz glow_sum;
     PixelBetween pixel_between;
     for (int sy = 0; sy < grid; ++sy)
       for (int sx = 0; sx < grid; ++sx)
-        sum += sample(x + (sx + 0.5) / grid, y + (sy + 0.5) / grid, rays, pixel_between, glow_sum, mesh);
+        sum += sample(x + (sx + 0.5) / grid, y + (sy + 0.5) / grid, rays, pixel_between, glow_sum, met);
     const double mean = 1.0 / (grid * grid);
     const Xyz pixel = xyz_from_spectrum(sum * static_cast<float>(mean));
     return Xyz{pixel.x + glow_sum.x * mean, pixel.y + glow_sum.y * mean, pixel.z + glow_sum.z * mean};
@@ -274,22 +274,34 @@ XyzImage Renderer::render(const RenderOptions& options) const {
   // centre and a neighbour's met different objects or differ in any of X, Y, Z by more
   // than kEdgeContrast. Elsewhere the image is smooth at the pixel's scale and its
   // centre stands for the grid's mean.
-  std::vector<uint32_t> centre_mesh(static_cast<size_t>(width) * height);
+  std::vector<ViewHit> centre_hit(static_cast<size_t>(width) * height);
   XyzImage refined;
   const int passes = n > 1 ? 2 : 1;
   auto is_edge = [&](int x, int y) {
     const Xyz a = image.at(x, y);
-    const uint32_t mesh = centre_mesh[static_cast<size_t>(y) * width + x];
+    const uint32_t mesh = centre_hit[static_cast<size_t>(y) * width + x].mesh;
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         const int nx = x + dx, ny = y + dy;
         if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-        if (centre_mesh[static_cast<size_t>(ny) * width + nx] != mesh) return true;
+        if (centre_hit[static_cast<size_t>(ny) * width + nx].mesh != mesh) return true;
         const Xyz b = image.at(nx, ny);
         for (auto [p, q] : {std::pair{a.x, b.x}, std::pair{a.y, b.y}, std::pair{a.z, b.z}})
           if (std::abs(p - q) > kEdgeContrast * std::max(std::abs(p), std::abs(q))) return true;
       }
     return false;
+  };
+  // The glow image from the first pass's centre hits; its exact centre values go into
+  // the first pass's pixels (whose one sample is the centre), before the second pass
+  // compares neighbours and refines edges, whose samples interpolate it.
+  auto add_centre_glow = [&] {
+    arena.execute([&] { glow = std::make_unique<LampGlowImage>(camera, width, height, centre_hit, *lamps_); });
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const Xyz p = image.at(x, y), g = glow->centre_glow(x, y);
+        image.set(x, y, {p.x + g.x, p.y + g.y, p.z + g.z});
+      }
+    if (passes == 2) refined = image;
   };
   auto render_tile = [&](int tile, int pass) {
     const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
@@ -297,12 +309,12 @@ XyzImage Renderer::render(const RenderOptions& options) const {
     uint64_t rays = 0;
     for (int y = y0; y < y1; ++y) {
       for (int x = x0; x < x1; ++x) {
-        uint32_t mesh = 0;
+        ViewHit met;
         if (pass == 0) {
-          image.set(x, y, pixel_value(x, y, passes == 1 ? n : 1, rays, mesh));
-          centre_mesh[static_cast<size_t>(y) * width + x] = mesh;
+          image.set(x, y, pixel_value(x, y, passes == 1 ? n : 1, rays, met));
+          centre_hit[static_cast<size_t>(y) * width + x] = met;
         } else if (is_edge(x, y)) {
-          refined.set(x, y, pixel_value(x, y, n, rays, mesh));
+          refined.set(x, y, pixel_value(x, y, n, rays, met));
         }
       }
     }
@@ -315,12 +327,14 @@ XyzImage Renderer::render(const RenderOptions& options) const {
 
   for (int pass = 0; pass < passes; ++pass) {
     if (pass == 1) refined = image;  // the second pass reads the first's image and writes here
+    if (pass == 1 && lamps_ && fog_) add_centre_glow();
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
         for (int tile = range.begin(); tile != range.end(); ++tile) render_tile(tile, pass);
       });
     });
   }
+  if (passes == 1 && lamps_ && fog_) add_centre_glow();
   if (passes == 2) image = std::move(refined);
   if (lamps_) add_seen_lamps(image, camera);
   return image;
