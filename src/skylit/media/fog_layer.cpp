@@ -126,6 +126,14 @@ double FogLayer::log_piece_column(double z_start, double rise, double log_length
 
 double FogLayer::piece_column(double z_start, double rise, double length) const {
   if (!(length > 0.0) || !(rho0_ > 0.0)) return 0.0;
+  // Ordinary pieces directly: ρ(z_start)·length·(e^x − 1)/x with x = ln(ρ_end/ρ_start),
+  // two exponentials; the logarithmic form below keeps extreme ones (huge lengths,
+  // densities or rises) finite.
+  const double x = -eta_ * rise, log_start = log_rho0_ - eta_ * z_start;
+  if (std::abs(x) < 50 && std::abs(log_start) < 500 && length < 1e100) {
+    const double mean = std::abs(x) < 1e-8 ? 1 + 0.5 * x : std::expm1(x) / x;
+    return std::min(std::exp(log_start) * length * mean, kOpaqueColumnM);
+  }
   return std::exp(std::min(log_piece_column(z_start, rise, std::log(length)), kLogOpaque));
 }
 
