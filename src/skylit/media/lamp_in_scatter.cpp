@@ -170,7 +170,7 @@ Spectrum LampInScatter::along(const Ray& ray, const std::vector<Interval>& lit) 
   const RayInLayer in{span.lo, span.hi, layer_.density(z_in), layer_.inverse_scale_height_per_m() * ray.direction.z};
   double grey = 0;
   Spectrum spectral;
-  std::vector<Interval> emitting;
+  thread_local std::vector<Interval> emitting;  // reused: no allocation per ray
   for (const Interval& piece : lit) {
     emitting_intervals(ray, piece.begin, piece.end, emitting);
     for (const Interval& e : emitting) integrate(ray, in, s0, h, angle_at(e.begin), angle_at(e.end), grey, spectral);

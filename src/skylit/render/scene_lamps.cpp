@@ -72,9 +72,12 @@ Spectrum SceneLamps::in_scattered(const Ray& ray, double distance) const {
   if (!fog_) return sum;
   const RaySpan span = fog_->clip(ray.origin.z, ray.direction.z, 0.0, distance);
   if (span.empty()) return sum;
-  std::vector<Interval> lit;
+  thread_local std::vector<Interval> lit, emitting;  // reused: no allocation per ray
   for (const Lamp& lamp : lamps_) {
-    lamp.volumes->sunlit_intervals(ray, span.lo, span.hi, lit);
+    // Shadows only where the lamp shines at all (a headlight's cone is narrow).
+    lamp.glow->emitting_intervals(ray, span.lo, span.hi, emitting);
+    if (emitting.empty()) continue;
+    lamp.volumes->sunlit_intervals(ray, emitting.front().begin, emitting.back().end, lit);
     if (!lit.empty()) sum += lamp.glow->along(ray, lit);
   }
   return sum;
