@@ -71,5 +71,31 @@ TEST(CloudRender, ShadowLandsWhereTheGeometrySays) {
   EXPECT_GT(ground(-200), 0.9 * ground(shade + 800));    // under the cloud itself: sunlit
 }
 
+TEST(CloudRender, DistantCloudFadesIntoHazeThroughTheAirBeforeIt) {
+  // A cloud 30 km away, 2 km up (4° above the horizon). In thick haze (aerosol optical
+  // depth 2: the air before the cloud has a transmittance of 1e-11) the light the
+  // cloud scatters is lost on the way, and what the camera sees there is the haze's own
+  // light up to the cloud (the aerial perspective A): within 2 %. In clear air the
+  // cloud differs from that air light by far more. Without the air between camera and
+  // cloud, the hazy cloud would show its own light undimmed. (Compared with A rather
+  // than with the sky beside the cloud: the sky-view and aerial-perspective tables
+  // differ by up to ~10 % on such long hazy paths, docs/atmosphere.md.)
+  auto departure_from_air_light = [](double aod) {
+    Scene scene = cloud_scene(90.0);  // the sun in the east, to the side
+    const Vec3 eye{0, 0, 2}, target{0, 30000, 2000};
+    scene.camera = Camera{eye, target, {0, 0, 1}, 20.0};
+    scene.clouds[0].center_y = 30000;
+    scene.clouds[0].altitude = 2000;
+    scene.atmosphere.aerosol.aod_550 = aod;
+    const Renderer renderer(scene);
+    const Vec3 d = normalize(target - eye);
+    const double entry = 29500;  // the cloud's near rim, 500 m before its centre
+    const double air = luminance(renderer.sky().aerial_perspective(d, entry).radiance);
+    return std::abs(luminance_toward(renderer, target) - air) / air;
+  };
+  EXPECT_LT(departure_from_air_light(2.0), 0.02);
+  EXPECT_GT(departure_from_air_light(0.05), 0.2);
+}
+
 }  // namespace
 }  // namespace skylit

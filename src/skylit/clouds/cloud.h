@@ -55,6 +55,7 @@
 // and the stretches it finds inside are the same, it only evaluates T less often.
 #pragma once
 
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -120,6 +121,9 @@ Spectrum default_cloud_ambient(const Spectrum& sun_at_cloud, const Vec3& to_sun)
 struct CloudScattering {
   Spectrum in_scattered;
   double transmittance = 1.0;
+  // Where the ray enters the first cloud it meets (m along it; infinite if none): what
+  // the air between the viewer and the clouds starts from.
+  double distance = std::numeric_limits<double>::infinity();
 };
 
 class Cloud {

@@ -116,6 +116,8 @@ CloudScattering CloudLayer::scatter(const Vec3& o, const Vec3& d, double t_min, 
   CloudScattering out;
   for (const Crossing& c : crossings(o, d, t_min, t_max)) {
     const CloudScattering s = clouds_[c.index].scatter(o, d, c.t_enter, c.t_exit, light);
+    if (!std::isfinite(out.distance) && (s.transmittance < 1.0 || !s.in_scattered.is_black()))
+      out.distance = std::max(c.t_enter, t_min);
     out.in_scattered += s.in_scattered * static_cast<float>(out.transmittance);
     out.transmittance *= s.transmittance;
   }

@@ -90,20 +90,34 @@ Spectrum Renderer::measure_cloud_sky_share() const {
 }
 
 Renderer::Between Renderer::between(const Ray& ray, double distance) const {
-  Between b{std::isfinite(distance) ? sky_.aerial_perspective(ray.direction, distance)
-                                    : ScatteredLight{Spectrum(0.0f), Spectrum(1.0f)},
+  const ScatteredLight no_air{Spectrum(0.0f), Spectrum(1.0f)};
+  Between b{std::isfinite(distance) ? sky_.aerial_perspective(ray.direction, distance) : no_air,
             {Spectrum(1.0f), Spectrum(0.0f)},
-            {Spectrum(0.0f), 1.0}};
+            {Spectrum(0.0f), 1.0},
+            no_air};
   if (fog_) b.fog = fog_->along(ray, distance);
-  if (clouds_) b.clouds = clouds_->scatter(ray.origin, ray.direction, 0.0, std::min(distance, 1e7), cloud_light_);
+  if (clouds_) {
+    b.clouds = clouds_->scatter(ray.origin, ray.direction, 0.0, std::min(distance, 1e7), cloud_light_);
+    if (!std::isfinite(distance) && std::isfinite(b.clouds.distance))
+      b.air_to_clouds = sky_.aerial_perspective(ray.direction, b.clouds.distance);
+  }
   return b;
 }
 
 Spectrum Renderer::seen_through(const Spectrum& radiance, const Between& between, bool sky) {
   // Clouds are farthest from the camera, the fog nearest; the air's long path is over
   // them all: clouds, then fog, then (for surfaces) the air.
-  const Spectrum through_clouds =
-      radiance * static_cast<float>(between.clouds.transmittance) + between.clouds.in_scattered;
+  const float t_clouds = static_cast<float>(between.clouds.transmittance);
+  Spectrum through_clouds = radiance * t_clouds + between.clouds.in_scattered;
+  if (sky) {
+    // The sky's radiance S holds the air along the whole ray: S = A + T·S_beyond, with
+    // A and T the air's in-scatter and transmittance up to the clouds. The clouds
+    // replace what lies beyond them and are seen through that air:
+    // T·(cloud + t·S_beyond) + A = t·S + (1 − t)·A + T·cloud.
+    const ScatteredLight& air = between.air_to_clouds;
+    through_clouds = radiance * t_clouds + air.radiance * (1.0f - t_clouds) +
+                     between.clouds.in_scattered * air.transmittance;
+  }
   const Spectrum through_fog = through_clouds * between.fog.transmittance + between.fog.in_scattered;
   if (sky) return through_fog;
   return through_fog * between.air.transmittance + between.air.radiance;

@@ -69,6 +69,7 @@ class Renderer {
     ScatteredLight air;
     FogMedium::Along fog;
     CloudScattering clouds;
+    ScatteredLight air_to_clouds;  // the air between the camera and the clouds (sky rays)
   };
   Between between(const Ray& ray, double distance) const;
   // What the camera sees of light leaving a point (or the sky) through what lies between.
