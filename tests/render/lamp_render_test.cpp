@@ -10,6 +10,7 @@
 #include "skylit/geometry/primitives.h"
 #include "skylit/lights/lamp_spectrum.h"
 #include "skylit/render/renderer.h"
+#include "skylit/render/scene_lamps.h"
 #include "skylit/spectrum/cie.h"
 
 namespace skylit {
@@ -105,6 +106,26 @@ TEST(LampRender, GlowInHomogeneousFogFallsOffAsTheClosedForm) {
     EXPECT_LT(got, previous);
     previous = got;
   }
+}
+
+TEST(LampRender, UntestedFaintLampsAddAtMostTheirShare) {
+  // One bright lamp over the point and eight faint ones far off behind a wall: the faint
+  // ones together give under 1 % of the bright one's light, so they get no occlusion
+  // ray and count as unshadowed. The result may exceed the exact one (bright lamp only)
+  // by at most kUntestedShare. With the bright lamp shadowed as well, every lamp is
+  // tested and the point is dark.
+  Scene scene = night_scene();  // the bright lamp: 1000 cd at (0, 0, 5)
+  for (int i = 0; i < 8; ++i)
+    scene.lights.push_back({"faint", Luminaire({60.0 + 5 * i, 0, 5}, IntensityDistribution::isotropic(100.0)),
+                            scene.lights[0].spectrum_per_candela});
+  scene.materials.push_back({"wall", DiffuseMaterial{Spectrum(0.3f)}});
+  scene.objects.push_back({"wall", make_box({30, -50, 0}, {31, 50, 20}), 1});
+  const double exact = kReflectance * 1000.0 / 25.0 / kPi;
+  const double got = ground_luminance(Renderer(scene), 0.0);
+  EXPECT_GE(got, exact * (1 - 1e-6));
+  EXPECT_LE(got, exact * (1 + kUntestedShare));
+  scene.objects.push_back({"roof", make_box({-3, -3, 3}, {3, 3, 3.2}), 1});  // over the point
+  EXPECT_LT(ground_luminance(Renderer(scene), 0.0), 1e-6 * exact);
 }
 
 TEST(LampRender, LampSeenDirectlyLightsItsPixel) {

@@ -1,6 +1,8 @@
 #include "skylit/render/scene_lamps.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "skylit/material/reflection.h"
 
@@ -34,35 +36,54 @@ Spectrum SceneLamps::irradiance_from(size_t index, const Vec3& point) const {
 
 Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer,
                                uint64_t& rays) const {
-  // The Lambertian part sums the lamps' irradiance first (scalars times each lamp's
-  // spectrum) and multiplies by the albedo once; the occlusion ray, the costly part,
-  // is traced only for lamps that send light to the point at all.
-  Spectrum irradiance, glossy;
-  const bool has_glossy = has_specular(material);
-  const Vec3 origin = offset_from_surface(point.position, point.normal);
+  // Each lamp that sends light to the point at all is a candidate, with the illuminance
+  // it would give unshadowed (lux: the spectra are one candela per candela). Occlusion
+  // rays, the costly part, go to the brightest first; once the candidates left could
+  // add less than kUntestedShare of the light found so far, they are counted as
+  // unshadowed: wrong at worst by that share.
+  struct Candidate {
+    size_t lamp;
+    Vec3 l;
+    double cos_in, scale;  // scale: candela/d² × the fog's transmittance if grey
+    double lux;
+  };
+  thread_local std::vector<Candidate> candidates;
+  candidates.clear();
   for (size_t i = 0; i < lamps_.size(); ++i) {
-    const Luminaire& luminaire = lamps_[i].light->luminaire;
-    const Vec3 to_lamp = luminaire.position() - point.position;
+    const Vec3 to_lamp = position(i) - point.position;
     const double d2 = dot(to_lamp, to_lamp);
     if (!(d2 > 0)) continue;
-    const double distance = std::sqrt(d2);
-    const Vec3 l = to_lamp / distance;
+    const Vec3 l = to_lamp / std::sqrt(d2);
     const double cos_in = dot(point.normal, l);
     if (!(cos_in > 0)) continue;
     const double candela = lamps_[i].map->candela(-to_lamp);
     if (!(candela > 0)) continue;
-    ++rays;
-    if (tracer_.occluded(Ray{origin, l, 0.0, length(luminaire.position() - origin) * (1 - 1e-6)})) continue;
     double scale = candela / d2;
-    Spectrum e = lamps_[i].light->spectrum_per_candela;
-    if (fog_) {
-      const double column = fog_->column_between(luminaire.position(), point.position);
-      if (fog_->is_grey()) scale *= std::exp(-fog_->unit_density_extinction_bins()[0] * column);
-      else e *= fog_->transmittance(column);
+    if (fog_ && fog_->is_grey())
+      scale *= std::exp(-fog_->unit_density_extinction_bins()[0] * fog_->column_between(position(i), point.position));
+    candidates.push_back({i, l, cos_in, scale, scale * cos_in});
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.lux > b.lux; });
+  double left = 0;
+  for (const Candidate& c : candidates) left += c.lux;
+
+  Spectrum irradiance, glossy;
+  const bool has_glossy = has_specular(material);
+  const Vec3 origin = offset_from_surface(point.position, point.normal);
+  double found = 0;
+  for (const Candidate& c : candidates) {
+    const bool test = left >= kUntestedShare * found;
+    left -= c.lux;
+    if (test) {
+      ++rays;
+      const Vec3& lamp = position(c.lamp);
+      if (tracer_.occluded(Ray{origin, c.l, 0.0, length(lamp - origin) * (1 - 1e-6)})) continue;
+      found += c.lux;
     }
-    e *= static_cast<float>(scale);
-    irradiance += e * static_cast<float>(cos_in);
-    if (has_glossy) glossy += specular_reflection(material, point.normal, l, to_viewer) * e;
+    Spectrum e = lamps_[c.lamp].light->spectrum_per_candela * static_cast<float>(c.scale);
+    if (fog_ && !fog_->is_grey()) e *= fog_->transmittance(fog_->column_between(position(c.lamp), point.position));
+    irradiance += e * static_cast<float>(c.cos_in);
+    if (has_glossy) glossy += specular_reflection(material, point.normal, c.l, to_viewer) * e;
   }
   return diffuse_albedo(material, dot(point.normal, to_viewer)) * irradiance * static_cast<float>(1.0 / kPi) + glossy;
 }

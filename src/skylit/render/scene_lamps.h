@@ -24,6 +24,10 @@
 
 namespace skylit {
 
+// Lamps whose unshadowed light at a point adds up to less than this share of the light
+// already found there get no occlusion ray: they are counted as unshadowed.
+inline constexpr double kUntestedShare = 0.01;
+
 class SceneLamps {
  public:
   // `fog` may be null (clear air: no glow); it must outlive this object, as must the
@@ -35,6 +39,9 @@ class SceneLamps {
 
   // W m⁻² sr⁻¹ nm⁻¹ a surface point reflects toward the viewer from all lamps
   // (Lambertian and glossy parts), counting the occlusion rays it traces in `rays`.
+  // Occlusion rays go to the lamps in order of their unshadowed illuminance; the last
+  // ones, together under kUntestedShare of what was found lit, are counted unshadowed,
+  // so the illuminance is exact or above it by less than that share.
   Spectrum reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer, uint64_t& rays) const;
 
   // W m⁻² sr⁻¹ nm⁻¹ the fog scatters toward the ray's origin from all lamps, over
