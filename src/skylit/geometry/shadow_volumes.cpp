@@ -31,7 +31,7 @@ constexpr size_t kMaxLeafSize = 16;
 constexpr int kMaxDepth = 60;  // the query's stack has room for kMaxDepth + 2 entries
 constexpr int kBins = 16;
 // A point light's frusta are tested in groups of at most this many, each behind a cone.
-constexpr size_t kFrustaPerGroup = 8;
+constexpr size_t kFrustaPerGroup = 4;
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <tbb/parallel_for.h>
 
@@ -12,6 +13,7 @@ IntensityMap::IntensityMap(const Luminaire& luminaire, int resolution)
       c90_(luminaire.world_direction(90, 90)),
       nadir_(luminaire.aim()),
       n_(resolution),
+      half_n_(0.5 * resolution),
       constant_(luminaire.distribution().kind() == IntensityDistribution::Kind::kIsotropic),
       constant_value_(luminaire.intensity(luminaire.aim())) {
   if (constant_) return;
@@ -39,25 +41,21 @@ IntensityMap::IntensityMap(const Luminaire& luminaire, int resolution)
     texels_[k] = static_cast<uint16_t>(scale_ > 0 ? std::lround(exact[k] / scale_) : 0);
 }
 
-void IntensityMap::position(double x, double y, double z, double& u, double& v) const {
-  const double norm = std::abs(x) + std::abs(y) + std::abs(z);
-  double a = x / norm, b = y / norm;
-  if (z < 0) {
-    const double fa = (1 - std::abs(b)) * (a < 0 ? -1 : 1), fb = (1 - std::abs(a)) * (b < 0 ? -1 : 1);
-    a = fa;
-    b = fb;
-  }
-  u = (a + 1) * 0.5 * n_ - 0.5;
-  v = (b + 1) * 0.5 * n_ - 0.5;
-}
-
 double IntensityMap::candela(const Vec3& d) const {
   if (constant_) return constant_value_;
-  double u, v;
-  position(dot(d, c0_), dot(d, c90_), dot(d, nadir_), u, v);
-  if (!(u == u) || !(v == v)) return 0.0;  // a zero or non-finite direction
-  u = std::clamp(u, 0.0, n_ - 1.0);
-  v = std::clamp(v, 0.0, n_ - 1.0);
+  // The direction in the luminaire's frame, onto the octahedron |x| + |y| + |z| = 1,
+  // the upper half folded into the square's corners.
+  const double x = dot(d, c0_), y = dot(d, c90_), z = dot(d, nadir_);
+  const double norm = std::abs(x) + std::abs(y) + std::abs(z);
+  if (!(norm > 0) || !(norm < std::numeric_limits<double>::infinity())) return 0.0;
+  double a = x / norm, b = y / norm;
+  if (z < 0) {
+    const double folded_a = std::copysign(1 - std::abs(b), a);
+    b = std::copysign(1 - std::abs(a), b);
+    a = folded_a;
+  }
+  const double u = std::clamp((a + 1) * half_n_ - 0.5, 0.0, n_ - 1.0);
+  const double v = std::clamp((b + 1) * half_n_ - 0.5, 0.0, n_ - 1.0);
   const int i = std::min(static_cast<int>(u), n_ - 2), j = std::min(static_cast<int>(v), n_ - 2);
   const double fu = u - i, fv = v - j;
   const uint16_t* row = texels_.data() + static_cast<size_t>(j) * n_ + i;

@@ -27,12 +27,9 @@ class IntensityMap {
   double candela(const Vec3& world_direction) const;
 
  private:
-  // The map position in [0, resolution)² of a unit direction in the luminaire's frame
-  // (z toward the nadir).
-  void position(double x, double y, double z, double& u, double& v) const;
-
   Vec3 c0_, c90_, nadir_;
   int n_;
+  double half_n_;
   bool constant_;  // isotropic: no map needed
   double constant_value_;
   // Texels as fractions of the largest, in 16 bits (steps of 1.5e-5 of the peak): half
