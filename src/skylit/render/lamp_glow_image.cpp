@@ -15,8 +15,8 @@ namespace skylit {
 
 namespace {
 
-// The coarsest blocks: 16 pixels on a side (17 × 17 centres).
-constexpr int kBlock = 16;
+// The coarsest blocks: 32 pixels on a side (33 × 33 centres).
+constexpr int kBlock = 32;
 constexpr int kSideCheck = 4;
 // The glow depends only on a view ray's direction and length: two view hits count as
 // alike when both are sky or their distances differ by at most this fraction, on one

@@ -285,8 +285,8 @@ XyzImage Renderer::render(const RenderOptions& options) const {
 
   // Two passes over the tiles (adaptive antialiasing): first one sample at every pixel's
   // centre; then the full n × n grid only where an edge runs, that is where a pixel's
-  // centre and a neighbour's met different objects or differ in any of X, Y, Z by more
-  // than kEdgeContrast. Elsewhere the image is smooth at the pixel's scale and its
+  // centre and one of its four neighbours' met different objects or differ in any of
+  // X, Y, Z by more than kEdgeContrast. Elsewhere the image is smooth at the pixel's scale and its
   // centre stands for the grid's mean.
   std::vector<ViewHit> centre_hit(static_cast<size_t>(width) * height);
   XyzImage refined;
@@ -297,7 +297,7 @@ XyzImage Renderer::render(const RenderOptions& options) const {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         const int nx = x + dx, ny = y + dy;
-        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+        if ((dx == 0) == (dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
         if (centre_hit[static_cast<size_t>(ny) * width + nx].mesh != mesh) return true;
         const Xyz b = image.at(nx, ny);
         for (auto [p, q] : {std::pair{a.x, b.x}, std::pair{a.y, b.y}, std::pair{a.z, b.z}})
