@@ -309,13 +309,15 @@ XyzImage Renderer::render(const RenderOptions& options) const {
   // the first pass's pixels (whose one sample is the centre), before the second pass
   // compares neighbours and refines edges, whose samples interpolate it.
   auto add_centre_glow = [&] {
-    arena.execute([&] { glow = std::make_unique<LampGlowImage>(camera, width, height, centre_hit, *lamps_); });
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
-        const Xyz p = image.at(x, y), g = glow->centre_glow(x, y);
-        image.set(x, y, {p.x + g.x, p.y + g.y, p.z + g.z});
-      }
-    if (passes == 2) refined = image;
+    arena.execute([&] {
+      glow = std::make_unique<LampGlowImage>(camera, width, height, centre_hit, *lamps_);
+      tbb::parallel_for(0, height, [&](int y) {
+        for (int x = 0; x < width; ++x) {
+          const Xyz p = image.at(x, y), g = glow->centre_glow(x, y);
+          image.set(x, y, {p.x + g.x, p.y + g.y, p.z + g.z});
+        }
+      });
+    });
   };
   auto render_tile = [&](int tile, int pass) {
     const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
@@ -340,8 +342,8 @@ XyzImage Renderer::render(const RenderOptions& options) const {
   };
 
   for (int pass = 0; pass < passes; ++pass) {
-    if (pass == 1) refined = image;  // the second pass reads the first's image and writes here
     if (pass == 1 && lamps_ && fog_) add_centre_glow();
+    if (pass == 1) refined = image;  // the second pass reads the first's image and writes here
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
         for (int tile = range.begin(); tile != range.end(); ++tile) render_tile(tile, pass);
