@@ -442,6 +442,31 @@ TEST(ShadowVolumes, SharedEdgesAndVerticesLeaveNoCracks) {
 // Every sampled point is classified by Embree's occlusion test toward the sun; away
 // from the interval ends (where single precision and the step blur the answer) the
 // two must agree, and the sunlit lengths agree to within a step per boundary.
+// Samples [0, t_max] at kSamples midpoints with an independent test of light (an
+// occlusion ray): how many samples it finds lit, and how many disagree with `lit`
+// farther than 1 mm from an interval's end (the samples' own resolution is coarser).
+struct SampledLight {
+  int lit_samples = 0, disagreements = 0;
+};
+template <class IsLit>
+SampledLight sample_light(const std::vector<Interval>& lit, double t_max, int samples, const IsLit& is_lit) {
+  SampledLight out;
+  const double step = t_max / samples;
+  for (int k = 0; k < samples; ++k) {
+    const double t = (k + 0.5) * step;
+    const bool traced_lit = is_lit(t);
+    out.lit_samples += traced_lit;
+    bool exact_lit = false;
+    double distance = kInf;
+    for (const Interval& i : lit) {
+      exact_lit |= i.begin <= t && t <= i.end;
+      distance = std::min({distance, std::abs(t - i.begin), std::abs(t - i.end)});
+    }
+    if (exact_lit != traced_lit && distance > 1e-3) ++out.disagreements;
+  }
+  return out;
+}
+
 TEST(ShadowVolumes, AgreesWithBruteForceOcclusionSampling) {
   std::vector<TriangleMesh> meshes{make_ground_plane({0, 0, 0}, 1000)};
   std::mt19937 rng(3);
@@ -471,21 +496,11 @@ TEST(ShadowVolumes, AgreesWithBruteForceOcclusionSampling) {
     std::vector<double> ends;
     for (const Interval& i : lit) ends.insert(ends.end(), {i.begin, i.end});
     shadow_boundaries += static_cast<int>(ends.size());
-    int sunlit_samples = 0, disagreements = 0;
-    for (int k = 0; k < kSamples; ++k) {
-      const double t = (k + 0.5) * step;
-      const bool embree_lit = !tracer.occluded({ray.origin + t * ray.direction, w});
-      sunlit_samples += embree_lit;
-      bool exact_lit = false;
-      double distance = kInf;
-      for (const Interval& i : lit) {
-        exact_lit |= i.begin <= t && t <= i.end;
-        distance = std::min({distance, std::abs(t - i.begin), std::abs(t - i.end)});
-      }
-      if (exact_lit != embree_lit && distance > 1e-3) ++disagreements;
-    }
-    EXPECT_EQ(disagreements, 0) << "ray " << r;
-    EXPECT_NEAR(total(lit), sunlit_samples * step, (ends.size() + 1) * step) << "ray " << r;
+    const SampledLight sampled = sample_light(lit, t_max, kSamples, [&](double t) {
+      return !tracer.occluded({ray.origin + t * ray.direction, w});
+    });
+    EXPECT_EQ(sampled.disagreements, 0) << "ray " << r;
+    EXPECT_NEAR(total(lit), sampled.lit_samples * step, (ends.size() + 1) * step) << "ray " << r;
   }
   EXPECT_GT(shadow_boundaries, 40);  // the rays do cross shadows
 }
@@ -637,7 +652,6 @@ TEST(ShadowVolumes, PointLightAgreesWithOcclusionRaysTowardTheLight) {
 
   constexpr int kSamples = 50000;
   const double t_max = 100;
-  const double step = t_max / kSamples;
   int boundaries = 0;
   for (int r = 0; r < 16; ++r) {
     const Vec3 origin{100 * uni(rng) - 50, 100 * uni(rng) - 50, 0.5 + 10 * uni(rng)};
@@ -645,21 +659,12 @@ TEST(ShadowVolumes, PointLightAgreesWithOcclusionRaysTowardTheLight) {
     const Ray ray{origin, normalize(target - origin)};
     const auto lit = volumes.sunlit_intervals(ray, 0, t_max);
     boundaries += static_cast<int>(2 * lit.size());
-    int disagreements = 0;
-    for (int k = 0; k < kSamples; ++k) {
-      const double t = (k + 0.5) * step;
+    const SampledLight sampled = sample_light(lit, t_max, kSamples, [&](double t) {
       const Vec3 p = ray.origin + t * ray.direction;
       const Vec3 to_lamp = lamp - p;
-      const bool traced_lit = !tracer.occluded({p, normalize(to_lamp), 0.0, length(to_lamp)});
-      bool exact_lit = false;
-      double distance = kInf;
-      for (const Interval& i : lit) {
-        exact_lit |= i.begin <= t && t <= i.end;
-        distance = std::min({distance, std::abs(t - i.begin), std::abs(t - i.end)});
-      }
-      if (exact_lit != traced_lit && distance > 1e-3) ++disagreements;
-    }
-    EXPECT_EQ(disagreements, 0) << "ray " << r;
+      return !tracer.occluded({p, normalize(to_lamp), 0.0, length(to_lamp)});
+    });
+    EXPECT_EQ(sampled.disagreements, 0) << "ray " << r;
   }
   EXPECT_GT(boundaries, 40);  // the rays do cross shadows
 }
