@@ -9,6 +9,7 @@
 #include "../reference_quadrature.h"
 #include "skylit/geometry/primitives.h"
 #include "skylit/lights/lamp_spectrum.h"
+#include "skylit/material/optical_constants.h"
 #include "skylit/render/renderer.h"
 #include "skylit/render/scene_lamps.h"
 #include "skylit/spectrum/cie.h"
@@ -109,15 +110,21 @@ TEST(LampRender, GlowInHomogeneousFogFallsOffAsTheClosedForm) {
 }
 
 TEST(LampRender, UntestedFaintLampsAddAtMostTheirShare) {
-  // One bright lamp over the point and eight faint ones far off behind a wall: the faint
-  // ones together give under 1 % of the bright one's light, so they get no occlusion
-  // ray and count as unshadowed. The result may exceed the exact one (bright lamp only)
-  // by at most kUntestedShare. With the bright lamp shadowed as well, every lamp is
-  // tested and the point is dark.
+  // One bright lamp over the point and eight faint ones far off behind a wall, which
+  // together would give 2 % of the bright one's light: more than kUntestedShare, so
+  // occlusion rays must go to them until what is left untested is under that share.
+  // The result may exceed the exact one (the bright lamp only) by at most
+  // kUntestedShare; counting all the faint ones unshadowed would be 2 % too bright.
+  // With the bright lamp shadowed as well, every lamp is tested and the point is dark.
   Scene scene = night_scene();  // the bright lamp: 1000 cd at (0, 0, 5)
-  for (int i = 0; i < 8; ++i)
-    scene.lights.push_back({"faint", Luminaire({60.0 + 5 * i, 0, 5}, IntensityDistribution::isotropic(100.0)),
+  double faint_lux = 0;
+  for (int i = 0; i < 8; ++i) {
+    const Vec3 p{40.0 + i, 0, 5};
+    scene.lights.push_back({"faint", Luminaire(p, IntensityDistribution::isotropic(1300.0)),
                             scene.lights[0].spectrum_per_candela});
+    faint_lux += 1300.0 * 5 / std::pow(length(p), 3);
+  }
+  ASSERT_GT(faint_lux, 0.015 * 40.0);  // the faint lamps matter beyond the share
   scene.materials.push_back({"wall", DiffuseMaterial{Spectrum(0.3f)}});
   scene.objects.push_back({"wall", make_box({30, -50, 0}, {31, 50, 20}), 1});
   const double exact = kReflectance * 1000.0 / 25.0 / kPi;
@@ -126,6 +133,29 @@ TEST(LampRender, UntestedFaintLampsAddAtMostTheirShare) {
   EXPECT_LE(got, exact * (1 + kUntestedShare));
   scene.objects.push_back({"roof", make_box({-3, -3, 3}, {3, 3, 3.2}), 1});  // over the point
   EXPECT_LT(ground_luminance(Renderer(scene), 0.0), 1e-6 * exact);
+}
+
+TEST(LampRender, HiddenLampMakesNoHighlightOnGlossyGround) {
+  // A glossy ground (a coated dark body, rms slope 0.05) lit by one lamp overhead; a
+  // second lamp where its highlight would be seen, but behind a wall. Its illuminance at
+  // the point is a small share of the first's, yet its highlight would outshine it:
+  // the wall must hide it (the lamps are ranked by the light they reflect toward the
+  // viewer, highlight included).
+  Scene scene = night_scene();
+  scene.materials[0] = {"ground", CookTorranceMaterial(constant_ior(1.5), 0.05, Spectrum(0.1f))};
+  const Vec3 eye{-20, 0, 2};  // looking at the ground point (0, 0, 0)
+  const Vec3 mirror_lamp{60, 0, 6};  // where the view's mirror direction points
+  const double without = [&] {
+    uint64_t rays = 0;
+    return luminance(Renderer(scene).radiance(Ray{eye, normalize(-eye)}, rays));
+  }();
+  scene.lights.push_back({"hidden", Luminaire(mirror_lamp, IntensityDistribution::isotropic(1000.0)),
+                          scene.lights[0].spectrum_per_candela});
+  scene.materials.push_back({"wall", DiffuseMaterial{Spectrum(0.3f)}});
+  scene.objects.push_back({"wall", make_box({30, -50, 0}, {31, 50, 20}), 1});
+  uint64_t rays = 0;
+  const double with_hidden = luminance(Renderer(scene).radiance(Ray{eye, normalize(-eye)}, rays));
+  EXPECT_NEAR(with_hidden, without, 1e-6 * without);
 }
 
 TEST(LampRender, LampSeenDirectlyLightsItsPixel) {

@@ -1,6 +1,7 @@
 // The `lights` part of a scene file (docs/lights.md): luminaires with a position, an
 // aim and a rotation, an intensity distribution from an IES or EULUMDAT file or a
 // simple shape, and a lamp type that gives their spectrum.
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -35,13 +36,14 @@ Photometry read_shape(const JsonReader& j) {
 Photometry read_photometry(const JsonReader& j, const std::filesystem::path& base_dir) {
   const int given = int(j.has("ies")) + int(j.has("ldt")) + int(j.has("shape"));
   if (given != 1) j.fail("a light needs exactly one of 'ies' (file), 'ldt' (file) or 'shape'");
+  for (const char* key : {"inner_deg", "outer_deg"})
+    if (j.has(key) && (!j.has("shape") || j.required("shape").string() != "spot"))
+      j.required(key).fail("only a spot shape has cone angles");
   if (j.has("ies")) {
     IesPhotometry ies = read_ies(base_dir / j.required("ies").string());
     return {std::move(ies.distribution), std::move(ies.tilt)};
   }
   if (j.has("ldt")) return {read_eulumdat(base_dir / j.required("ldt").string()).distribution, {}};
-  for (const char* key : {"inner_deg", "outer_deg"})
-    if (j.has(key) && j.required("shape").string() != "spot") j.required(key).fail("only a spot has cone angles");
   return read_shape(j);
 }
 
@@ -64,6 +66,10 @@ LampSpectrumSettings read_lamp(const JsonReader& j, const std::filesystem::path&
     const std::filesystem::path file = base_dir / j.required("spectrum_file").string();
     const auto columns = parse_csv_columns(read_text_file(file, "spectrum table"), file.string());
     if (columns.size() < 2) throw InputError(file.string() + ":1: expected two columns: wavelength_nm, relative power");
+    for (size_t i = 0; i < columns[0].size(); ++i)
+      if (!std::isfinite(columns[0][i]) || (i > 0 && !(columns[0][i] > columns[0][i - 1])))
+        throw InputError(file.string() + ":" + std::to_string(i + 2) +
+                         ": wavelengths must be finite and strictly increasing");
     lamp.table = {columns[0], columns[1]};
   }
   return lamp;
@@ -75,7 +81,8 @@ SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir
   const std::string name = j.optional("name") ? j.required("name").string() : j.path();
   const Vec3 position = j.required("position").vec3();
   const Vec3 aim = j.optional("aim") ? j.required("aim").vec3() : Vec3{0, 0, -1};
-  if (!(length(aim) > 0)) j.required("aim").fail("the aim must not be the zero vector");
+  if (!(length(aim) > 0) || !std::isfinite(length(aim)))
+    j.required("aim").fail("the aim must be a non-zero vector of moderate length");
   const double rotation = j.optional("rotation_deg") ? j.required("rotation_deg").number_in(-360, 360) : 0.0;
   if (j.has("candela") && !j.has("shape")) j.required("candela").fail("candela is for a shape; files give their own");
   Photometry photometry = read_photometry(j, base_dir);

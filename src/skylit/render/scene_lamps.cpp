@@ -36,17 +36,24 @@ Spectrum SceneLamps::irradiance_from(size_t index, const Vec3& point) const {
 
 Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer,
                                uint64_t& rays) const {
-  // Each lamp that sends light to the point at all is a candidate, with the illuminance
-  // it would give unshadowed (lux: the spectra are one candela per candela). Occlusion
-  // rays, the costly part, go to the brightest first; once the candidates left could
-  // add less than kUntestedShare of the light found so far, they are counted as
-  // unshadowed: wrong at worst by that share.
+  // Each lamp that sends light to the point at all is a candidate, with the radiance
+  // (cd/m², mean over bins; the spectra are one candela per candela) it would reflect
+  // toward the viewer unshadowed: its Lambertian part and its glossy highlight, which a
+  // sharp lobe can make far larger than the illuminance suggests. Occlusion rays, the
+  // costly part, go to the brightest first; once the candidates left could add less
+  // than kUntestedShare of the radiance found so far, they are counted as unshadowed:
+  // wrong at worst by that share.
   struct Candidate {
     size_t lamp;
     Vec3 l;
     double cos_in, scale;  // scale: candela/d² × the fog's transmittance if grey
-    double lux;
+    double radiance;
   };
+  const bool has_glossy = has_specular(material);
+  const Spectrum albedo = diffuse_albedo(material, dot(point.normal, to_viewer));
+  double mean_albedo = 0;
+  for (int b = 0; b < kSpectralBins; ++b) mean_albedo += albedo[b];
+  mean_albedo /= kSpectralBins;
   thread_local std::vector<Candidate> candidates;
   candidates.clear();
   for (size_t i = 0; i < lamps_.size(); ++i) {
@@ -61,31 +68,32 @@ Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& materi
     double scale = candela / d2;
     if (fog_ && fog_->is_grey())
       scale *= std::exp(-fog_->unit_density_extinction_bins()[0] * fog_->column_between(position(i), point.position));
-    candidates.push_back({i, l, cos_in, scale, scale * cos_in});
+    const double glossy_weight = has_glossy ? specular_weight(material, point.normal, l, to_viewer) : 0.0;
+    candidates.push_back({i, l, cos_in, scale, scale * (mean_albedo * cos_in / kPi + glossy_weight)});
   }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.lux > b.lux; });
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.radiance > b.radiance; });
   double left = 0;
-  for (const Candidate& c : candidates) left += c.lux;
+  for (const Candidate& c : candidates) left += c.radiance;
 
   Spectrum irradiance, glossy;
-  const bool has_glossy = has_specular(material);
   const Vec3 origin = offset_from_surface(point.position, point.normal);
   double found = 0;
   for (const Candidate& c : candidates) {
     const bool test = left >= kUntestedShare * found;
-    left -= c.lux;
+    left -= c.radiance;
     if (test) {
       ++rays;
       const Vec3& lamp = position(c.lamp);
       if (tracer_.occluded(Ray{origin, c.l, 0.0, length(lamp - origin) * (1 - 1e-6)})) continue;
-      found += c.lux;
+      found += c.radiance;
     }
     Spectrum e = lamps_[c.lamp].light->spectrum_per_candela * static_cast<float>(c.scale);
     if (fog_ && !fog_->is_grey()) e *= fog_->transmittance(fog_->column_between(position(c.lamp), point.position));
     irradiance += e * static_cast<float>(c.cos_in);
     if (has_glossy) glossy += specular_reflection(material, point.normal, c.l, to_viewer) * e;
   }
-  return diffuse_albedo(material, dot(point.normal, to_viewer)) * irradiance * static_cast<float>(1.0 / kPi) + glossy;
+  return albedo * irradiance * static_cast<float>(1.0 / kPi) + glossy;
 }
 
 Spectrum SceneLamps::in_scattered(const Ray& ray, double distance) const {

@@ -24,8 +24,8 @@
 
 namespace skylit {
 
-// Lamps whose unshadowed light at a point adds up to less than this share of the light
-// already found there get no occlusion ray: they are counted as unshadowed.
+// Lamps whose unshadowed light reflected from a point adds up to less than this share of
+// the light already found there get no occlusion ray: they are counted as unshadowed.
 inline constexpr double kUntestedShare = 0.01;
 
 class SceneLamps {
@@ -39,9 +39,10 @@ class SceneLamps {
 
   // W m⁻² sr⁻¹ nm⁻¹ a surface point reflects toward the viewer from all lamps
   // (Lambertian and glossy parts), counting the occlusion rays it traces in `rays`.
-  // Occlusion rays go to the lamps in order of their unshadowed illuminance; the last
-  // ones, together under kUntestedShare of what was found lit, are counted unshadowed,
-  // so the illuminance is exact or above it by less than that share.
+  // Occlusion rays go to the lamps in order of the radiance they would reflect
+  // unshadowed (Lambertian and glossy parts); the last ones, together under
+  // kUntestedShare of what was found lit, are counted unshadowed, so the result is
+  // exact or above it by less than that share (in the mean over bins).
   Spectrum reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer, uint64_t& rays) const;
 
   // W m⁻² sr⁻¹ nm⁻¹ the fog scatters toward the ray's origin from all lamps, over
