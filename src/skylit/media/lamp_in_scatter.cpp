@@ -43,6 +43,8 @@ LampInScatter::LampInScatter(const FogLayer& layer, const Luminaire& lamp, const
   const double z = lamp.position().z;
   lamp_inside_ = z >= layer.bottom_m() && z <= layer.top_m();
   lamp_density_ = layer.density(z);
+  sigma_max_ = 0;
+  for (int k = 0; k < kSpectralBins; ++k) sigma_max_ = std::max(sigma_max_, sigma[k]);
   max_panel_ = std::min(kMaxPanel, lamp.distribution().angular_detail_deg() * kPi / 180);
   cos_max_gamma_ = std::cos(lamp.distribution().max_gamma_deg() * kPi / 180);
   phase_table_.resize(kPhaseSteps + 1);
@@ -113,15 +115,13 @@ double mean_decay(double x, double e) { return std::abs(x) < 1e-6 ? 1 - 0.5 * x 
 }  // namespace
 
 void LampInScatter::integrate(const Ray& ray, const RayInLayer& in, double s0, double h, double theta_lo,
-                              double theta_hi, double& grey, Spectrum& spectral) const {
+                              double theta_hi, double tail_scale, double& grey, Spectrum& spectral) const {
   const Vec3& o = ray.origin;
   const Vec3& d = ray.direction;
   const Vec3& lamp = lamp_.position();
   const double eta = layer_.inverse_scale_height_per_m();
-  const double max_width = max_panel_;
-  double width = std::min(0.5 * std::max(theta_lo, kPhasePeakWidth), max_width);
-  for (double lo = theta_lo; lo < theta_hi; width = std::min(width * kPanelGrowth, max_width)) {
-    const double hi = std::min(theta_hi, lo + width);
+  // One Gauss–Legendre panel over [lo, hi].
+  auto panel = [&](double lo, double hi) {
     const double half = 0.5 * (hi - lo), middle = 0.5 * (hi + lo);
     for (int k = 0; k < 3; ++k) {
       const double theta = middle + half * kNodes[k];
@@ -153,6 +153,25 @@ void LampInScatter::integrate(const Ray& ray, const RayInLayer& in, double s0, d
           spectral[b] += static_cast<float>(weight * std::exp(-sigma_[b] * column));
       }
     }
+  };
+  // The far tail: where the lit part runs on beyond the lamp for more than an optical
+  // depth, the light fades as e^(−σh/(π − θ)) near θ = π, within an angle of about σh
+  // of it; panels shrink geometrically toward θ_hi there, from a tenth of that angle.
+  double end = theta_hi;
+  if (tail_scale > 0 && theta_hi > 0.5 * kPi) {
+    const double split = std::max(theta_lo, 0.5 * kPi);
+    double width = std::max(kPi - theta_hi, 0.1 * tail_scale * h);
+    for (double hi = theta_hi; hi > split; width = std::min(width * kPanelGrowth, max_panel_)) {
+      const double lo = std::max(split, hi - width);
+      panel(lo, hi);
+      hi = lo;
+    }
+    end = split;
+  }
+  double width = std::min(0.5 * std::max(theta_lo, kPhasePeakWidth), max_panel_);
+  for (double lo = theta_lo; lo < end; width = std::min(width * kPanelGrowth, max_panel_)) {
+    const double hi = std::min(end, lo + width);
+    panel(lo, hi);
     lo = hi;
   }
 }
@@ -172,7 +191,18 @@ Spectrum LampInScatter::along(const Ray& ray, const std::vector<Interval>& lit) 
   thread_local std::vector<Interval> emitting;  // reused: no allocation per ray
   for (const Interval& piece : lit) {
     emitting_intervals(ray, piece.begin, piece.end, emitting);
-    for (const Interval& e : emitting) integrate(ray, in, s0, h, angle_at(e.begin), angle_at(e.end), grey, spectral);
+    for (const Interval& e : emitting) {
+      // The extinction where the piece ends, if the fog beyond the lamp is more than an
+      // optical depth deep (then the far tail needs graded panels).
+      double tail_scale = 0;
+      if (e.end > s0) {
+        const double s_end = std::min(e.end, in.hi);
+        const double rho_end = in.entry_density * std::exp(-in.decay_per_m * (std::min(s_end, 1e12) - in.lo));
+        const double sigma_end = sigma_max_ * std::max(rho_end, 0.0);
+        if (sigma_end * (s_end - std::max(s0, e.begin)) > 1) tail_scale = sigma_end;
+      }
+      integrate(ray, in, s0, h, angle_at(e.begin), angle_at(e.end), tail_scale, grey, spectral);
+    }
   }
   const float scale = static_cast<float>(layer_.single_scattering_albedo() / h);
   if (grey_) return spectrum_ * (sigma_ * static_cast<float>(grey * scale));
