@@ -1,5 +1,5 @@
-// Helpers shared by the tests: a fresh temporary folder, files written into it, and
-// running the built `skylit` program.
+// Helpers shared by the tests: a fresh temporary folder, files written into it,
+// running the built `skylit` program, and the message of the InputError a call throws.
 #pragma once
 
 #include <sys/wait.h>
@@ -10,7 +10,20 @@
 #include <random>
 #include <string>
 
+#include "skylit/util/error.h"
+
 namespace skylit::testing {
+
+// The InputError message, or "" if `f` did not throw one.
+template <typename F>
+std::string input_error_of(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // A folder under the system's temporary folder, removed with its contents on destruction.
 class TempDir {

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../test_support.h"
+
 #include <string>
 
 #include "skylit/util/error.h"
@@ -17,12 +19,7 @@ OffsetDateTime parse(const std::string& text) { return parse_offset_date_time(te
 
 // The message of the InputError that parsing `text` throws ("" if it does not throw).
 std::string error_of(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::input_error_of([&] { parse(text); });
 }
 
 TEST(TimeParsing, ReadsEveryFieldAndTheOffset) {

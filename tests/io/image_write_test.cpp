@@ -2,6 +2,8 @@
 // names the path, no file and no temporary left behind on failure, nothing but the
 // target left on success, and the same bytes for the same image. Also XyzImage itself.
 #include <gtest/gtest.h>
+
+#include "../test_support.h"
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,16 +19,7 @@
 namespace skylit {
 namespace {
 
-// The InputError message, or "" if `f` did not throw one.
-template <typename F>
-std::string input_error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::input_error_of;
 
 TEST(ImageWrite, FormatFromExtensionIgnoresCase) {
   EXPECT_EQ(image_format_from_path("a/b.png"), ImageFormat::png);

@@ -20,12 +20,7 @@ std::string scene_with(const std::string& sun_part, const std::string& extra = "
 
 std::string load_error(const std::string& text) {
   testing::TempDir dir;
-  try {
-    load_scene(dir.write("scene.json", text));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::input_error_of([&] { load_scene(dir.write("scene.json", text)); });
 }
 
 TEST(SceneAtmosphere, SiteAndTimePlaceTheSun) {

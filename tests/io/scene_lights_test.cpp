@@ -22,12 +22,7 @@ std::string with_lights(const std::string& lights) {
 }
 
 std::string load_error(const TempDir& dir, const std::string& text) {
-  try {
-    load_scene(dir.write("scene.json", text));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::input_error_of([&] { load_scene(dir.write("scene.json", text)); });
 }
 
 const char* kIsotropicIes =

@@ -18,12 +18,7 @@ using testing::TempDir;
 std::string load_error(const std::string& text, const std::vector<std::string>& overrides = {}) {
   TempDir dir;
   const auto file = dir.write("scene.json", text);
-  try {
-    load_scene(file, overrides);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::input_error_of([&] { load_scene(file, overrides); });
 }
 
 std::string replace(std::string text, const std::string& from, const std::string& to) {

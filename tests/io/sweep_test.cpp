@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../test_support.h"
+
 #include <string>
 #include <vector>
 
@@ -16,12 +18,7 @@ namespace {
 using Values = std::vector<std::string>;
 
 std::string error_of(const std::string& argument) {
-  try {
-    parse_sweep_parameter(argument);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::input_error_of([&] { parse_sweep_parameter(argument); });
 }
 
 TEST(SweepParameter, SplitsOnCommasAndTrims) {

@@ -43,12 +43,7 @@ std::string ldt(int isym, const std::vector<double>& c_angles, const std::vector
 std::vector<double> constant(std::size_t n, double v) { return std::vector<double>(n, v); }
 
 std::string message_of(const std::string& text, const std::string& name = "lum.ldt") {
-  try {
-    parse_eulumdat(text, name);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::input_error_of([&] { parse_eulumdat(text, name); });
 }
 
 const std::vector<double> kGammas = {0, 30, 60, 90, 120, 150, 180};

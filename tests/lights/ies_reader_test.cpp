@@ -39,12 +39,7 @@ std::string type_c_file(const std::string& header, const std::string& h_angles, 
 }
 
 std::string message_of(const std::string& text, const std::string& name = "lamp.ies") {
-  try {
-    parse_ies(text, name);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::input_error_of([&] { parse_ies(text, name); });
 }
 
 TEST(IesReader, Reads2002AxialFileAndFluxMatchesLumens) {

@@ -2,6 +2,8 @@
 // types, and the errors a user can make, each naming its JSON path.
 #include <gtest/gtest.h>
 
+#include "../test_support.h"
+
 #include <string>
 
 #include "skylit/io/scene_parts.h"
@@ -23,12 +25,7 @@ Material read_one(const std::string& material_json) { return read("{\"walls\": "
 
 // The message of the InputError that reading `material_json` as materials.walls throws.
 std::string error_of(const std::string& material_json) {
-  try {
-    read_one(material_json);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return testing::input_error_of([&] { read_one(material_json); });
 }
 
 const Vec3 kNormal{0, 0, 1};
