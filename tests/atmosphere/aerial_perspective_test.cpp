@@ -18,7 +18,7 @@ using test_reference::default_atmosphere;
 using test_reference::default_sky;
 using test_reference::world_direction;
 
-bool report() { return std::getenv("SKYLIT_REPORT") != nullptr; }
+using test_reference::report;
 
 // A pedestrian's eye, 2 m above the ground, with the sun at 30°.
 constexpr double kEyeHeightM = 2.0, kSunDeg = 30.0;

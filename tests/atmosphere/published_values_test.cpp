@@ -20,7 +20,7 @@ using test_reference::chromaticity;
 using test_reference::default_sky;
 using test_reference::world_direction;
 
-bool report() { return std::getenv("SKYLIT_REPORT") != nullptr; }
+using test_reference::report;
 
 double illuminance_lx(const Spectrum& irradiance) { return xyz_from_spectrum(irradiance).y; }
 

@@ -26,7 +26,7 @@ using test_reference::default_atmosphere;
 using test_reference::default_sky;
 using test_reference::world_direction;
 
-bool report() { return std::getenv("SKYLIT_REPORT") != nullptr; }
+using test_reference::report;
 
 double angle_deg(const Vec3& a, const Vec3& b) { return degrees(std::acos(std::clamp(dot(a, b), -1.0, 1.0))); }
 

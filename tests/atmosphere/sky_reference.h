@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -17,6 +18,9 @@
 #include "skylit/spectrum/cie.h"
 
 namespace skylit::test_reference {
+
+// Whether the tests should print their measured numbers (SKYLIT_REPORT set).
+inline bool report() { return std::getenv("SKYLIT_REPORT") != nullptr; }
 
 // The default atmosphere (aod_550 0.1, 300 DU, Hillaire's multiple scattering) in the
 // rendering bins, built once (0.15 s) and shared by every test that reads it.
