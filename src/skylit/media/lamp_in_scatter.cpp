@@ -177,6 +177,14 @@ void LampInScatter::integrate(const Ray& ray, const RayInLayer& in, double s0, d
 }
 
 Spectrum LampInScatter::along(const Ray& ray, const std::vector<Interval>& lit) const {
+  if (lit.empty()) return Spectrum(0.0f);
+  thread_local std::vector<Interval> emitting;  // reused: no allocation per ray
+  emitting_intervals(ray, lit.front().begin, lit.back().end, emitting);
+  return along(ray, lit, emitting);
+}
+
+Spectrum LampInScatter::along(const Ray& ray, const std::vector<Interval>& lit,
+                              const std::vector<Interval>& emitting) const {
   const Vec3 to_lamp = lamp_.position() - ray.origin;
   const double s0 = dot(to_lamp, ray.direction);
   const double h = std::max(length(to_lamp - s0 * ray.direction), kLampSourceRadiusM);
@@ -188,21 +196,23 @@ Spectrum LampInScatter::along(const Ray& ray, const std::vector<Interval>& lit) 
   const RayInLayer in{span.lo, span.hi, layer_.density(z_in), layer_.inverse_scale_height_per_m() * ray.direction.z};
   double grey = 0;
   Spectrum spectral;
-  thread_local std::vector<Interval> emitting;  // reused: no allocation per ray
-  for (const Interval& piece : lit) {
-    emitting_intervals(ray, piece.begin, piece.end, emitting);
-    for (const Interval& e : emitting) {
-      // The extinction where the piece ends, if the fog beyond the lamp is more than an
-      // optical depth deep (then the far tail needs graded panels).
-      double tail_scale = 0;
-      if (e.end > s0) {
-        const double s_end = std::min(e.end, in.hi);
-        const double rho_end = in.entry_density * std::exp(-in.decay_per_m * (std::min(s_end, 1e12) - in.lo));
-        const double sigma_end = sigma_max_ * std::max(rho_end, 0.0);
-        if (sigma_end * (s_end - std::max(s0, e.begin)) > 1) tail_scale = sigma_end;
-      }
-      integrate(ray, in, s0, h, angle_at(e.begin), angle_at(e.end), tail_scale, grey, spectral);
+  // The pieces both lit and inside the emission cone: both lists are sorted, so one
+  // pass over them finds their overlaps.
+  for (size_t i = 0, j = 0; i < lit.size() && j < emitting.size();) {
+    const Interval e{std::max(lit[i].begin, emitting[j].begin), std::min(lit[i].end, emitting[j].end)};
+    if (lit[i].end < emitting[j].end) ++i;
+    else ++j;
+    if (!(e.end > e.begin)) continue;
+    // The extinction where the piece ends, if the fog beyond the lamp is more than an
+    // optical depth deep (then the far tail needs graded panels).
+    double tail_scale = 0;
+    if (e.end > s0) {
+      const double s_end = std::min(e.end, in.hi);
+      const double rho_end = in.entry_density * std::exp(-in.decay_per_m * (std::min(s_end, 1e12) - in.lo));
+      const double sigma_end = sigma_max_ * std::max(rho_end, 0.0);
+      if (sigma_end * (s_end - std::max(s0, e.begin)) > 1) tail_scale = sigma_end;
     }
+    integrate(ray, in, s0, h, angle_at(e.begin), angle_at(e.end), tail_scale, grey, spectral);
   }
   const float scale = static_cast<float>(layer_.single_scattering_albedo() / h);
   if (grey_) return spectrum_ * (sigma_ * static_cast<float>(grey * scale));

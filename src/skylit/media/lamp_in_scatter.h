@@ -54,6 +54,9 @@ class LampInScatter {
   // W m⁻² sr⁻¹ nm⁻¹ scattered toward the ray's origin over the lit parts of the ray
   // (`lit`: parameter intervals along the unit direction, sorted, within the ray).
   Spectrum along(const Ray& ray, const std::vector<Interval>& lit) const;
+  // The same when the parts inside the emission cone (emitting_intervals over a range
+  // covering `lit`) are known already.
+  Spectrum along(const Ray& ray, const std::vector<Interval>& lit, const std::vector<Interval>& emitting) const;
 
   // The parts of [s_min, s_max] where the lamp sends light (inside its emission cone,
   // γ ≤ max_gamma_deg of its distribution), into `out`.

@@ -107,7 +107,7 @@ Spectrum SceneLamps::in_scattered(const Ray& ray, double distance) const {
     lamp.glow->emitting_intervals(ray, span.lo, span.hi, emitting);
     if (emitting.empty()) continue;
     lamp.volumes->sunlit_intervals(ray, emitting.front().begin, emitting.back().end, lit);
-    if (!lit.empty()) sum += lamp.glow->along(ray, lit);
+    if (!lit.empty()) sum += lamp.glow->along(ray, lit, emitting);
   }
   return sum;
 }
