@@ -31,7 +31,12 @@ TEST(LampGlowImage, PixelCentresMatchExactGlow) {
   const SceneLamps lamps(scene.lights, tracer, meshes, &layer);
   const int width = 480, height = 270;
   const PinholeCamera camera(scene.camera, width, height);
-  const LampGlowImage glow(camera, width, height, LampGlowImage::trace_centres(camera, width, height, tracer), lamps);
+  std::vector<ViewHit> centre_hits(static_cast<size_t>(width) * height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      if (const std::optional<Hit> hit = tracer.intersect(camera.ray_through(x + 0.5, y + 0.5)))
+        centre_hits[static_cast<size_t>(y) * width + x] = {hit->mesh_id, hit->t};
+  const LampGlowImage glow(camera, width, height, centre_hits, lamps);
   std::vector<double> errors;
   for (int y = 0; y < height; ++y)
     for (int x = y % 3; x < width; x += 3) {

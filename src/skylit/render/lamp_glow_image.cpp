@@ -42,19 +42,6 @@ bool interpolates(const std::array<Xyz, 4>& c, const Xyz& middle, double u, doub
 
 }  // namespace
 
-std::vector<ViewHit> LampGlowImage::trace_centres(const PinholeCamera& camera, int width, int height,
-                                                  const RayTracer& tracer) {
-  std::vector<ViewHit> hits(static_cast<size_t>(width) * height);
-  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y != rows.end(); ++y)
-      for (int x = 0; x < width; ++x) {
-        const std::optional<Hit> hit = tracer.intersect(camera.ray_through(x + 0.5, y + 0.5));
-        if (hit) hits[static_cast<size_t>(y) * width + x] = {hit->mesh_id, hit->t};
-      }
-  });
-  return hits;
-}
-
 LampGlowImage::LampGlowImage(const PinholeCamera& camera, int width, int height,
                              const std::vector<ViewHit>& centre_hits, const SceneLamps& lamps)
     : camera_(camera), lamps_(lamps), width_(width), height_(height), centres_(static_cast<size_t>(width) * height) {

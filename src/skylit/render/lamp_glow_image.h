@@ -46,9 +46,6 @@ class LampGlowImage {
   // the ray through each pixel's centre meets (width × height, row by row from the top).
   LampGlowImage(const PinholeCamera& camera, int width, int height, const std::vector<ViewHit>& centre_hits,
                 const SceneLamps& lamps);
-  // What the rays through the pixel centres meet.
-  static std::vector<ViewHit> trace_centres(const PinholeCamera& camera, int width, int height,
-                                            const RayTracer& tracer);
 
   // Absolute XYZ of the glow at a pixel's centre.
   Xyz centre_glow(int x, int y) const {
