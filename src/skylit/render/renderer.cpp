@@ -56,14 +56,11 @@ Renderer::Renderer(const Scene& scene)
                            sky_.sky_irradiance({0, 0, 1}) * static_cast<float>(kDefaultCloudAmbientFraction / kPi);
     cloud_sky_share_ = measure_cloud_sky_share();
   }
-  if (scene.fog) {
-    std::vector<const TriangleMesh*> meshes;
-    for (const SceneObject& object : scene.objects) meshes.push_back(&object.mesh);
-    fog_ = std::make_unique<FogMedium>(*scene.fog, meshes, sky_, scene.camera.position);
-  }
+  // The scene's meshes, for the fog's and the lamps' shadow volumes.
+  std::vector<const TriangleMesh*> meshes;
+  for (const SceneObject& object : scene.objects) meshes.push_back(&object.mesh);
+  if (scene.fog) fog_ = std::make_unique<FogMedium>(*scene.fog, meshes, sky_, scene.camera.position);
   if (!scene.lights.empty()) {
-    std::vector<const TriangleMesh*> meshes;
-    for (const SceneObject& object : scene.objects) meshes.push_back(&object.mesh);
     lamps_ = std::make_unique<SceneLamps>(scene.lights, tracer_, meshes, fog_ ? &fog_->layer() : nullptr);
   }
 }
