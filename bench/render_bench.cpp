@@ -6,7 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "skylit/io/scene_loader.h"
+#include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/renderer.h"
 
 namespace {

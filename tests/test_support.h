@@ -10,7 +10,7 @@
 #include <random>
 #include <string>
 
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit::testing {
 

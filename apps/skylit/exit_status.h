@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <exception>
 
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit::cli {
 

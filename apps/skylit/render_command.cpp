@@ -8,10 +8,10 @@
 
 #include "commands.h"
 #include "progress_bar.h"
-#include "skylit/io/image.h"
-#include "skylit/io/scene_loader.h"
+#include "skylit/io/image/image.h"
+#include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/renderer.h"
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit::cli {
 

@@ -4,8 +4,8 @@
 
 #include "atmosphere_options.h"
 #include "commands.h"
-#include "skylit/io/image.h"
-#include "skylit/io/tone_map.h"
+#include "skylit/io/image/image.h"
+#include "skylit/io/image/tone_map.h"
 #include "skylit/render/sky_image.h"
 
 namespace skylit::cli {

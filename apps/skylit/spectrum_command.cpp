@@ -6,7 +6,7 @@
 #include "atmosphere_options.h"
 #include "commands.h"
 #include "skylit/atmosphere/solar_spectrum.h"
-#include "skylit/io/plot.h"
+#include "skylit/figures/plot.h"
 
 namespace skylit::cli {
 

@@ -1,5 +1,5 @@
 // `skylit sun`: where the sun is for a site and an instant (the NREL Solar Position
-// Algorithm, src/skylit/atmosphere/solar_position.h), as a line for people or as one
+// Algorithm, src/skylit/sun/solar_position.h), as a line for people or as one
 // JSON object for programs.
 #include <cmath>
 #include <cstdio>
@@ -8,9 +8,9 @@
 #include <string>
 
 #include "commands.h"
-#include "skylit/atmosphere/delta_t.h"
-#include "skylit/atmosphere/solar_position.h"
-#include "skylit/util/error.h"
+#include "skylit/sun/delta_t.h"
+#include "skylit/sun/solar_position.h"
+#include "skylit/core/error.h"
 
 namespace skylit::cli {
 

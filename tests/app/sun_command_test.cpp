@@ -7,7 +7,7 @@
 #include <string>
 
 #include "../test_support.h"
-#include "skylit/atmosphere/solar_position.h"
+#include "skylit/sun/solar_position.h"
 
 namespace skylit {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "image_test_util.h"
-#include "skylit/io/image.h"
+#include "skylit/io/image/image.h"
 
 namespace skylit {
 namespace {

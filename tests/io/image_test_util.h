@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "skylit/io/image.h"
+#include "skylit/io/image/image.h"
 
 namespace skylit::test {
 

@@ -13,8 +13,8 @@
 
 #include "image_test_util.h"
 #include "skylit/io/atomic_file.h"
-#include "skylit/io/image.h"
-#include "skylit/util/error.h"
+#include "skylit/io/image/image.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "skylit/io/raster.h"
+#include "skylit/figures/raster.h"
 
 namespace skylit::test {
 

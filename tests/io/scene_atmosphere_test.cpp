@@ -4,9 +4,9 @@
 
 #include "../test_support.h"
 #include "skylit/atmosphere/optical_properties.h"
-#include "skylit/atmosphere/solar_position.h"
-#include "skylit/io/scene_loader.h"
-#include "skylit/util/error.h"
+#include "skylit/sun/solar_position.h"
+#include "skylit/io/scene/scene_loader.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

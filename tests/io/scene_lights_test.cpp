@@ -5,9 +5,9 @@
 #include <string>
 
 #include "../test_support.h"
-#include "skylit/io/scene_loader.h"
+#include "skylit/io/scene/scene_loader.h"
 #include "skylit/spectrum/cie.h"
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

@@ -1,13 +1,13 @@
 // Scene files: valid ones load with the values they state; every kind of mistake a
 // user can make is an InputError whose one line names the file and the place.
-#include "skylit/io/scene_loader.h"
+#include "skylit/io/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "../test_support.h"
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

@@ -1,14 +1,14 @@
 // The display transform's parts against their definitions in docs/images.md: the
 // saturation-based exposure, metering by log-average luminance, the tone curve's shape,
 // and gamut mapping that keeps luminance and hue.
-#include "skylit/io/tone_map.h"
+#include "skylit/io/image/tone_map.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "image_test_util.h"
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 #include "../test_support.h"
 
 namespace skylit {

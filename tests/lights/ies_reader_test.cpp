@@ -8,8 +8,8 @@
 #include <random>
 #include <string>
 
-#include "skylit/geometry/vec3.h"
-#include "skylit/util/error.h"
+#include "skylit/core/vec3.h"
+#include "skylit/core/error.h"
 #include "../test_support.h"
 
 namespace skylit {

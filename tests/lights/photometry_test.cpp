@@ -8,7 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 namespace {

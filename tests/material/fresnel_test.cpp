@@ -9,7 +9,7 @@
 #include <cmath>
 #include <complex>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/material/angular_table.h"
 #include "skylit/material/optical_constants.h"
 #include "skylit/spectrum/tabulated.h"

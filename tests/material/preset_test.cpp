@@ -6,12 +6,12 @@
 
 #include <string>
 
-#include "skylit/io/scene_parts.h"
+#include "skylit/io/scene/scene_parts.h"
 #include "skylit/material/presets.h"
 #include "skylit/material/reflection.h"
 #include "skylit/spectrum/cie.h"
 #include "skylit/spectrum/color_space.h"
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

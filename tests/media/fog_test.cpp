@@ -16,7 +16,7 @@
 #include "skylit/media/fog_phase.h"
 #include "skylit/media/fog_settings.h"
 #include "skylit/media/fog_sun_integral.h"
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 #include "../reference_quadrature.h"
 
 namespace skylit {

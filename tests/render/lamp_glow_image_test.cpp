@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "skylit/io/scene_loader.h"
+#include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/lamp_glow_image.h"
 #include "skylit/spectrum/cie.h"
 

@@ -7,7 +7,7 @@
 
 #include "skylit/atmosphere/phase_functions.h"
 #include "skylit/atmosphere/shell_geometry.h"
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/spectrum/spectral_math.h"
 
 namespace skylit {

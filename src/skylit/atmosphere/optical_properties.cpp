@@ -5,12 +5,12 @@
 
 #include "skylit/spectrum/illuminants.h"
 #include "skylit/spectrum/tabulated.h"
+#include "skylit/core/angles.h"
 
 namespace skylit {
 
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 constexpr double kCo2PartsPerVolume = 360e-6;  // Bodhaine et al.'s reference air
 constexpr double kLoschmidtPerCm3 = 2.546899e19;  // N_s at 288.15 K, 1013.25 hPa (Bodhaine Eq. 2)
 constexpr double kAvogadro = 6.0221367e23;
@@ -77,7 +77,7 @@ double rayleigh_cross_section_m2(double wavelength_nm) {
   const double n = refractive_index_air(wavelength_nm);
   const double lambda_cm = wavelength_nm * 1e-7;
   const double ratio = (n * n - 1.0) / (n * n + 2.0);
-  const double sigma_cm2 = 24.0 * std::pow(kPiD, 3) * ratio * ratio /
+  const double sigma_cm2 = 24.0 * std::pow(kPi, 3) * ratio * ratio /
                            (std::pow(lambda_cm, 4) * kLoschmidtPerCm3 * kLoschmidtPerCm3) * king_factor_air(wavelength_nm);
   return sigma_cm2 * 1e-4;
 }

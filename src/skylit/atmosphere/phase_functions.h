@@ -4,9 +4,11 @@
 
 #include <cmath>
 
+#include "skylit/core/angles.h"
+
 namespace skylit {
 
-inline constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+inline constexpr double kFourPi = 4.0 * kPi;
 
 // Rayleigh scattering with molecular anisotropy (Chandrasekhar 1950): γ = ρ/(2 − ρ)
 // for the depolarisation ratio ρ; γ = 0 gives the textbook 3/(16π)(1 + cos²θ).
@@ -24,7 +26,7 @@ inline double henyey_greenstein_phase(double cos_theta, double g) {
 // Rayleigh-like term; g is its parameter (close to the mean cosine).
 inline double cornette_shanks_phase(double cos_theta, double g) {
   const double denom = 1.0 + g * g - 2.0 * g * cos_theta;
-  return 3.0 / (8.0 * 3.14159265358979323846) * (1.0 - g * g) * (1.0 + cos_theta * cos_theta) /
+  return 3.0 / (8.0 * kPi) * (1.0 - g * g) * (1.0 + cos_theta * cos_theta) /
          ((2.0 + g * g) * denom * std::sqrt(denom));
 }
 

@@ -8,7 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "skylit/atmosphere/scattering_integrator.h"
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/spectrum/spectrum_grid.h"
 
 namespace skylit {

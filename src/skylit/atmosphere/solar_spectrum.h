@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "skylit/atmosphere/atmosphere_settings.h"
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "skylit/core/angles.h"
+
 namespace skylit {
 
 double limb_darkening_exponent(double wavelength_nm) { return -0.023 + 0.292 / (wavelength_nm * 1e-3); }
@@ -9,7 +11,7 @@ double limb_darkening_exponent(double wavelength_nm) { return -0.023 + 0.292 / (
 Spectrum sun_disc_radiance(const Spectrum& irradiance, const SpectralBands& bands, double angular_radius_rad,
                            double angle_from_centre_rad) {
   if (angle_from_centre_rad >= angular_radius_rad) return Spectrum(0.0f);
-  const double solid_angle = 2.0 * 3.14159265358979323846 * (1.0 - std::cos(angular_radius_rad));
+  const double solid_angle = 2.0 * kPi * (1.0 - std::cos(angular_radius_rad));
   const double s = angle_from_centre_rad / angular_radius_rad;
   const double mu = std::sqrt(1.0 - s * s);
   Spectrum out;

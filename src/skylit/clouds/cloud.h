@@ -59,7 +59,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/spectrum/spectrum.h"
 
 namespace skylit {

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "skylit/geometry/triangle_mesh.h"
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 

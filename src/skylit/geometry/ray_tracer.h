@@ -13,7 +13,7 @@
 #include <optional>
 
 #include "skylit/geometry/triangle_mesh.h"
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 

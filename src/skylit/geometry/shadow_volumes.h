@@ -26,7 +26,7 @@
 
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/triangle_mesh.h"
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 

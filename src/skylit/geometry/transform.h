@@ -5,7 +5,7 @@
 #include <array>
 
 #include "skylit/geometry/triangle_mesh.h"
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 

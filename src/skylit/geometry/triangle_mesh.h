@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 

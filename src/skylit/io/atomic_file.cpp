@@ -14,7 +14,7 @@
 #include <string>
 #include <system_error>
 
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

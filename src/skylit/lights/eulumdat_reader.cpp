@@ -10,8 +10,8 @@
 #include <stdexcept>
 
 #include "skylit/lights/number_text.h"
-#include "skylit/util/error.h"
-#include "skylit/util/text_file.h"
+#include "skylit/core/error.h"
+#include "skylit/core/text_file.h"
 
 namespace skylit {
 namespace {

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/lights/luminaire.h"
 
 namespace skylit {

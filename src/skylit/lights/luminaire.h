@@ -4,7 +4,7 @@
 // I·cos θ / d² it puts on a surface (no occlusion here). Frame: docs/lights.md.
 #pragma once
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/lights/photometry.h"
 
 namespace skylit {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skylit/core/angles.h"
+
 namespace skylit {
 
 FresnelSP fresnel_sp(double cos_incident, std::complex<double> eta) {
@@ -30,7 +32,7 @@ PaneOptics pane_optics(double cos_incident, double n, double k, double thickness
   const FresnelSP r = fresnel_sp(cos_i, n);
   const double sin2_t = (1.0 - cos_i * cos_i) / (n * n);
   const double cos_t = std::sqrt(std::max(0.0, 1.0 - sin2_t));
-  const double alpha_per_m = 4.0 * 3.14159265358979323846 * k / (wavelength_nm * 1e-9);
+  const double alpha_per_m = 4.0 * kPi * k / (wavelength_nm * 1e-9);
   const double tau = cos_t > 0 ? std::exp(-alpha_per_m * thickness_m / cos_t) : 0.0;
   PaneOptics out;
   for (const double rj : {r.s, r.p}) {

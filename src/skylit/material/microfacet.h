@@ -18,7 +18,7 @@
 // EGSR 2007, §3–5, give this form.
 #pragma once
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 

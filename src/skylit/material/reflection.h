@@ -14,7 +14,7 @@
 
 #include <optional>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/material/material.h"
 #include "skylit/spectrum/spectrum.h"
 

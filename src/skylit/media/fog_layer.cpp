@@ -18,7 +18,7 @@
 #include <cmath>
 #include <string>
 
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

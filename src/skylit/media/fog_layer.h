@@ -11,7 +11,7 @@
 
 #include <array>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/media/fog_phase.h"
 #include "skylit/media/fog_settings.h"
 #include "skylit/spectrum/spectrum.h"

@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "skylit/atmosphere/atmosphere.h"
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/spectrum/spectrum.h"
 

@@ -13,7 +13,7 @@
 // the viewpoint and s1 still attenuates.
 #pragma once
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/spectrum/spectrum.h"
 

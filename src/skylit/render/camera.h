@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "skylit/geometry/ray_tracer.h"
-#include "skylit/render/scene.h"
+#include "skylit/scene/scene.h"
 
 namespace skylit {
 

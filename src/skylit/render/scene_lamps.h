@@ -19,7 +19,7 @@
 #include "skylit/lights/intensity_map.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/lamp_in_scatter.h"
-#include "skylit/render/scene.h"
+#include "skylit/scene/scene.h"
 #include "skylit/render/surface_cache.h"
 
 namespace skylit {

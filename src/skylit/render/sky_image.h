@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "skylit/atmosphere/atmosphere.h"
-#include "skylit/io/image.h"
+#include "skylit/spectrum/xyz_image.h"
 
 namespace skylit {
 

@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 #include "skylit/spectrum/spectrum.h"
 
 namespace skylit {

@@ -17,7 +17,7 @@
 
 #include <vector>
 
-#include "skylit/geometry/vec3.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 

@@ -16,7 +16,7 @@
 
 #include "skylit/spectrum/cie.h"
 #include "skylit/spectrum/illuminants.h"
-#include "skylit/util/error.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 

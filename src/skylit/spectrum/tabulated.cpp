@@ -4,8 +4,8 @@
 #include <charconv>
 #include <string>
 
-#include "skylit/util/embedded_data.h"
-#include "skylit/util/error.h"
+#include "skylit/core/embedded_data.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 

@@ -1,0 +1,68 @@
+// XyzImage, choosing a format from the file name, and write_image, which encodes in
+// memory and writes through an AtomicFile (the encoders live in *_writer.cpp).
+#include "skylit/io/image/image.h"
+
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "skylit/io/atomic_file.h"
+#include "skylit/io/image/image_encoders.h"
+#include "skylit/core/error.h"
+
+namespace skylit {
+
+void check_image_shape(const XyzImage& image) {
+  if (image.width < 0 || image.height < 0 ||
+      image.xyz.size() != 3 * static_cast<std::size_t>(image.width) * image.height)
+    throw std::invalid_argument("XyzImage: xyz holds " + std::to_string(image.xyz.size()) +
+                                " values, not 3 x " + std::to_string(image.width) + " x " +
+                                std::to_string(image.height));
+}
+
+bool pixel_is_finite(const XyzImage& image, std::size_t index) {
+  const float* p = &image.xyz[3 * index];
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+Xyz finite_pixel_or_black(const XyzImage& image, std::size_t index) {
+  if (!pixel_is_finite(image, index)) return {0, 0, 0};
+  const float* p = &image.xyz[3 * index];
+  return {p[0], p[1], p[2]};
+}
+
+ImageFormat image_format_from_path(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".png") return ImageFormat::png;
+  if (ext == ".exr") return ImageFormat::exr;
+  if (ext == ".pfm") return ImageFormat::pfm;
+  if (ext == ".hdr") return ImageFormat::hdr;
+  throw InputError("cannot write \"" + path.string() + "\": " +
+                   (ext.empty() ? std::string("no file extension") : "unknown extension \"" + ext + "\"") +
+                   "; use .png, .exr, .pfm or .hdr");
+}
+
+void write_image(const XyzImage& image, const std::filesystem::path& path,
+                 const DisplayOptions& options) {
+  // Everything that can be refused is refused before a temporary file exists.
+  const ImageFormat format = image_format_from_path(path);
+  check_image_shape(image);
+  if (image.width == 0 || image.height == 0)
+    throw std::invalid_argument("write_image: empty image for \"" + path.string() + "\"");
+  if (options.exposure_ev && !std::isfinite(*options.exposure_ev))
+    throw InputError("cannot write \"" + path.string() + "\": exposure_ev is not finite");
+
+  AtomicFile file(path);  // checks the folder before the (possibly slow) encoding
+  Bytes bytes;
+  switch (format) {
+    case ImageFormat::exr: bytes = encode_exr(image); break;
+    case ImageFormat::pfm: bytes = encode_pfm(image); break;
+    case ImageFormat::hdr: bytes = encode_rgbe(image); break;
+    case ImageFormat::png: bytes = encode_png(image, options); break;
+  }
+  file.commit(bytes);
+}
+
+}  // namespace skylit

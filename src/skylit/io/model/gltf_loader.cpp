@@ -1,0 +1,257 @@
+// glTF 2.0 geometry (.gltf with external or data-URI buffers, and .glb) through
+// tinygltf: triangle-list primitives of every mesh instance in the scene, placed by
+// the node hierarchy. Everything else in the file is ignored. The file's own axes
+// are kept (+Y up); load_mesh_file turns them into skylit's frame.
+//
+// This is the one translation unit that compiles tinygltf's implementation. skylit
+// reads only geometry, so images are never decoded: no stb_image, no image files.
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "skylit/io/model/mesh_io.h"
+#include "skylit/geometry/transform.h"
+#include "skylit/core/error.h"
+
+namespace skylit {
+namespace {
+
+// Required extensions that change only appearance, which skylit ignores anyway.
+// Any other required extension (Draco, meshopt compression, ...) changes how the
+// geometry is stored, so reading on would give wrong shapes.
+bool harmless_extension(const std::string& name) {
+  for (const char* prefix : {"KHR_materials_", "KHR_texture_", "EXT_texture_", "KHR_lights_punctual",
+                             "KHR_mesh_quantization"})  // quantized positions are read below
+    if (name.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
+bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                  void*) {
+  return true;
+}
+
+std::string one_line(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+// One accessor's elements, bounds-checked against its buffer once so reads need
+// no further checks.
+struct AccessorView {
+  const unsigned char* data = nullptr;
+  size_t count = 0;
+  size_t stride = 0;
+  int component_type = 0;
+  int components = 0;
+  bool normalized = false;
+
+  // Component c of element i as a double, per the glTF rules for normalized ints.
+  double get(size_t i, int c) const {
+    const unsigned char* p = data + i * stride;
+    switch (component_type) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: return read<float>(p, c, 1.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return read<uint8_t>(p, c, 255.0);
+      case TINYGLTF_COMPONENT_TYPE_BYTE: return read<int8_t>(p, c, 127.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return read<uint16_t>(p, c, 65535.0);
+      case TINYGLTF_COMPONENT_TYPE_SHORT: return read<int16_t>(p, c, 32767.0);
+      default: return read<uint32_t>(p, c, 4294967295.0);
+    }
+  }
+
+ private:
+  template <typename T>
+  double read(const unsigned char* p, int c, double norm) const {
+    T value;
+    std::memcpy(&value, p + c * sizeof(T), sizeof(T));
+    const double x = static_cast<double>(value);
+    return normalized ? std::max(x / norm, -1.0) : x;
+  }
+};
+
+class GltfReader {
+ public:
+  GltfReader(const tinygltf::Model& model, std::string name) : model_(model), name_(std::move(name)) {}
+
+  TriangleMesh read_scene() {
+    std::vector<int> roots;
+    if (model_.defaultScene >= 0 && static_cast<size_t>(model_.defaultScene) < model_.scenes.size())
+      roots = model_.scenes[model_.defaultScene].nodes;
+    else if (!model_.scenes.empty())
+      roots = model_.scenes[0].nodes;
+    else
+      roots = root_nodes();
+    for (int node : roots) visit(node, Transform::identity(), 0);
+    return std::move(out_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(name_ + ": " + what); }
+
+  std::vector<int> root_nodes() const {
+    std::vector<bool> is_child(model_.nodes.size(), false);
+    for (const auto& node : model_.nodes)
+      for (int c : node.children)
+        if (c >= 0 && static_cast<size_t>(c) < is_child.size()) is_child[c] = true;
+    std::vector<int> roots;
+    for (size_t i = 0; i < is_child.size(); ++i)
+      if (!is_child[i]) roots.push_back(static_cast<int>(i));
+    return roots;
+  }
+
+  Transform local_transform(const tinygltf::Node& node) const {
+    if (node.matrix.size() == 16) {
+      std::array<double, 16> c;
+      std::copy(node.matrix.begin(), node.matrix.end(), c.begin());
+      return Transform::from_column_major_4x4(c);
+    }
+    Transform t;
+    if (node.translation.size() == 3)
+      t = Transform::translation({node.translation[0], node.translation[1], node.translation[2]});
+    if (node.rotation.size() == 4) {
+      const auto& q = node.rotation;
+      if (!(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] > 0)) fail("node '" + node.name + "' has a zero rotation");
+      t = t * Transform::rotation_quaternion(q[0], q[1], q[2], q[3]);
+    }
+    if (node.scale.size() == 3) t = t * Transform::scale({node.scale[0], node.scale[1], node.scale[2]});
+    return t;
+  }
+
+  void visit(int index, const Transform& parent, size_t depth) {
+    if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size())
+      fail("scene refers to node " + std::to_string(index) + " which does not exist");
+    // A tree cannot be deeper than its node count, so deeper means a cycle; the
+    // fixed cap keeps a hostile file from exhausting the stack.
+    if (depth > model_.nodes.size() || depth > kMaxDepth)
+      fail("the node hierarchy has a cycle or is deeper than " + std::to_string(kMaxDepth) + " levels");
+    const tinygltf::Node& node = model_.nodes[index];
+    const Transform world = parent * local_transform(node);
+    if (node.mesh >= 0) out_.append(transformed(mesh(node.mesh), world));
+    for (int child : node.children) visit(child, world, depth + 1);
+  }
+
+  // A mesh in its own space, built once however many nodes use it.
+  const TriangleMesh& mesh(int index) {
+    if (static_cast<size_t>(index) >= model_.meshes.size())
+      fail("a node refers to mesh " + std::to_string(index) + " which does not exist");
+    auto [it, inserted] = meshes_.try_emplace(index);
+    if (inserted)
+      for (const auto& primitive : model_.meshes[index].primitives) it->second.append(read_primitive(primitive));
+    return it->second;
+  }
+
+  TriangleMesh read_primitive(const tinygltf::Primitive& primitive) const {
+    TriangleMesh mesh;
+    // tinygltf fills in the spec's default mode (4, triangles) when absent.
+    if (primitive.mode != TINYGLTF_MODE_TRIANGLES) return mesh;
+    const auto position = primitive.attributes.find("POSITION");
+    if (position == primitive.attributes.end()) return mesh;
+
+    const AccessorView p = view(position->second, "POSITION");
+    if (p.components != 3) fail("POSITION accessor is not VEC3");
+    mesh.vertices.reserve(p.count);
+    for (size_t i = 0; i < p.count; ++i) mesh.vertices.push_back({p.get(i, 0), p.get(i, 1), p.get(i, 2)});
+
+    std::vector<uint32_t> indices;
+    if (primitive.indices >= 0) {
+      const AccessorView ix = view(primitive.indices, "indices");
+      if (ix.components != 1 || ix.normalized || ix.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+          ix.component_type == TINYGLTF_COMPONENT_TYPE_BYTE || ix.component_type == TINYGLTF_COMPONENT_TYPE_SHORT)
+        fail("indices accessor must hold unsigned integer scalars");
+      indices.reserve(ix.count);
+      for (size_t i = 0; i < ix.count; ++i) {
+        const double v = ix.get(i, 0);
+        if (v >= static_cast<double>(p.count))
+          fail("an index (" + std::to_string(static_cast<uint64_t>(v)) + ") is beyond the " +
+               std::to_string(p.count) + " vertices");
+        indices.push_back(static_cast<uint32_t>(v));
+      }
+    } else {
+      // Not indexed: consecutive vertices form triangles.
+      for (size_t i = 0; i < p.count; ++i) indices.push_back(static_cast<uint32_t>(i));
+    }
+    if (indices.size() % 3 != 0)
+      fail("a triangle primitive has " + std::to_string(indices.size()) + " indices, not a multiple of 3");
+    for (size_t i = 0; i < indices.size(); i += 3) mesh.triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
+    return mesh;
+  }
+
+  AccessorView view(int accessor_index, const char* what) const {
+    const std::string label = std::string(what) + " accessor " + std::to_string(accessor_index);
+    if (accessor_index < 0 || static_cast<size_t>(accessor_index) >= model_.accessors.size())
+      fail(label + " does not exist");
+    const tinygltf::Accessor& a = model_.accessors[accessor_index];
+    if (a.sparse.isSparse) fail(label + " is sparse, which skylit does not read");
+    if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= model_.bufferViews.size())
+      fail(label + " has no buffer view");
+    const tinygltf::BufferView& bv = model_.bufferViews[a.bufferView];
+    if (bv.buffer < 0 || static_cast<size_t>(bv.buffer) >= model_.buffers.size())
+      fail(label + ": its buffer view has no buffer");
+    const std::vector<unsigned char>& buffer = model_.buffers[bv.buffer].data;
+
+    AccessorView v;
+    v.count = a.count;
+    v.component_type = a.componentType;
+    v.normalized = a.normalized;
+    const int component_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
+    v.components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
+    if (component_size <= 0 || v.components <= 0 || v.components > 4) fail(label + " has an unknown type");
+    const size_t element = static_cast<size_t>(component_size) * static_cast<size_t>(v.components);
+    v.stride = bv.byteStride ? bv.byteStride : element;
+    if (v.stride < element) fail(label + ": byteStride is smaller than one element");
+
+    // Everything read must lie in the view, and the view in the buffer; written
+    // so that no sum or product can overflow.
+    if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset)
+      fail(label + ": buffer view runs past the end of its buffer");
+    if (v.count > 0) {
+      const size_t room = bv.byteLength;
+      if (a.byteOffset > room || element > room - a.byteOffset ||
+          (v.count - 1) > (room - a.byteOffset - element) / v.stride)
+        fail(label + " runs past the end of its buffer view");
+    }
+    v.data = buffer.data() + bv.byteOffset + a.byteOffset;
+    return v;
+  }
+
+  static constexpr size_t kMaxDepth = 1000;
+  const tinygltf::Model& model_;
+  std::string name_;
+  std::map<int, TriangleMesh> meshes_;
+  TriangleMesh out_;
+};
+
+}  // namespace
+
+TriangleMesh load_gltf_file(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&ignore_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  // Binary or JSON by the GLB magic rather than the extension, so a .glb saved
+  // as .gltf (or the reverse) still loads.
+  char magic[4] = {};
+  std::ifstream(path, std::ios::binary).read(magic, 4);
+  const bool binary = std::memcmp(magic, "glTF", 4) == 0;
+  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
+                         : loader.LoadASCIIFromFile(&model, &err, &warn, name);
+  if (!ok) throw InputError(name + ": cannot read glTF: " + one_line(err.empty() ? warn : err));
+  for (const std::string& ext : model.extensionsRequired)
+    if (!harmless_extension(ext)) throw InputError(name + ": requires glTF extension " + ext + ", which skylit does not read");
+  return GltfReader(model, name).read_scene();
+}
+
+}  // namespace skylit

@@ -1,0 +1,64 @@
+// Mesh file dispatch by extension, the y-up → z-up turn, and the checks every
+// loaded mesh must pass before it reaches the ray tracer (see mesh_io.h).
+#include "skylit/io/model/mesh_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <system_error>
+
+#include "skylit/core/error.h"
+
+namespace skylit {
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// Embree stores single-precision coordinates, so a double that overflows float is
+// as unusable as a NaN.
+bool usable(double c) { return std::isfinite(c) && std::isfinite(static_cast<float>(c)); }
+
+void check(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  if (mesh.triangles.empty()) throw InputError(path.string() + ": the file holds no triangles");
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vec3& v = mesh.vertices[i];
+    if (!usable(v.x) || !usable(v.y) || !usable(v.z))
+      throw InputError(path.string() + ": vertex " + std::to_string(i) +
+                       " has a coordinate that is not a finite number");
+  }
+  // The loaders check indices already; this guards the ray tracer against a slip.
+  for (const auto& t : mesh.triangles)
+    for (uint32_t index : t)
+      if (index >= mesh.vertices.size())
+        throw InputError(path.string() + ": a triangle refers to vertex " + std::to_string(index) + " of " +
+                         std::to_string(mesh.vertices.size()));
+}
+
+}  // namespace
+
+TriangleMesh load_mesh_file(const std::filesystem::path& path, UpAxis up_axis) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": mesh file not found");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
+
+  const std::string ext = lower(path.extension().string());
+  TriangleMesh mesh;
+  if (ext == ".obj")
+    mesh = load_obj_file(path);
+  else if (ext == ".gltf" || ext == ".glb")
+    mesh = load_gltf_file(path);
+  else
+    throw InputError(path.string() + ": unknown mesh file extension '" + path.extension().string() +
+                     "' (expected .gltf, .glb or .obj)");
+
+  if (up_axis == UpAxis::y)
+    for (Vec3& v : mesh.vertices) v = {v.x, -v.z, v.y};
+  check(mesh, path);
+  return mesh;
+}
+
+}  // namespace skylit

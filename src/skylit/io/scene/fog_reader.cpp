@@ -1,0 +1,43 @@
+// The `fog` part of a scene file: a fog layer near the ground (docs/fog.md).
+#include <cmath>
+
+#include "skylit/io/scene/scene_parts.h"
+#include "skylit/media/fog_layer.h"
+#include "skylit/core/error.h"
+
+namespace skylit {
+
+FogSettings read_fog(const JsonReader& j) {
+  j.allow_only({"density_at_ground", "visibility_m", "scale_height_m", "bottom_m", "top_m",
+                "unit_density_extinction_per_m", "reference_wavelength_nm", "wavelength_exponent",
+                "single_scattering_albedo", "phase", "droplet_diameter_um", "asymmetry"});
+  FogSettings fog;
+  if (j.has("density_at_ground") && j.has("visibility_m")) j.fail("give density_at_ground or visibility_m, not both");
+  if (auto d = j.optional("density_at_ground")) fog.density_at_ground = d->number_in(0, 1e6);
+  if (auto v = j.optional("visibility_m")) fog.ground_visibility_m = v->number_in(1, 1e6);
+  if (auto h = j.optional("scale_height_m")) {
+    fog.scale_height_m = h->number_in(-1e6, 1e6);
+    if (fog.scale_height_m == 0) h->fail_expected("a scale height other than 0 (negative: denser upward)");
+  }
+  if (auto b = j.optional("bottom_m")) fog.bottom_altitude_m = b->number_in(-1e4, 1e5);
+  if (auto t = j.optional("top_m")) fog.top_altitude_m = t->number_in(-1e4, 1e5);
+  if (!(fog.top_altitude_m > fog.bottom_altitude_m)) j.fail("top_m must be above bottom_m");
+  if (auto t = j.optional("unit_density_extinction_per_m")) fog.unit_density_extinction_per_m = t->number_in(0, 1e3);
+  if (auto l = j.optional("reference_wavelength_nm")) fog.reference_wavelength_nm = l->number_in(300, 1000);
+  if (auto b = j.optional("wavelength_exponent")) fog.wavelength_exponent = b->number_in(-4, 4);
+  if (auto a = j.optional("single_scattering_albedo")) fog.single_scattering_albedo = a->number_in(0, 1);
+  if (auto p = j.optional("phase"))
+    fog.phase = p->one_of({"droplet_fit", "henyey_greenstein"}) == "droplet_fit" ? FogPhase::droplet_fit
+                                                                                 : FogPhase::henyey_greenstein;
+  if (auto d = j.optional("droplet_diameter_um")) fog.droplet_diameter_um = d->number_in(5, 50);
+  if (auto g = j.optional("asymmetry")) fog.asymmetry = g->number_in(-0.99, 0.99);
+  // The layer checks the rest (and names the field) when it is built.
+  try {
+    const FogLayer layer(fog);
+  } catch (const InputError& e) {
+    j.fail(e.what());
+  }
+  return fog;
+}
+
+}  // namespace skylit

@@ -1,0 +1,164 @@
+#include "skylit/io/scene/json_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "skylit/core/error.h"
+
+namespace skylit {
+
+namespace {
+std::string join_words(std::initializer_list<std::string_view> words) {
+  std::string out;
+  for (std::string_view w : words) {
+    if (!out.empty()) out += ", ";
+    out += w;
+  }
+  return out;
+}
+
+std::string child_path(const std::string& parent, std::string_view key) {
+  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+}
+}  // namespace
+
+JsonReader::JsonReader(const nlohmann::json& value, std::string source, std::string path)
+    : value_(&value), source_(std::move(source)), path_(std::move(path)) {}
+
+void JsonReader::fail(const std::string& message) const {
+  throw InputError(source_ + ": " + (path_.empty() ? std::string("(top level)") : path_) + ": " + message);
+}
+
+void JsonReader::fail_expected(const std::string& what) const {
+  fail("expected " + what + ", found " + describe_json_value(*value_));
+}
+
+void JsonReader::expect_object() const {
+  if (!value_->is_object()) fail_expected("an object");
+}
+
+bool JsonReader::has(std::string_view key) const {
+  expect_object();
+  return value_->contains(key);
+}
+
+JsonReader JsonReader::required(std::string_view key) const {
+  expect_object();
+  const auto it = value_->find(key);
+  if (it == value_->end()) fail("missing required key '" + std::string(key) + "'");
+  return JsonReader(*it, source_, child_path(path_, key));
+}
+
+std::optional<JsonReader> JsonReader::optional(std::string_view key) const {
+  expect_object();
+  const auto it = value_->find(key);
+  if (it == value_->end()) return std::nullopt;
+  return JsonReader(*it, source_, child_path(path_, key));
+}
+
+void JsonReader::allow_only(std::initializer_list<std::string_view> allowed) const {
+  expect_object();
+  for (const auto& [key, unused] : value_->items()) {
+    bool known = false;
+    for (std::string_view a : allowed) known = known || a == key;
+    if (!known)
+      JsonReader(unused, source_, child_path(path_, key)).fail("unknown key; expected one of: " + join_words(allowed));
+  }
+}
+
+std::vector<std::pair<std::string, JsonReader>> JsonReader::members() const {
+  expect_object();
+  std::vector<std::pair<std::string, JsonReader>> out;
+  for (const auto& [key, value] : value_->items())
+    out.emplace_back(key, JsonReader(value, source_, child_path(path_, key)));
+  return out;
+}
+
+std::vector<JsonReader> JsonReader::elements() const {
+  if (!value_->is_array()) fail_expected("an array");
+  std::vector<JsonReader> out;
+  for (size_t i = 0; i < value_->size(); ++i)
+    out.emplace_back((*value_)[i], source_, path_ + "[" + std::to_string(i) + "]");
+  return out;
+}
+
+double JsonReader::number() const {
+  if (!value_->is_number()) fail_expected("a number");
+  const double v = value_->get<double>();
+  if (!std::isfinite(v)) fail_expected("a finite number");
+  return v;
+}
+
+double JsonReader::number_in(double lo, double hi) const {
+  const double v = number();
+  if (v < lo || v > hi) {
+    std::ostringstream range;
+    range << "a number from " << lo << " to " << hi;
+    fail_expected(range.str());
+  }
+  return v;
+}
+
+int JsonReader::integer_in(int lo, int hi) const {
+  if (!value_->is_number_integer()) fail_expected("an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+  const auto v = value_->get<long long>();
+  if (v < lo || v > hi) fail_expected("an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+  return static_cast<int>(v);
+}
+
+bool JsonReader::boolean() const {
+  if (!value_->is_boolean()) fail_expected("true or false");
+  return value_->get<bool>();
+}
+
+std::string JsonReader::string() const {
+  if (!value_->is_string()) fail_expected("a string");
+  return value_->get<std::string>();
+}
+
+std::string JsonReader::one_of(std::initializer_list<std::string_view> words) const {
+  if (value_->is_string()) {
+    const std::string s = value_->get<std::string>();
+    for (std::string_view w : words)
+      if (w == s) return s;
+  }
+  fail_expected("one of: " + join_words(words));
+}
+
+Vec3 JsonReader::vec3() const {
+  if (!value_->is_array() || value_->size() != 3) fail_expected("an array of 3 numbers");
+  const auto e = elements();
+  return {e[0].number(), e[1].number(), e[2].number()};
+}
+
+std::string describe_json_value(const nlohmann::json& value) {
+  std::string text = value.dump();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return text;
+}
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& source) {
+  try {
+    return nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.byte is the 1-based offset of the character that made the text invalid.
+    const size_t offset = e.byte == 0 ? 0 : std::min<size_t>(e.byte - 1, text.size());
+    size_t line = 1, column = 1;
+    for (size_t i = 0; i < offset; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    // Keep nlohmann's description but drop its "[json.exception...] parse error at ...: " prefix.
+    std::string what = e.what();
+    const size_t detail = what.find(": ");
+    if (detail != std::string::npos) what = what.substr(detail + 2);
+    throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " + what);
+  }
+}
+
+}  // namespace skylit

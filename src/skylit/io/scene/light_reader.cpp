@@ -1,0 +1,115 @@
+// The `lights` part of a scene file (docs/lights.md): luminaires with a position, an
+// aim and a rotation, an intensity distribution from an IES or EULUMDAT file or a
+// simple shape, and a lamp type that gives their spectrum.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "skylit/lights/eulumdat_reader.h"
+#include "skylit/lights/ies_reader.h"
+#include "skylit/lights/lamp_spectrum.h"
+#include "skylit/io/scene/scene_parts.h"
+#include "skylit/spectrum/tabulated.h"
+#include "skylit/core/error.h"
+#include "skylit/core/text_file.h"
+
+namespace skylit {
+
+namespace {
+
+struct Photometry {
+  IntensityDistribution distribution;
+  TiltTable tilt;
+};
+
+Photometry read_shape(const JsonReader& j) {
+  const std::string shape = j.required("shape").one_of({"isotropic", "cosine", "spot"});
+  const double candela = j.required("candela").number_in(0, 1e9);
+  if (shape == "isotropic") return {IntensityDistribution::isotropic(candela), {}};
+  if (shape == "cosine") return {IntensityDistribution::cosine(candela), {}};
+  const double inner = j.required("inner_deg").number_in(0, 180);
+  const double outer = j.required("outer_deg").number_in(0, 180);
+  if (outer < inner) j.required("outer_deg").fail("outer_deg must not be below inner_deg");
+  return {IntensityDistribution::spot(candela, inner, outer), {}};
+}
+
+Photometry read_photometry(const JsonReader& j, const std::filesystem::path& base_dir) {
+  const int given = int(j.has("ies")) + int(j.has("ldt")) + int(j.has("shape"));
+  if (given != 1) j.fail("a light needs exactly one of 'ies' (file), 'ldt' (file) or 'shape'");
+  for (const char* key : {"inner_deg", "outer_deg"})
+    if (j.has(key) && (!j.has("shape") || j.required("shape").string() != "spot"))
+      j.required(key).fail("only a spot shape has cone angles");
+  if (j.has("ies")) {
+    IesPhotometry ies = read_ies(base_dir / j.required("ies").string());
+    return {std::move(ies.distribution), std::move(ies.tilt)};
+  }
+  if (j.has("ldt")) return {read_eulumdat(base_dir / j.required("ldt").string()).distribution, {}};
+  return read_shape(j);
+}
+
+LampSpectrumSettings read_lamp(const JsonReader& j, const std::filesystem::path& base_dir) {
+  LampSpectrumSettings lamp;
+  const JsonReader type = j.required("lamp");
+  if (!lamp_type_from_name(type.string(), lamp.type))
+    type.fail_expected("a lamp type: high_pressure_sodium, colour_enhanced_sodium, metal_halide, "
+                       "metal_halide_4000k, metal_halide_hp5, led, halogen, incandescent, blackbody or table");
+  const bool needs_temperature = lamp.type == LampType::kLed || lamp.type == LampType::kBlackbody;
+  if (j.has("temperature_k") && !needs_temperature)
+    j.required("temperature_k").fail("only an led or a blackbody lamp takes temperature_k");
+  if (j.has("spectrum_file") != (lamp.type == LampType::kTable))
+    j.fail("a lamp of type 'table' needs 'spectrum_file' (and only it takes one)");
+  if (lamp.type == LampType::kLed)
+    lamp.temperature_k = j.optional("temperature_k") ? j.required("temperature_k").number_in(kLedMinCctK, kLedMaxCctK)
+                                                     : 4000.0;
+  if (lamp.type == LampType::kBlackbody) lamp.temperature_k = j.required("temperature_k").number_in(500, 25000);
+  if (lamp.type == LampType::kTable) {
+    const std::filesystem::path file = base_dir / j.required("spectrum_file").string();
+    const auto columns = parse_csv_columns(read_text_file(file, "spectrum table"), file.string());
+    if (columns.size() < 2) throw InputError(file.string() + ":1: expected two columns: wavelength_nm, relative power");
+    for (size_t i = 0; i < columns[0].size(); ++i)
+      if (!std::isfinite(columns[0][i]) || (i > 0 && !(columns[0][i] > columns[0][i - 1])))
+        throw InputError(file.string() + ":" + std::to_string(i + 2) +
+                         ": wavelengths must be finite and strictly increasing");
+    lamp.table = {columns[0], columns[1]};
+  }
+  return lamp;
+}
+
+SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir) {
+  j.allow_only({"name", "position", "aim", "rotation_deg", "ies", "ldt", "shape", "candela", "inner_deg", "outer_deg",
+                "lumens", "lamp", "temperature_k", "spectrum_file"});
+  const std::string name = j.optional("name") ? j.required("name").string() : j.path();
+  const Vec3 position = j.required("position").vec3();
+  const Vec3 aim = j.optional("aim") ? j.required("aim").vec3() : Vec3{0, 0, -1};
+  if (!(length(aim) > 0) || !std::isfinite(length(aim)))
+    j.required("aim").fail("the aim must be a non-zero vector of moderate length");
+  const double rotation = j.optional("rotation_deg") ? j.required("rotation_deg").number_in(-360, 360) : 0.0;
+  if (j.has("candela") && !j.has("shape")) j.required("candela").fail("candela is for a shape; files give their own");
+  Photometry photometry = read_photometry(j, base_dir);
+  // A file's relative photometry, or any distribution, may be set to a total flux.
+  if (auto lumens = j.optional("lumens")) {
+    const double wanted = lumens->number_in(0, 1e9);
+    const double flux = photometry.distribution.luminous_flux();
+    if (!(flux > 0)) lumens->fail("the distribution sends out no light to scale");
+    photometry.distribution = photometry.distribution.scaled(wanted / flux);
+  }
+  Spectrum spectrum;
+  try {
+    spectrum = lamp_spectrum_per_candela(read_lamp(j, base_dir));
+  } catch (const std::invalid_argument& e) {
+    j.required("lamp").fail(e.what());
+  }
+  return {name, Luminaire(position, std::move(photometry.distribution), aim, rotation, std::move(photometry.tilt)),
+          spectrum};
+}
+
+}  // namespace
+
+std::vector<SceneLight> read_lights(const JsonReader& j, const std::filesystem::path& base_dir) {
+  if (!j.is_array()) j.fail_expected("an array of lights");
+  std::vector<SceneLight> lights;
+  for (const JsonReader& light : j.elements()) lights.push_back(read_light(light, base_dir));
+  return lights;
+}
+
+}  // namespace skylit

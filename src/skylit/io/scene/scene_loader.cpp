@@ -1,0 +1,80 @@
+#include "skylit/io/scene/scene_loader.h"
+
+#include <cmath>
+
+#include "skylit/io/scene/scene_overrides.h"
+#include "skylit/io/scene/scene_parts.h"
+#include "skylit/core/error.h"
+#include "skylit/core/text_file.h"
+
+namespace skylit {
+
+namespace {
+
+Camera read_camera(const JsonReader& j) {
+  j.allow_only({"position", "look_at", "up", "vertical_fov_deg", "focal_length_mm", "sensor_height_mm"});
+  Camera camera;
+  camera.position = j.required("position").vec3();
+  camera.look_at = j.required("look_at").vec3();
+  if (auto up = j.optional("up")) camera.up = up->vec3();
+  const Vec3 forward = camera.look_at - camera.position;
+  if (length(forward) == 0) j.required("look_at").fail("look_at must differ from position");
+  if (length(cross(forward, camera.up)) <= 1e-9 * length(forward) * length(camera.up))
+    j.optional("up") ? j.required("up").fail("up must not be parallel to the viewing direction")
+                     : j.fail("the view is vertical: give an 'up' vector that is not parallel to it");
+
+  const auto fov = j.optional("vertical_fov_deg");
+  const auto focal = j.optional("focal_length_mm");
+  if (fov && focal) j.fail("give either vertical_fov_deg or focal_length_mm, not both");
+  if (auto sensor = j.optional("sensor_height_mm"); sensor && !focal)
+    sensor->fail("sensor_height_mm needs focal_length_mm");
+  if (fov) {
+    camera.vertical_fov_deg = fov->number_in(0.01, 179);
+  } else if (focal) {
+    // A full-frame sensor (24 mm high) unless told otherwise.
+    const double focal_mm = focal->number_in(0.1, 1e5);
+    const double sensor_mm = j.optional("sensor_height_mm") ? j.required("sensor_height_mm").number_in(0.1, 1e3) : 24.0;
+    camera.vertical_fov_deg = degrees(2.0 * std::atan(sensor_mm / (2.0 * focal_mm)));
+  }
+  return camera;
+}
+
+RenderSettings read_render(const JsonReader& j) {
+  j.allow_only({"width", "height", "exposure_ev", "samples_per_axis"});
+  RenderSettings render;
+  if (auto w = j.optional("width")) render.width = w->integer_in(1, 16384);
+  if (auto h = j.optional("height")) render.height = h->integer_in(1, 16384);
+  if (auto ev = j.optional("exposure_ev")) {
+    // "auto" is the default, accepted explicitly so that --set can restore it.
+    if (!(ev->is_string() && ev->string() == "auto")) render.exposure_ev = ev->number_in(-30, 40);
+  }
+  if (auto s = j.optional("samples_per_axis")) render.samples_per_axis = s->integer_in(1, 16);
+  return render;
+}
+
+
+}  // namespace
+
+Scene scene_from_json(const nlohmann::json& document, const std::string& source, const std::filesystem::path& base_dir) {
+  const JsonReader root(document, source);
+  if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
+  root.allow_only({"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "objects", "lights", "render"});
+  Scene scene;
+  scene.camera = read_camera(root.required("camera"));
+  read_sun_and_atmosphere(root, scene);
+  if (auto fog = root.optional("fog")) scene.fog = read_fog(*fog);
+  if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
+  scene.materials = read_materials(root.required("materials"));
+  scene.objects = read_objects(root.required("objects"), scene.materials, base_dir);
+  if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
+  if (auto render = root.optional("render")) scene.render = read_render(*render);
+  return scene;
+}
+
+Scene load_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides) {
+  nlohmann::json document = parse_json_text(read_text_file(scene_file, "scene file"), scene_file.string());
+  for (const std::string& assignment : overrides) apply_override(document, assignment);
+  return scene_from_json(document, scene_file.string(), scene_file.parent_path());
+}
+
+}  // namespace skylit

@@ -1,0 +1,24 @@
+// Reads a scene file (JSON, docs/scene-format.md) into a validated Scene. Relative
+// paths inside it (mesh files) are relative to the scene file's folder.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "skylit/scene/scene.h"
+
+namespace skylit {
+
+// Reads, applies `overrides` (`path=value`, see scene_overrides.h), validates.
+// Every problem a user can cause is an InputError naming the file and the place.
+Scene load_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides = {});
+
+// The same from a parsed document; `base_dir` resolves mesh paths, `source` names
+// the document in messages.
+Scene scene_from_json(const nlohmann::json& document, const std::string& source,
+                      const std::filesystem::path& base_dir);
+
+}  // namespace skylit

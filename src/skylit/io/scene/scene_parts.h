@@ -1,0 +1,24 @@
+// The readers of each part of a scene file, used by scene_loader.cpp. Each takes the
+// JSON value of its part and throws InputError naming the path of what is wrong.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "skylit/io/scene/json_reader.h"
+#include "skylit/scene/scene.h"
+
+namespace skylit {
+
+// `sun`, or `site` and `time`, and `atmosphere`, from the scene's top level.
+void read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
+AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
+FogSettings read_fog(const JsonReader& fog);
+void read_clouds(const JsonReader& clouds, Scene& scene);
+std::vector<NamedMaterial> read_materials(const JsonReader& materials);
+Spectrum read_reflectance(const JsonReader& reflectance);
+std::vector<SceneLight> read_lights(const JsonReader& lights, const std::filesystem::path& base_dir);
+std::vector<SceneObject> read_objects(const JsonReader& objects, const std::vector<NamedMaterial>& materials,
+                                      const std::filesystem::path& base_dir);
+
+}  // namespace skylit

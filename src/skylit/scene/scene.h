@@ -1,0 +1,75 @@
+// A scene as the renderer sees it: everything in SI units in the world frame
+// (x east, y north, z up, metres), already validated by the loader (io/scene_loader.h).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "skylit/atmosphere/atmosphere_settings.h"
+#include "skylit/clouds/cloud_layer.h"
+#include "skylit/geometry/triangle_mesh.h"
+#include "skylit/core/vec3.h"
+#include "skylit/lights/luminaire.h"
+#include "skylit/material/material.h"
+#include "skylit/media/fog_settings.h"
+
+namespace skylit {
+
+// A pinhole camera.
+struct Camera {
+  Vec3 position;
+  Vec3 look_at;
+  Vec3 up{0, 0, 1};
+  double vertical_fov_deg = 50.0;
+};
+
+// Where the sun stands, seen from the site: given directly, or computed from the
+// site and the time (io/scene_loader.cpp, NREL SPA).
+struct Sun {
+  double altitude_deg = 45.0;  // apparent, above the horizon
+  double azimuth_deg = 180.0;  // clockwise from north
+};
+
+struct RenderSettings {
+  int width = 1280;
+  int height = 720;
+  std::optional<double> exposure_ev;  // empty: automatic from the log-average luminance
+  int samples_per_axis = 2;           // a regular grid of n × n samples per pixel
+};
+
+struct SceneObject {
+  std::string name;
+  TriangleMesh mesh;        // in world coordinates
+  uint32_t material_index;  // into Scene::materials
+};
+
+// A luminaire (§7, Fig. 9): where it is, its intensity distribution in absolute
+// candela, and its lamp's spectrum per candela (lights/lamp_spectrum.h), so that
+// luminaire.intensity(direction) × spectrum_per_candela is the spectral radiant
+// intensity toward that direction in W sr⁻¹ nm⁻¹.
+struct SceneLight {
+  std::string name;
+  Luminaire luminaire;
+  Spectrum spectrum_per_candela;
+};
+
+struct Scene {
+  Camera camera;
+  Sun sun;
+  // The air; its site_elevation_m and earth_sun_distance_au come from `site` and `time`.
+  AtmosphereSettings atmosphere;
+  // A fog layer near the ground (§3.2, §5), if any.
+  std::optional<FogSettings> fog;
+  // Clouds (§6): given one by one, and/or a generated layer.
+  std::vector<CloudShape> clouds;
+  std::optional<CloudLayerSettings> cloud_layer;
+  std::vector<NamedMaterial> materials;
+  std::vector<SceneObject> objects;
+  std::vector<SceneLight> lights;
+  RenderSettings render;
+};
+
+}  // namespace skylit

@@ -1,0 +1,300 @@
+// Mesh files: OBJ polygons and negative indices, glTF with embedded buffers, node
+// transforms and the y-up → z-up turn, GLB, and user errors that name the file.
+#include "skylit/io/model/mesh_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "skylit/core/error.h"
+
+namespace skylit {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory per test, removed afterwards.
+class MeshIo : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("skylit_mesh_io_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& bytes) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+  }
+
+  // Expects load_mesh_file to throw InputError whose message names the file.
+  void expect_input_error(const fs::path& p, const std::string& also = "") {
+    try {
+      load_mesh_file(p, UpAxis::y);
+      ADD_FAILURE() << "no InputError for " << p;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(p.string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(also), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "message must be one line";
+    }
+  }
+
+  fs::path dir_;
+};
+
+// Little-endian bytes of floats and integers, as glTF buffers hold them.
+template <typename T>
+void put(std::string& out, T value) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+std::string base64(const std::string& in) {
+  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  size_t i = 0;
+  for (; i + 2 < in.size(); i += 3) {
+    const uint32_t n = (uint8_t(in[i]) << 16) | (uint8_t(in[i + 1]) << 8) | uint8_t(in[i + 2]);
+    for (int s : {18, 12, 6, 0}) out += table[(n >> s) & 63];
+  }
+  if (i + 1 == in.size()) {
+    const uint32_t n = uint8_t(in[i]) << 16;
+    out += table[(n >> 18) & 63], out += table[(n >> 12) & 63], out += "==";
+  } else if (i + 2 == in.size()) {
+    const uint32_t n = (uint8_t(in[i]) << 16) | (uint8_t(in[i + 1]) << 8);
+    out += table[(n >> 18) & 63], out += table[(n >> 12) & 63], out += table[(n >> 6) & 63], out += '=';
+  }
+  return out;
+}
+
+// One triangle (0,0,0), (1,0,0), (0,1,0) as float32, then uint16 indices 0 1 2
+// padded to 4 bytes: 36 + 8 = 44 bytes.
+std::string triangle_buffer(float first_x = 0.0f) {
+  std::string b;
+  for (float f : {first_x, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) put(b, f);
+  for (uint16_t i : {0, 1, 2, 0}) put(b, i);
+  return b;
+}
+
+// glTF JSON around the triangle buffer; `nodes` and `scenes` are spliced in.
+std::string triangle_gltf(const std::string& buffer_json, const std::string& nodes,
+                          const std::string& extra_primitive = "", size_t position_count = 3) {
+  return R"({"asset": {"version": "2.0"},
+  "buffers": [)" + buffer_json + R"(],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" +
+         std::to_string(position_count) + R"(, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1})" +
+         extra_primitive + R"(]}],
+  )" + nodes + "}";
+}
+
+std::string embedded(const std::string& bytes) {
+  return R"({"byteLength": )" + std::to_string(bytes.size()) +
+         R"(, "uri": "data:application/octet-stream;base64,)" + base64(bytes) + R"("})";
+}
+
+const std::string kTranslatedNode =
+    R"("nodes": [{"mesh": 0, "translation": [10, 20, 30]}], "scenes": [{"nodes": [0]}], "scene": 0)";
+
+TEST_F(MeshIo, ObjQuadsAndNegativeIndicesLoad) {
+  // A unit quad (relative indices) and a triangle (absolute), plus things to ignore.
+  const fs::path p = write("quad.obj",
+                           "# test\nmtllib missing.mtl\no thing\n"
+                           "v 0 0 0\nv 2 0 0\nv 2 3 0\nv 0 3 0.5\nvn 0 0 1\nvt 0 0\n"
+                           "usemtl nothing\nf -4 -3 -2 -1\n"
+                           "v 0 0 7\nf 1/1 2/1/1 5//1\nl 1 2\n");
+  const TriangleMesh z = load_mesh_file(p, UpAxis::z);
+  ASSERT_EQ(z.triangles.size(), 3u);
+  ASSERT_EQ(z.vertices.size(), 5u);
+  EXPECT_EQ(z.vertices[3], Vec3(0, 3, 0.5));
+  EXPECT_EQ(z.vertices[4], Vec3(0, 0, 7));
+  // The quad's two triangles cover exactly its four corners, and keep its winding (+z).
+  std::vector<int> used(5, 0);
+  for (int t = 0; t < 2; ++t) {
+    for (uint32_t i : z.triangles[t]) ++used[i];
+    const auto& tri = z.triangles[t];
+    const Vec3 n = cross(z.vertices[tri[1]] - z.vertices[tri[0]], z.vertices[tri[2]] - z.vertices[tri[0]]);
+    EXPECT_GT(n.z, 0.0);
+  }
+  EXPECT_EQ(used[4], 0);
+  EXPECT_EQ(used[0] + used[1] + used[2] + used[3], 6);
+  EXPECT_EQ(z.triangles[2], (std::array<uint32_t, 3>{0, 1, 4}));
+
+  // The same file read as y-up: (x, y, z) → (x, -z, y).
+  const TriangleMesh y = load_mesh_file(p, UpAxis::y);
+  EXPECT_EQ(y.vertices[3], Vec3(0, -0.5, 3));
+  EXPECT_EQ(y.vertices[4], Vec3(0, -7, 0));
+}
+
+TEST_F(MeshIo, ObjBadIndexOrHugeCoordinateIsInputError) {
+  expect_input_error(write("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"), "vertex");
+  expect_input_error(write("bad_quad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 -9\n"), "vertex");
+  // Beyond single precision: would be infinity in the ray tracer.
+  expect_input_error(write("huge.obj", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "finite");
+  // tinyobjloader alone would read these as 0; the line number is reported.
+  expect_input_error(write("nan.obj", "v 0 0 0\nv 1 0 0\n\nv nan 1 0\nf 1 2 3\n"), ":4:");
+  expect_input_error(write("word.obj", "v 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n"), ":2:");
+  expect_input_error(write("short.obj", "v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n"), ":2:");
+}
+
+TEST_F(MeshIo, ObjKeepsDoublePrecisionSiteCoordinates) {
+  // Survey coordinates far from the origin, to be moved back by the scene's
+  // transform: float would round 4200000.125 to 4200000.0.
+  const fs::path p = write("site.obj", "v 500123.25 4200000.125 12.5\r\nv +500124.25 4200000.125 12.5 1.0\r\n"
+                                       "v 500123.25 4200001.125 1.25e1\r\nf 1 2 3\r\n");
+  const TriangleMesh m = load_mesh_file(p, UpAxis::z);
+  ASSERT_EQ(m.vertices.size(), 3u);
+  EXPECT_EQ(m.vertices[0], Vec3(500123.25, 4200000.125, 12.5));
+  EXPECT_EQ(m.vertices[1], Vec3(500124.25, 4200000.125, 12.5));
+  EXPECT_EQ(m.vertices[2], Vec3(500123.25, 4200001.125, 12.5));
+}
+
+TEST_F(MeshIo, GltfEmbeddedBufferNodeTranslationAndYUp) {
+  const fs::path p = write("tri.gltf", triangle_gltf(embedded(triangle_buffer()), kTranslatedNode));
+  // File frame: the triangle moved by the node's translation.
+  const TriangleMesh raw = load_mesh_file(p, UpAxis::z);
+  ASSERT_EQ(raw.triangles.size(), 1u);
+  ASSERT_EQ(raw.vertices.size(), 3u);
+  EXPECT_EQ(raw.vertices[0], Vec3(10, 20, 30));
+  EXPECT_EQ(raw.vertices[1], Vec3(11, 20, 30));
+  EXPECT_EQ(raw.vertices[2], Vec3(10, 21, 30));
+  // glTF's +Y up becomes +z; its +Z becomes -y (south).
+  const TriangleMesh m = load_mesh_file(p, UpAxis::y);
+  EXPECT_EQ(m.vertices[0], Vec3(10, -30, 20));
+  EXPECT_EQ(m.vertices[1], Vec3(11, -30, 20));
+  EXPECT_EQ(m.vertices[2], Vec3(10, -30, 21));
+  EXPECT_EQ(m.triangles[0], (std::array<uint32_t, 3>{0, 1, 2}));
+}
+
+TEST_F(MeshIo, GltfExternalBufferAndDefaultScene) {
+  write("tri.bin", triangle_buffer());
+  // Scene 1 is the default; scene 0 (which would move the triangle) must be ignored.
+  // Images, embedded or missing, are never read.
+  const std::string nodes =
+      R"("nodes": [{"mesh": 0, "translation": [5, 0, 0]}, {"mesh": 0}], "scenes": [{"nodes": [0]}, {"nodes": [1]}],
+      "scene": 1, "images": [{"uri": "missing.png"}, {"uri": "data:image/png;base64,iVBORw0KGgo="}])";
+  const fs::path p = write("ext.gltf", triangle_gltf(R"({"byteLength": 44, "uri": "tri.bin"})", nodes));
+  const TriangleMesh m = load_mesh_file(p, UpAxis::z);
+  ASSERT_EQ(m.triangles.size(), 1u);
+  EXPECT_EQ(m.vertices[1], Vec3(1, 0, 0));
+}
+
+TEST_F(MeshIo, GltfHierarchyComposesParentThenChild) {
+  // Parent scales by 2 and turns 90° about +Y (quaternion); child has a matrix
+  // translating by +1 in x. Vertex (0,0,0) → child (1,0,0) → parent: scale (2,0,0),
+  // then rotate about Y by 90°: x → -z, so (0,0,-2). The other order would give
+  // (1,0,0).
+  const double s = std::sqrt(0.5);
+  const std::string nodes = R"("nodes": [{"children": [1], "scale": [2, 2, 2], "rotation": [0, )" +
+                            std::to_string(s) + ", 0, " + std::to_string(s) + R"(]},
+    {"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 1,0,0,1]}], "scenes": [{"nodes": [0]}])";
+  const fs::path p = write("tree.gltf", triangle_gltf(embedded(triangle_buffer()), nodes));
+  const TriangleMesh m = load_mesh_file(p, UpAxis::z);
+  ASSERT_EQ(m.vertices.size(), 3u);
+  EXPECT_NEAR(m.vertices[0].x, 0, 1e-6);
+  EXPECT_NEAR(m.vertices[0].y, 0, 1e-6);
+  EXPECT_NEAR(m.vertices[0].z, -2, 1e-6);
+  // (1,0,0) → (2,0,0) → scaled (4,0,0) → rotated (0,0,-4).
+  EXPECT_NEAR(m.vertices[1].z, -4, 1e-6);
+  // (0,1,0) → (1,1,0) → (2,2,0) → (0,2,-2).
+  EXPECT_NEAR(m.vertices[2].y, 2, 1e-6);
+  EXPECT_NEAR(m.vertices[2].z, -2, 1e-6);
+}
+
+TEST_F(MeshIo, GltfSkipsNonTrianglePrimitives) {
+  // A second primitive drawing the same data as lines (mode 1) adds nothing.
+  const std::string lines = R"(, {"attributes": {"POSITION": 0}, "mode": 1})";
+  const fs::path p = write("lines.gltf", triangle_gltf(embedded(triangle_buffer()), kTranslatedNode, lines));
+  EXPECT_EQ(load_mesh_file(p, UpAxis::y).triangles.size(), 1u);
+
+  const std::string only_lines = R"({"asset": {"version": "2.0"},
+    "buffers": [)" + embedded(triangle_buffer()) + R"(],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 0}]}],
+    "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
+  expect_input_error(write("points.gltf", only_lines), "no triangles");
+}
+
+TEST_F(MeshIo, GlbLoads) {
+  const std::string bin = triangle_buffer();
+  std::string json = triangle_gltf(R"({"byteLength": 44})", kTranslatedNode);
+  while (json.size() % 4) json += ' ';
+  std::string glb = "glTF";
+  put<uint32_t>(glb, 2);
+  put<uint32_t>(glb, static_cast<uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+  put<uint32_t>(glb, static_cast<uint32_t>(json.size()));
+  glb += "JSON" + json;
+  put<uint32_t>(glb, static_cast<uint32_t>(bin.size()));
+  glb += std::string("BIN\0", 4) + bin;
+  const TriangleMesh m = load_mesh_file(write("tri.glb", glb), UpAxis::y);
+  ASSERT_EQ(m.triangles.size(), 1u);
+  EXPECT_EQ(m.vertices[1], Vec3(11, -30, 20));
+}
+
+TEST_F(MeshIo, GltfQuantizedPositionsAreScaledByTheNode) {
+  // KHR_mesh_quantization: uint16 positions (stride 8), not indexed; the node's
+  // scale brings them to metres.
+  std::string b;
+  for (uint16_t v : {0, 0, 0, 0, 4, 0, 0, 0, 0, 4, 0, 0}) put(b, v);
+  const std::string json = R"({"asset": {"version": "2.0"},
+    "extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],
+    "buffers": [)" + embedded(b) + R"(],
+    "bufferViews": [{"buffer": 0, "byteLength": 24, "byteStride": 8}],
+    "accessors": [{"bufferView": 0, "componentType": 5123, "count": 3, "type": "VEC3"}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    "nodes": [{"mesh": 0, "scale": [0.25, 0.25, 0.25]}], "scenes": [{"nodes": [0]}]})";
+  const TriangleMesh m = load_mesh_file(write("quantized.gltf", json), UpAxis::z);
+  ASSERT_EQ(m.triangles.size(), 1u);
+  EXPECT_EQ(m.vertices[1], Vec3(1, 0, 0));
+  EXPECT_EQ(m.vertices[2], Vec3(0, 1, 0));
+}
+
+TEST_F(MeshIo, GltfNonFiniteCoordinateIsInputError) {
+  const std::string bytes = triangle_buffer(std::numeric_limits<float>::quiet_NaN());
+  expect_input_error(write("nan.gltf", triangle_gltf(embedded(bytes), kTranslatedNode)), "finite");
+}
+
+TEST_F(MeshIo, GltfAccessorPastItsBufferIsInputError) {
+  // 4 positions claimed in a 36-byte view that holds 3.
+  const fs::path p = write("short.gltf", triangle_gltf(embedded(triangle_buffer()), kTranslatedNode, "", 4));
+  expect_input_error(p, "past the end");
+}
+
+TEST_F(MeshIo, GltfBrokenHierarchyIsInputError) {
+  const std::string buffer = embedded(triangle_buffer());
+  const std::string cycle = R"("nodes": [{"children": [1]}, {"mesh": 0, "children": [0]}], "scenes": [{"nodes": [0]}])";
+  expect_input_error(write("cycle.gltf", triangle_gltf(buffer, cycle)), "cycle");
+  const std::string dangling = R"("nodes": [{"mesh": 0, "children": [7]}], "scenes": [{"nodes": [0]}])";
+  expect_input_error(write("dangling.gltf", triangle_gltf(buffer, dangling)), "node 7");
+  const std::string draco = kTranslatedNode + R"(, "extensionsRequired": ["KHR_draco_mesh_compression"])";
+  expect_input_error(write("draco.gltf", triangle_gltf(buffer, draco)), "KHR_draco_mesh_compression");
+}
+
+TEST_F(MeshIo, MissingFileIsInputErrorNamingIt) {
+  expect_input_error(dir_ / "nowhere.gltf", "not found");
+  expect_input_error(dir_ / "nowhere.obj", "not found");
+}
+
+TEST_F(MeshIo, GarbageFilesAreInputErrorsNamingThem) {
+  expect_input_error(write("garbage.gltf", "{ this is not json"));
+  expect_input_error(write("garbage.glb", std::string("glTF\x02\0\0\0\xff\xff", 10)));
+  expect_input_error(write("garbage.obj", std::string("\x7f" "ELF\x01\x02 binary junk\n")), "no triangles");
+  expect_input_error(write("model.stl", "solid x\nendsolid x\n"), "extension");
+}
+
+}  // namespace
+}  // namespace skylit
