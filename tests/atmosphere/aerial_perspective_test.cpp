@@ -37,7 +37,7 @@ TEST(AerialPerspective, ShortHorizontalPathTransmittanceIsBeerLambert) {
       medium.extinction(medium.rayleigh_density(kEyeHeightM), medium.aerosol_density(kEyeHeightM), 0.0);
   double worst = 0;
   for (double azimuth : {0.0, 90.0, 180.0}) {
-    const ScatteredLight air = sky.aerial_perspective(world_direction(0.0, azimuth), d);
+    const MediumStretch air = sky.aerial_perspective(world_direction(0.0, azimuth), d);
     for (int k = 0; k < kSpectralBins; ++k) {
       const double expected = std::exp(-static_cast<double>(sigma_t[k]) * d);
       worst = std::max(worst, std::abs(air.transmittance[k] / expected - 1.0));
@@ -57,14 +57,14 @@ TEST(AerialPerspective, NothingAtZeroDistance) {
   for (double elevation : {-1.0, 0.0, 5.0, 45.0})
     for (double azimuth : {0.0, 100.0, 180.0}) {
       const Vec3 view = world_direction(elevation, azimuth);
-      const ScatteredLight zero = sky.aerial_perspective(view, 0.0);
-      const ScatteredLight centimetre = sky.aerial_perspective(view, 0.01);
-      const ScatteredLight hundred = sky.aerial_perspective(view, 100.0);
+      const MediumStretch zero = sky.aerial_perspective(view, 0.0);
+      const MediumStretch centimetre = sky.aerial_perspective(view, 0.01);
+      const MediumStretch hundred = sky.aerial_perspective(view, 100.0);
       for (int k = 0; k < kSpectralBins; ++k) {
-        EXPECT_EQ(zero.radiance[k], 0.0f);
+        EXPECT_EQ(zero.in_scattered[k], 0.0f);
         EXPECT_EQ(zero.transmittance[k], 1.0f);
         EXPECT_GT(centimetre.transmittance[k], 0.999f);
-        EXPECT_LT(centimetre.radiance[k], 0.02f * hundred.radiance[k]) << elevation << " " << azimuth << " bin " << k;
+        EXPECT_LT(centimetre.in_scattered[k], 0.02f * hundred.in_scattered[k]) << elevation << " " << azimuth << " bin " << k;
       }
     }
 }
@@ -76,12 +76,12 @@ TEST(AerialPerspective, InScatterGrowsAndTransmittanceFallsWithDistance) {
   for (double elevation : {-1.0, 0.0, 3.0, 20.0, 60.0})
     for (double azimuth : {0.0, 60.0, 180.0}) {
       const Vec3 view = world_direction(elevation, azimuth);
-      ScatteredLight previous = sky.aerial_perspective(view, 0.0);
+      MediumStretch previous = sky.aerial_perspective(view, 0.0);
       for (int i = 1; i <= 300; ++i) {
         const double d = 100e3 * std::pow(i / 300.0, 2);
-        const ScatteredLight now = sky.aerial_perspective(view, d);
+        const MediumStretch now = sky.aerial_perspective(view, d);
         for (int k = 0; k < kSpectralBins; ++k) {
-          ASSERT_GE(now.radiance[k], previous.radiance[k] * (1 - 1e-6f))
+          ASSERT_GE(now.in_scattered[k], previous.in_scattered[k] * (1 - 1e-6f))
               << elevation << " " << azimuth << " " << d << " bin " << k;
           ASSERT_LE(now.transmittance[k], previous.transmittance[k] * (1 + 1e-6f))
               << elevation << " " << azimuth << " " << d;
@@ -89,8 +89,8 @@ TEST(AerialPerspective, InScatterGrowsAndTransmittanceFallsWithDistance) {
         previous = now;
       }
       if (elevation >= 0) {
-        EXPECT_GT(luminance(sky.aerial_perspective(view, 10e3).radiance),
-                  1.5 * luminance(sky.aerial_perspective(view, 1e3).radiance));
+        EXPECT_GT(luminance(sky.aerial_perspective(view, 10e3).in_scattered),
+                  1.5 * luminance(sky.aerial_perspective(view, 1e3).in_scattered));
       }
     }
 }
@@ -106,13 +106,13 @@ TEST(AerialPerspective, LongNearlyHorizontalPathApproachesTheHorizonSky) {
   const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
   for (double azimuth : {20.0, 90.0, 180.0}) {
     const Vec3 view = world_direction(0.1, azimuth);
-    const ScatteredLight air = sky.aerial_perspective(view, AerialPerspectiveTable::kMaxDistanceM);
+    const MediumStretch air = sky.aerial_perspective(view, AerialPerspectiveTable::kMaxDistanceM);
     const Spectrum horizon = sky.sky_radiance(view);
     double worst = 0;
-    for (int k = 0; k < kSpectralBins; ++k) worst = std::max(worst, std::abs(air.radiance[k] / horizon[k] - 1.0));
+    for (int k = 0; k < kSpectralBins; ++k) worst = std::max(worst, std::abs(air.in_scattered[k] / horizon[k] - 1.0));
     if (report())
       std::printf("80 km at 0.1 deg, %.0f deg from the sun: worst bin %.2f %%, luminance %.2f %%\n", azimuth,
-                  100 * worst, 100 * (luminance(air.radiance) / luminance(horizon) - 1));
+                  100 * worst, 100 * (luminance(air.in_scattered) / luminance(horizon) - 1));
     EXPECT_LT(worst, 0.04) << azimuth;
     EXPECT_LT(air.transmittance[kSpectralBins - 1], 0.03f);
   }
@@ -132,11 +132,11 @@ TableError table_error(double elevation, double azimuth, double d) {
   std::vector<double> stops;
   for (int i = 1; i <= 400; ++i) stops.push_back(d * i / 400.0);
   const ScatteredLight direct = atmosphere.integrator().up_to(r, view.z, sun.z, dot(view, sun), stops).back();
-  const ScatteredLight table = sky.aerial_perspective(world_direction(elevation, azimuth), d);
+  const MediumStretch table = sky.aerial_perspective(world_direction(elevation, azimuth), d);
   const Spectrum radiance = direct.radiance * atmosphere.extraterrestrial_irradiance();
   TableError e;
   for (int k = 0; k < kSpectralBins; ++k) {
-    e.radiance = std::max(e.radiance, std::abs(static_cast<double>(table.radiance[k]) / radiance[k] - 1.0));
+    e.radiance = std::max(e.radiance, std::abs(static_cast<double>(table.in_scattered[k]) / radiance[k] - 1.0));
     e.transmittance = std::max(e.transmittance,
                                std::abs(static_cast<double>(table.transmittance[k]) / direct.transmittance[k] - 1.0));
   }
@@ -194,9 +194,9 @@ TEST(AerialPerspective, HorizontalViewsFarAwayMatchTheIntegrator) {
     const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
     const Vec3 view = world_direction(0.0, azimuth);
     EXPECT_LT(table_error(0.0, azimuth, 20e3).transmittance, 0.04) << azimuth;
-    const double t60 = luminance(sky.aerial_perspective(view, 60e3).transmittance) / luminance(Spectrum(1.0f));
+    const double t60 = luminance(sky.aerial_perspective(view, 60e3).transmittance.spectrum()) / luminance(Spectrum(1.0f));
     EXPECT_LT(t60, 0.05) << azimuth;
-    EXPECT_NEAR(luminance(sky.aerial_perspective(view, AerialPerspectiveTable::kMaxDistanceM).radiance),
+    EXPECT_NEAR(luminance(sky.aerial_perspective(view, AerialPerspectiveTable::kMaxDistanceM).in_scattered),
                 luminance(sky.sky_radiance(view)), 0.04 * luminance(sky.sky_radiance(view)));
   }
 }

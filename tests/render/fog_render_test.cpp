@@ -52,7 +52,7 @@ TEST(FogRender, FogAddsNoMoreLightThanItsSources) {
                          normalize(Vec3{0.3, 1, -0.02})}) {
     const Ray ray{scene.camera.position, dir};
     for (double d : {10.0, 100.0, 1000.0, std::numeric_limits<double>::infinity()}) {
-      const FogMedium::Along along = fog.along(ray, d);
+      const MediumStretch along = fog.along(ray, d);
       const double phase = fog.layer().phase(dot(dir, to_sun));
       for (int k = 0; k < kSpectralBins; k += 7) {
         const double source = phase * sun[k] + sky_light.unattenuated()[k] / (4 * kPi);
@@ -79,7 +79,7 @@ TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
   const FogMedium shaded(*scene.fog, with_block, sky, origin), open(*scene.fog, without, sky, origin);
   const Ray ray{origin, normalize(Vec3{1, 0, 0})};  // eastward, behind the block
   const double length = 160;
-  const Spectrum difference = open.along(ray, length).in_scattered - shaded.along(ray, length).in_scattered;
+  const Spectrum difference = (open.along(ray, length).in_scattered - shaded.along(ray, length).in_scattered).spectrum();
   const ShadowVolumes shadows(with_block, to_sun);
   double shadowed = length;
   for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length)) shadowed -= lit.end - lit.begin;

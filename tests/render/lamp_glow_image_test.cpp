@@ -31,12 +31,15 @@ TEST(LampGlowImage, PixelCentresMatchExactGlow) {
   const SceneLamps lamps(scene.lights, tracer, meshes, &layer);
   const int width = 480, height = 270;
   const PinholeCamera camera(scene.camera, width, height);
-  std::vector<ViewHit> centre_hits(static_cast<size_t>(width) * height);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      if (const std::optional<Hit> hit = tracer.intersect(camera.ray_through(x + 0.5, y + 0.5)))
-        centre_hits[static_cast<size_t>(y) * width + x] = {hit->mesh_id, hit->t};
-  const LampGlowImage glow(camera, width, height, centre_hits, lamps);
+  const PrimaryHits centre_hits(camera, width, height, [&](const Ray& ray) {
+    PrimaryHit primary;
+    if (const std::optional<Hit> hit = tracer.intersect(ray)) {
+      primary.mesh = hit->mesh_id;
+      primary.point.distance = hit->t;
+    }
+    return primary;
+  });
+  const LampGlowImage glow(camera, centre_hits, lamps);
   std::vector<double> errors;
   for (int y = 0; y < height; ++y)
     for (int x = y % 3; x < width; x += 3) {
@@ -45,7 +48,7 @@ TEST(LampGlowImage, PixelCentresMatchExactGlow) {
       const ViewHit view = hit ? ViewHit{hit->mesh_id, hit->t} : ViewHit{};
       const double exact = luminance(lamps.in_scattered(ray, view.distance));
       ASSERT_GT(exact, 0);
-      errors.push_back(std::abs(glow.at(x + 0.5, y + 0.5, ray, view).y - exact) / exact);
+      errors.push_back(std::abs(luminance(glow.at(x + 0.5, y + 0.5, ray, view)) - exact) / exact);
     }
   std::sort(errors.begin(), errors.end());
   EXPECT_LT(errors[errors.size() * 99 / 100], 0.01);

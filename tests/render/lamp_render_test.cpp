@@ -35,8 +35,7 @@ Scene night_scene() {
 }
 
 double ground_luminance(const Renderer& renderer, double x) {
-  uint64_t rays = 0;
-  return luminance(renderer.radiance(Ray{{x, 0, 1}, {0, 0, -1}}, rays));
+  return luminance(renderer.radiance(Ray{{x, 0, 1}, {0, 0, -1}}));
 }
 
 TEST(LampRender, GroundLuminanceFollowsInverseSquareAndCosineLaw) {
@@ -61,7 +60,8 @@ TEST(LampRender, AnObjectBetweenLampAndGroundCastsAShadow) {
   scene.materials.push_back({"board", DiffuseMaterial{Spectrum(0.3f)}});
   scene.objects.push_back({"board", make_box({3, -1, 2}, {5, 1, 2.2}), 1});  // over x ≈ 4–8 m on the ground
   const Renderer renderer(scene);
-  const Renderer open(night_scene());
+  const Scene open_scene = night_scene();
+  const Renderer open(open_scene);
   EXPECT_LT(ground_luminance(renderer, 6.0), 1e-3 * ground_luminance(open, 6.0));   // in the shadow
   EXPECT_NEAR(ground_luminance(renderer, 12.0), ground_luminance(open, 12.0), 1e-6);  // beyond it
   EXPECT_NEAR(ground_luminance(renderer, 1.0), ground_luminance(open, 1.0), 1e-6);    // before it
@@ -100,8 +100,7 @@ TEST(LampRender, GlowInHomogeneousFogFallsOffAsTheClosedForm) {
   const Renderer renderer(scene);
   double previous = std::numeric_limits<double>::infinity();
   for (double offset : {0.5, 2.0, 8.0, 30.0}) {
-    uint64_t rays = 0;
-    const double got = luminance(renderer.radiance(Ray{{offset, 0, 10}, {0, 1, 0}}, rays));
+    const double got = luminance(renderer.radiance(Ray{{offset, 0, 10}, {0, 1, 0}}));
     const double expected = glow_closed_form(0.01, 1000.0, offset, 30.0);
     EXPECT_NEAR(got, expected, 1e-4 * expected + 1e-6) << "offset " << offset;
     EXPECT_LT(got, previous);
@@ -146,15 +145,13 @@ TEST(LampRender, HiddenLampMakesNoHighlightOnGlossyGround) {
   const Vec3 eye{-20, 0, 2};  // looking at the ground point (0, 0, 0)
   const Vec3 mirror_lamp{60, 0, 6};  // where the view's mirror direction points
   const double without = [&] {
-    uint64_t rays = 0;
-    return luminance(Renderer(scene).radiance(Ray{eye, normalize(-eye)}, rays));
+    return luminance(Renderer(scene).radiance(Ray{eye, normalize(-eye)}));
   }();
   scene.lights.push_back({"hidden", Luminaire(mirror_lamp, IntensityDistribution::isotropic(1000.0)),
                           scene.lights[0].spectrum_per_candela});
   scene.materials.push_back({"wall", DiffuseMaterial{Spectrum(0.3f)}});
   scene.objects.push_back({"wall", make_box({30, -50, 0}, {31, 50, 20}), 1});
-  uint64_t rays = 0;
-  const double with_hidden = luminance(Renderer(scene).radiance(Ray{eye, normalize(-eye)}, rays));
+  const double with_hidden = luminance(Renderer(scene).radiance(Ray{eye, normalize(-eye)}));
   EXPECT_NEAR(with_hidden, without, 1e-6 * without);
 }
 

@@ -45,7 +45,7 @@ struct Fixture {
 };
 
 // Radiance of obstacles for these tests: black, so only the sky counts.
-Spectrum black_obstacle(const Ray&, const Hit&, uint64_t&) { return Spectrum(0.0f); }
+Spectrum black_obstacle(const Ray&, const Hit&) { return Spectrum(0.0f); }
 
 // A street canyon of width w between two walls of height h, `length_m` long, along y
 // (or along x when turned).
@@ -71,8 +71,7 @@ TEST(SkyLight, CanyonFloorSeesTheSkyFractionOfTheClosedForm) {
       const double w = 20, h = h_over_w * w;
       add_canyon(f.tracer, w, h, 4000, along_x);
       const SkyLight light(f.sky, f.tracer, black_obstacle);
-      uint64_t rays = 0;
-      const double measured = light.sky_view_factor({0, 0, 0}, {0, 0, 1}, rays);
+      const double measured = light.sky_view_factor({0, 0, 0}, {0, 0, 1});
       const double expected = std::sin(std::atan(w / 2 / h));
       // The default 1024 directions (512 over the hemisphere) resolve the canyon's
       // edges to ~0.01 of the view factor (docs/sky-light.md has the measured errors).
@@ -85,9 +84,8 @@ TEST(SkyLight, OpenFieldGetsTheUnobstructedIrradiance) {
   Fixture f;
   f.tracer.commit();
   const SkyLight light(f.sky, f.tracer, black_obstacle);
-  uint64_t rays = 0;
   for (const Vec3 n : {Vec3{0, 0, 1}, Vec3{1, 0, 0}, normalize(Vec3{0, -1, 1})}) {
-    const Spectrum e = light.diffuse_irradiance({0, 0, 0}, n, rays);
+    const Spectrum e = light.diffuse_irradiance({0, 0, 0}, n);
     const Spectrum table = f.sky.sky_irradiance(n);
     for (int k = 0; k < kSpectralBins; ++k) EXPECT_FLOAT_EQ(e[k], table[k]);
   }
@@ -126,12 +124,11 @@ TEST(SkyLight, ObstaclesSendBackTheirLight) {
   f.tracer.add_mesh(make_box({-500, 5, 0}, {500, 15, 1000}));
   f.tracer.commit();
   const Spectrum wall_radiance(0.01f);
-  const SkyLight light(f.sky, f.tracer, [&](const Ray&, const Hit&, uint64_t&) { return wall_radiance; });
+  const SkyLight light(f.sky, f.tracer, [&](const Ray&, const Hit&) { return wall_radiance; });
   const SkyLight dark(f.sky, f.tracer, black_obstacle);
-  uint64_t rays = 0;
   const Vec3 point{0, 0, 500}, north{0, 1, 0};
-  const double lit = xyz_from_spectrum(light.diffuse_irradiance(point, north, rays)).y;
-  const double unlit = xyz_from_spectrum(dark.diffuse_irradiance(point, north, rays)).y;
+  const double lit = xyz_from_spectrum(light.diffuse_irradiance(point, north)).y;
+  const double unlit = xyz_from_spectrum(dark.diffuse_irradiance(point, north)).y;
   // The wall fills nearly the whole hemisphere (it subtends all but ~0.5° at 500 m up).
   const double expected = xyz_from_spectrum(wall_radiance * static_cast<float>(kPi)).y;
   EXPECT_NEAR(lit - unlit, expected, 0.03 * expected);

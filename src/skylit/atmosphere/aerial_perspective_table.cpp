@@ -38,7 +38,7 @@ AerialPerspectiveTable::AerialPerspectiveTable(const ScatteringIntegrator& integ
   });
 }
 
-ScatteredLight AerialPerspectiveTable::at(const RelativeDirection& direction, double distance_m) const {
+MediumStretch AerialPerspectiveTable::at(const RelativeDirection& direction, double distance_m) const {
   double u_azimuth, u_elevation;
   mapping_.to_unit(direction, u_azimuth, u_elevation);
   const double fx = u_azimuth * (kAzimuthSize - 1), fy = u_elevation * (kElevationSize - 1);
@@ -49,7 +49,7 @@ ScatteredLight AerialPerspectiveTable::at(const RelativeDirection& direction, do
   const int k = std::min(static_cast<int>(std::sqrt(d / kMaxDistanceM) * (kDistanceSize - 1)), kDistanceSize - 2);
   const double d0 = slice_distance(k), d1 = slice_distance(k + 1);
   const double fz = k + (d - d0) / (d1 - d0);
-  return {in_scattered_.interpolate(fx, fy, fz), transmittance_of(optical_depth_.interpolate(fx, fy, fz))};
+  return {Transmittance(transmittance_of(optical_depth_.interpolate(fx, fy, fz))), Radiance(in_scattered_.interpolate(fx, fy, fz))};
 }
 
 }  // namespace skylit

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "skylit/atmosphere/sky_view_table.h"
+#include "skylit/spectrum/medium_stretch.h"
 
 namespace skylit {
 
@@ -20,7 +21,7 @@ class AerialPerspectiveTable {
                          double observer_radius_m, double ground_radius_m, double sun_elevation_rad);
 
   // In-scattered radiance (W m⁻² sr⁻¹ nm⁻¹) and transmittance over `distance_m` along `direction`.
-  ScatteredLight at(const RelativeDirection& direction, double distance_m) const;
+  MediumStretch at(const RelativeDirection& direction, double distance_m) const;
 
  private:
   SkyDirectionMapping mapping_;

@@ -88,7 +88,7 @@ Spectrum SkyModel::sun_radiance(const Vec3& direction) const {
   return sun_disc_radiance(sun_through_air_, atmosphere_.bands(), sun_angular_radius_, angle);
 }
 
-ScatteredLight SkyModel::aerial_perspective(const Vec3& direction, double distance_m) const {
+MediumStretch SkyModel::aerial_perspective(const Vec3& direction, double distance_m) const {
   return aerial_->at(relative_direction(direction, to_sun_), distance_m);
 }
 

@@ -65,7 +65,7 @@ class SkyModel {
   // The sun's disc as the observer sees it (limb-darkened, attenuated); 0 off the disc.
   Spectrum sun_radiance(const Vec3& direction) const;
   // What the air adds and lets through between the observer and a surface.
-  ScatteredLight aerial_perspective(const Vec3& direction, double distance_m) const;
+  MediumStretch aerial_perspective(const Vec3& direction, double distance_m) const;
   // Unobstructed sky and ground irradiance on a plane near the ground with this normal.
   Spectrum sky_irradiance(const Vec3& normal) const { return ground_sky_irradiance_->at(normal); }
   // The sun's direct normal irradiance at a height above the ground (computed exactly

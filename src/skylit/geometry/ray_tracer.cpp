@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <tbb/enumerable_thread_specific.h>
+
 namespace skylit {
 namespace {
 
@@ -46,6 +48,9 @@ struct RayTracer::Impl {
   uint32_t mesh_count = 0;
   size_t triangle_count = 0;
   bool committed = false;
+  // Queries traced, counted by each thread where it traces them (no shared counter to
+  // contend for, no counter threaded through the callers); summed on request.
+  mutable tbb::enumerable_thread_specific<uint64_t> queries{0};
 
   // Embree reports errors through a callback, possibly from its build threads.
   // Throwing from inside Embree's C API is not safe, so the first error is kept
@@ -168,6 +173,7 @@ void RayTracer::commit() {
 
 std::optional<Hit> RayTracer::intersect(const Ray& ray) const {
   if (!impl_->committed) throw std::logic_error("RayTracer::intersect before commit()");
+  ++impl_->queries.local();
   if (!valid(ray)) return std::nullopt;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -189,6 +195,7 @@ std::optional<Hit> RayTracer::intersect(const Ray& ray) const {
 
 bool RayTracer::occluded(const Ray& ray) const {
   if (!impl_->committed) throw std::logic_error("RayTracer::occluded before commit()");
+  ++impl_->queries.local();
   if (!valid(ray)) return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
@@ -197,6 +204,12 @@ bool RayTracer::occluded(const Ray& ray) const {
   rtcOccluded1(impl_->scene, &context, &r);
   // Embree marks a blocked ray by setting tfar to -inf.
   return r.tfar < 0.0f;
+}
+
+uint64_t RayTracer::rays_traced() const {
+  uint64_t total = 0;
+  for (const uint64_t count : impl_->queries) total += count;
+  return total;
 }
 
 size_t RayTracer::triangle_count() const { return impl_->triangle_count; }

@@ -75,6 +75,10 @@ class RayTracer {
   // Throws std::logic_error before commit().
   bool occluded(const Ray& ray) const;
 
+  // intersect() and occluded() calls since construction, from all threads (for the
+  // benchmark's rays per second).
+  uint64_t rays_traced() const;
+
   size_t triangle_count() const;
   size_t mesh_count() const;
 

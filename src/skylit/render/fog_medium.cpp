@@ -77,27 +77,30 @@ Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance)
   return at_row(row) * (1 - w) + at_row(row + 1) * w;
 }
 
-FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
+MediumStretch FogMedium::along(const Ray& ray, double distance) const {
   // Only the part of the ray inside the layer matters; an infinite ray (the sky) leaves
   // the layer within a finite distance unless it runs level inside it.
   const double end = std::isfinite(distance) ? distance : std::numeric_limits<double>::max();
   const RaySpan inside = layer_.clip(ray.origin.z, ray.direction.z, 0.0, end);
-  Along out{layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, 0.0, end)), Spectrum(0.0f)};
+  MediumStretch out{Transmittance(layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, 0.0, end))),
+                    Radiance(0.0f)};
   if (inside.empty()) return out;
+  Spectrum in_scattered(0.0f);
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
   if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
     for (const Interval& lit : shadows_.sunlit_intervals(ray, inside.lo, std::min(inside.hi, 1e12))) {
-      out.in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end,
+      in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end,
                                             sun_above_fog_);
     }
   }
   // Sky light, everywhere along it (the paper's assumption: no shadows for sky light);
   // from the camera's table when the ray starts there.
   if (ray.origin == camera_)
-    out.in_scattered += sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)),
+    in_scattered += sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)),
                                                   std::min(distance, kLongestRayM));
   else
-    out.in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
+    in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
+  out.in_scattered = Radiance(in_scattered);
   return out;
 }
 

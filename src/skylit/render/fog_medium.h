@@ -7,13 +7,13 @@
 
 #include <memory>
 #include <vector>
-#include <vector>
 
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/shadow_volumes.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/fog_sky_light.h"
+#include "skylit/spectrum/medium_stretch.h"
 
 namespace skylit {
 
@@ -25,12 +25,9 @@ class FogMedium {
   FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes, const SkyModel& sky,
             const Vec3& camera);
 
-  struct Along {
-    Spectrum transmittance;  // through the fog from the ray's origin to `distance`
-    Spectrum in_scattered;   // W m⁻² sr⁻¹ nm⁻¹ the fog adds toward the origin
-  };
-  // Along `ray` (unit direction) from its origin to `distance` (may be infinite: the sky).
-  Along along(const Ray& ray, double distance) const;
+  // What the fog does along `ray` (unit direction) from its origin to `distance` (may be
+  // infinite: the sky).
+  MediumStretch along(const Ray& ray, double distance) const;
 
   // The fog's transmittance toward the sun from a point (0 if the sun is down).
   Spectrum sun_transmittance(const Vec3& point) const;

@@ -42,10 +42,18 @@ bool interpolates(const std::array<Xyz, 4>& c, const Xyz& middle, double u, doub
 
 }  // namespace
 
-LampGlowImage::LampGlowImage(const PinholeCamera& camera, int width, int height,
-                             const std::vector<ViewHit>& centre_hits, const SceneLamps& lamps)
-    : camera_(camera), lamps_(lamps), width_(width), height_(height), centres_(static_cast<size_t>(width) * height) {
-  for (size_t i = 0; i < centres_.size(); ++i) centres_[i].hit = centre_hits.at(i);
+LampGlowImage::LampGlowImage(const PinholeCamera& camera, const PrimaryHits& centre_hits, const SceneLamps& lamps)
+    : camera_(camera),
+      lamps_(lamps),
+      width_(centre_hits.width()),
+      height_(centre_hits.height()),
+      centres_(static_cast<size_t>(width_) * height_) {
+  const int width = width_, height = height_;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const PrimaryHit& hit = centre_hits.at(x, y);
+      centre(x, y).hit = {hit.mesh, hit.distance()};
+    }
   const int blocks_x = (width + kBlock - 1) / kBlock, blocks_y = (height + kBlock - 1) / kBlock;
   std::atomic<uint64_t> evaluations{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, blocks_x * blocks_y), [&](const tbb::blocked_range<int>& range) {
@@ -56,8 +64,8 @@ LampGlowImage::LampGlowImage(const PinholeCamera& camera, int width, int height,
   evaluations_ = evaluations.load();
 }
 
-Xyz LampGlowImage::evaluate(const Ray& ray, const ViewHit& hit) const {
-  return xyz_from_spectrum(lamps_.in_scattered(ray, hit.distance));
+Spectrum LampGlowImage::evaluate(const Ray& ray, const ViewHit& hit) const {
+  return lamps_.in_scattered(ray, hit.distance);
 }
 
 void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
@@ -66,26 +74,31 @@ void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
   const int x_end = std::min(bx + kBlock, width_ - 1), y_end = std::min(by + kBlock, height_ - 1);
   const int x_own = bx + kBlock >= width_ ? width_ - 1 : bx + kBlock - 1;
   const int y_own = by + kBlock >= height_ ? height_ - 1 : by + kBlock - 1;
-  std::array<std::optional<Xyz>, (kBlock + 1) * (kBlock + 1)> memo;
-  auto value = [&](int x, int y) -> const Xyz& {
-    std::optional<Xyz>& v = memo[static_cast<size_t>(y - by) * (kBlock + 1) + (x - bx)];
+  // The glow at each evaluated centre, spectral, with its XYZ for the decisions (which
+  // compare colours as the eye would, not bin by bin).
+  struct Evaluated {
+    Spectrum glow;
+    Xyz xyz;
+  };
+  std::vector<std::optional<Evaluated>> memo(static_cast<size_t>(kBlock + 1) * (kBlock + 1));
+  auto evaluated = [&](int x, int y) -> const Evaluated& {
+    std::optional<Evaluated>& v = memo[static_cast<size_t>(y - by) * (kBlock + 1) + (x - bx)];
     if (!v) {
-      v = evaluate(camera_.ray_through(x + 0.5, y + 0.5), centre(x, y).hit);
+      const Spectrum glow = evaluate(camera_.ray_through(x + 0.5, y + 0.5), centre(x, y).hit);
+      v = Evaluated{glow, xyz_from_spectrum(glow)};
       ++evaluations;
     }
     return *v;
   };
-  auto set = [&](int x, int y, const Xyz& v) {
+  auto value = [&](int x, int y) -> const Xyz& { return evaluated(x, y).xyz; };
+  auto set = [&](int x, int y, const Spectrum& glow) {
     if (x > x_own || y > y_own) return;
-    Centre& c = centre(x, y);
-    c.xyz[0] = static_cast<float>(v.x);
-    c.xyz[1] = static_cast<float>(v.y);
-    c.xyz[2] = static_cast<float>(v.z);
+    centre(x, y).glow = glow;
   };
   auto refine = [&](auto&& self, int x0, int y0, int x1, int y1) -> void {
     if (x1 - x0 <= 1 && y1 - y0 <= 1) {
       for (int y : {y0, y1})
-        for (int x : {x0, x1}) set(x, y, value(x, y));
+        for (int x : {x0, x1}) set(x, y, evaluated(x, y).glow);
       return;
     }
     const std::array<Xyz, 4> c{value(x0, y0), value(x1, y0), value(x0, y1), value(x1, y1)};
@@ -115,14 +128,16 @@ void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
         accept = std::isfinite(d) && std::abs(h.distance - d) <= kDistanceTolerance * h.distance;
       }
     if (accept) {
+      const std::array<const Spectrum*, 4> g{&evaluated(x0, y0).glow, &evaluated(x1, y0).glow,
+                                             &evaluated(x0, y1).glow, &evaluated(x1, y1).glow};
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
           const double u = x1 > x0 ? double(x - x0) / (x1 - x0) : 0, v = y1 > y0 ? double(y - y0) / (y1 - y0) : 0;
-          auto mix = [&](double a, double b, double p, double q) {
-            return (1 - v) * ((1 - u) * a + u * b) + v * ((1 - u) * p + u * q);
-          };
-          set(x, y, {mix(c[0].x, c[1].x, c[2].x, c[3].x), mix(c[0].y, c[1].y, c[2].y, c[3].y),
-                     mix(c[0].z, c[1].z, c[2].z, c[3].z)});
+          Spectrum mixed;
+          for (int k = 0; k < kSpectralBins; ++k)
+            mixed[k] = static_cast<float>((1 - v) * ((1 - u) * (*g[0])[k] + u * (*g[1])[k]) +
+                                          v * ((1 - u) * (*g[2])[k] + u * (*g[3])[k]));
+          set(x, y, mixed);
         }
       return;
     }
@@ -142,26 +157,31 @@ void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
   refine(refine, bx, by, x_end, y_end);
 }
 
-Xyz LampGlowImage::at(double x, double y, const Ray& ray, const ViewHit& hit) const {
+Spectrum LampGlowImage::at(double x, double y, const Ray& ray, const ViewHit& hit) const {
   // The four pixel centres around the sample, bilinear weights, only those whose view
   // ray is as long as the sample's.
   const double cx = std::clamp(x - 0.5, 0.0, width_ - 1.0), cy = std::clamp(y - 0.5, 0.0, height_ - 1.0);
   const int x0 = std::min(static_cast<int>(cx), width_ - 1), y0 = std::min(static_cast<int>(cy), height_ - 1);
   const int x1 = std::min(x0 + 1, width_ - 1), y1 = std::min(y0 + 1, height_ - 1);
   const double fx = cx - x0, fy = cy - y0;
-  double weight = 0, sum[3] = {0, 0, 0};
+  double weight = 0;
+  std::array<double, kSpectralBins> sum{};
   auto take = [&](int px, int py, double w) {
     const Centre& c = centre(px, py);
     if (!alike(c.hit, hit.distance)) return;
     w += 1e-6;  // a sample exactly on a centre still counts its neighbours' side
     weight += w;
-    for (int k = 0; k < 3; ++k) sum[k] += w * c.xyz[k];
+    for (int k = 0; k < kSpectralBins; ++k) sum[static_cast<size_t>(k)] += w * c.glow[k];
   };
   take(x0, y0, (1 - fx) * (1 - fy));
   take(x1, y0, fx * (1 - fy));
   take(x0, y1, (1 - fx) * fy);
   take(x1, y1, fx * fy);
-  if (weight > 0) return {sum[0] / weight, sum[1] / weight, sum[2] / weight};
+  if (weight > 0) {
+    Spectrum mean;
+    for (int k = 0; k < kSpectralBins; ++k) mean[k] = static_cast<float>(sum[static_cast<size_t>(k)] / weight);
+    return mean;
+  }
   return evaluate(ray, hit);
 }
 

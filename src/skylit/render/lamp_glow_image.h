@@ -24,8 +24,9 @@
 
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/render/camera.h"
+#include "skylit/render/primary_hits.h"
 #include "skylit/render/scene_lamps.h"
-#include "skylit/spectrum/color_space.h"
+#include "skylit/spectrum/spectrum.h"
 
 namespace skylit {
 
@@ -43,28 +44,24 @@ inline constexpr double kGlowTolerance = 0.01;
 class LampGlowImage {
  public:
   // Runs the quadtree over the image (in the calling TBB arena, in parallel), given what
-  // the ray through each pixel's centre meets (width × height, row by row from the top).
-  LampGlowImage(const PinholeCamera& camera, int width, int height, const std::vector<ViewHit>& centre_hits,
-                const SceneLamps& lamps);
+  // the ray through each pixel's centre meets.
+  LampGlowImage(const PinholeCamera& camera, const PrimaryHits& centre_hits, const SceneLamps& lamps);
 
-  // Absolute XYZ of the glow at a pixel's centre.
-  Xyz centre_glow(int x, int y) const {
-    const Centre& c = centre(x, y);
-    return {c.xyz[0], c.xyz[1], c.xyz[2]};
-  }
+  // The glow's radiance (W m⁻² sr⁻¹ nm⁻¹) at a pixel's centre.
+  const Spectrum& centre_glow(int x, int y) const { return centre(x, y).glow; }
 
-  // Absolute XYZ of the glow for a sample at image position (x, y) whose ray met `hit`.
-  Xyz at(double x, double y, const Ray& ray, const ViewHit& hit) const;
+  // The glow's radiance for a sample at image position (x, y) whose ray met `hit`.
+  Spectrum at(double x, double y, const Ray& ray, const ViewHit& hit) const;
 
   // How many glow evaluations the quadtree made (for the benchmark and tests).
   uint64_t evaluations() const { return evaluations_; }
 
  private:
   struct Centre {
-    float xyz[3];
+    Spectrum glow;
     ViewHit hit;
   };
-  Xyz evaluate(const Ray& ray, const ViewHit& hit) const;
+  Spectrum evaluate(const Ray& ray, const ViewHit& hit) const;
   void fill_block(int bx, int by, uint64_t& evaluations);
   const Centre& centre(int x, int y) const { return centres_[static_cast<size_t>(y) * width_ + x]; }
   Centre& centre(int x, int y) { return centres_[static_cast<size_t>(y) * width_ + x]; }

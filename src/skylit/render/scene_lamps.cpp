@@ -34,8 +34,7 @@ Spectrum SceneLamps::irradiance_from(size_t index, const Vec3& point) const {
   return e;  // for the few lamps seen directly: no need to spare the exponentials
 }
 
-Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer,
-                               uint64_t& rays) const {
+Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const {
   // Each lamp that sends light to the point at all is a candidate, with the radiance
   // (cd/m², mean over bins; the spectra are one candela per candela) it would reflect
   // toward the viewer unshadowed: its Lambertian part and its glossy highlight, which a
@@ -83,7 +82,6 @@ Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& materi
     const bool test = left >= kUntestedShare * found;
     left -= c.radiance;
     if (test) {
-      ++rays;
       const Vec3& lamp = position(c.lamp);
       if (tracer_.occluded(Ray{origin, c.l, 0.0, length(lamp - origin) * (1 - 1e-6)})) continue;
       found += c.radiance;

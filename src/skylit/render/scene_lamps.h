@@ -38,12 +38,12 @@ class SceneLamps {
   bool empty() const { return lamps_.empty(); }
 
   // W m⁻² sr⁻¹ nm⁻¹ a surface point reflects toward the viewer from all lamps
-  // (Lambertian and glossy parts), counting the occlusion rays it traces in `rays`.
+  // (Lambertian and glossy parts).
   // Occlusion rays go to the lamps in order of the radiance they would reflect
   // unshadowed (Lambertian and glossy parts); the last ones, together under
   // kUntestedShare of what was found lit, are counted unshadowed, so the result is
   // exact or above it by less than that share (in the mean over bins).
-  Spectrum reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer, uint64_t& rays) const;
+  Spectrum reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const;
 
   // W m⁻² sr⁻¹ nm⁻¹ the fog scatters toward the ray's origin from all lamps, over
   // [0, distance] (distance may be infinite).

@@ -92,32 +92,27 @@ int SurfaceCache::Grid::computed() const {
   return n;
 }
 
-void SurfaceCache::compute_wanted(Grid& grid, const std::vector<std::optional<SurfacePoint>>& pixels, int width,
-                                  const Compute& compute) {
+void SurfaceCache::compute_wanted(Grid& grid, const PrimaryHits& hits, const Compute& compute) {
   tbb::parallel_for(0, grid.grid_height(), [&](int gy) {
     for (int gx = 0; gx < grid.grid_width(); ++gx) {
       if (!grid.wanted(gx, gy)) continue;
-      const std::optional<SurfacePoint>& p = pixels[static_cast<size_t>(grid.pixel_y(gy) * width + grid.pixel_x(gx))];
-      if (p) grid.set(gx, gy, *p, compute(*p));
+      if (const SurfacePoint* p = hits.surface(grid.pixel_x(gx), grid.pixel_y(gy))) grid.set(gx, gy, *p, compute(*p));
     }
   });
 }
 
-SurfaceCache::SurfaceCache(int width, int height, const Locate& locate, const Compute& compute)
-    : coarse_(width, height, kCoarseSpacing), fine_(width, height, kFineSpacing) {
-  std::vector<std::optional<SurfacePoint>> pixels(static_cast<size_t>(width * height));
-  tbb::parallel_for(0, height, [&](int y) {
-    for (int x = 0; x < width; ++x) pixels[static_cast<size_t>(y * width + x)] = locate(x, y);
-  });
+SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute)
+    : coarse_(hits.width(), hits.height(), kCoarseSpacing), fine_(hits.width(), hits.height(), kFineSpacing) {
+  const int width = hits.width(), height = hits.height();
   for (int gy = 0; gy < coarse_.grid_height(); ++gy)
     for (int gx = 0; gx < coarse_.grid_width(); ++gx) coarse_.want(gx, gy);
-  compute_wanted(coarse_, pixels, width, compute);
+  compute_wanted(coarse_, hits, compute);
   // The fine grid around every pixel whose surface the coarse grid does not cover: the
   // rows are checked in parallel, each listing its fine cells, then marked in order.
   std::vector<std::vector<std::pair<int, int>>> cells(static_cast<size_t>(height));
   tbb::parallel_for(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
-      const std::optional<SurfacePoint>& p = pixels[static_cast<size_t>(y * width + x)];
+      const SurfacePoint* p = hits.surface(x, y);
       if (!p || coarse_.interpolate(x + 0.5, y + 0.5, *p)) continue;
       int gx, gy;
       double tx, ty;
@@ -130,7 +125,7 @@ SurfaceCache::SurfaceCache(int width, int height, const Locate& locate, const Co
       for (int dy = 0; dy <= 1; ++dy)
         for (int dx = 0; dx <= 1; ++dx)
           fine_.want(std::min(gx + dx, fine_.grid_width() - 1), std::min(gy + dy, fine_.grid_height() - 1));
-  compute_wanted(fine_, pixels, width, compute);
+  compute_wanted(fine_, hits, compute);
 }
 
 std::optional<CachedSkyLight> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {

@@ -13,18 +13,10 @@
 #include <optional>
 #include <vector>
 
-#include "skylit/core/vec3.h"
+#include "skylit/render/primary_hits.h"
 #include "skylit/spectrum/spectrum.h"
 
 namespace skylit {
-
-// Where a camera ray meets a surface.
-struct SurfacePoint {
-  Vec3 position;
-  Vec3 normal;        // unit, facing the camera
-  double distance;    // from the camera
-  uint32_t material;  // index into the scene's materials
-};
 
 // The sky's light at a surface point: its irradiance (for the Lambertian part) and the
 // radiance that the glossy part reflects toward the camera.
@@ -40,15 +32,14 @@ bool same_surface(const SurfacePoint& cached, const SurfacePoint& point);
 
 class SurfaceCache {
  public:
-  using Locate = std::function<std::optional<SurfacePoint>(int pixel_x, int pixel_y)>;
   using Compute = std::function<CachedSkyLight(const SurfacePoint&)>;
 
   // Coarse and fine grid spacings in pixels.
   static constexpr int kCoarseSpacing = 16, kFineSpacing = 4;
 
-  // Locates the surface at every pixel centre, computes the coarse grid, and the fine
+  // From the surfaces seen at every pixel centre: computes the coarse grid, and the fine
   // grid where the coarse one does not cover a pixel's surface; in parallel.
-  SurfaceCache(int width, int height, const Locate& locate, const Compute& compute);
+  SurfaceCache(const PrimaryHits& hits, const Compute& compute);
 
   // The value for a surface point seen at image position (x, y) in pixels: interpolated
   // from the coarse grid or else the fine one; else the nearest fine grid point within 8
@@ -90,8 +81,7 @@ class SurfaceCache {
     std::vector<Entry> entries_;
   };
 
-  static void compute_wanted(Grid& grid, const std::vector<std::optional<SurfacePoint>>& pixels, int width,
-                             const Compute& compute);
+  static void compute_wanted(Grid& grid, const PrimaryHits& hits, const Compute& compute);
 
   Grid coarse_, fine_;
 };

@@ -15,15 +15,14 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
 }
 
-Spectrum SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Spectrum& sky, uint64_t& rays) const {
+Spectrum SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Spectrum& sky) const {
   const Ray ray{origin, direction};
-  ++rays;
   const std::optional<Hit> hit = tracer_.intersect(ray);
-  return hit ? obstacle_radiance_(ray, *hit, rays) : sky;
+  return hit ? obstacle_radiance_(ray, *hit) : sky;
 }
 
 Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer,
-                                     const Material& material, uint64_t& rays) const {
+                                     const Material& material) const {
   if (!has_specular(material)) return Spectrum(0.0f);
   const Vec3 origin = offset_from_surface(point, normal);
   // The bands' frame: axis a ⟂ n and ⟂ r; the element (α, δ) lies in direction
@@ -112,8 +111,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   std::vector<std::optional<Spectrum>> obstacle(found.size());  // the obstacle's light, if hidden
   for (size_t i = 0; i < found.size(); ++i) {
     const Ray ray{origin, found[i].direction};
-    ++rays;
-    if (const std::optional<Hit> hit = tracer_.intersect(ray)) obstacle[i] = obstacle_radiance_(ray, *hit, rays);
+    if (const std::optional<Hit> hit = tracer_.intersect(ray)) obstacle[i] = obstacle_radiance_(ray, *hit);
   }
   for (size_t i = 0; i < found.size(); ++i) {
     const Element& e = found[i];
@@ -128,9 +126,8 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
       for (int u = -1; u <= 1; ++u)
         for (int w = -1; w <= 1; ++w) {
           const Ray ray{origin, direction_at(e.alpha + u * width / 3, e.delta + w * width / 3)};
-          ++rays;
           const std::optional<Hit> hit = tracer_.intersect(ray);
-          mixed += hit ? obstacle_radiance_(ray, *hit, rays) : e.sky;
+          mixed += hit ? obstacle_radiance_(ray, *hit) : e.sky;
         }
       incoming_light = mixed * (1.0f / 9.0f);
     }
@@ -140,7 +137,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   return sum;
 }
 
-Spectrum SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, uint64_t& rays) const {
+Spectrum SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) const {
   Spectrum irradiance = sky_.sky_irradiance(normal);
   const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
@@ -149,25 +146,23 @@ Spectrum SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, uin
     const double cosine = dot(normal, e.direction);
     if (cosine <= 0) continue;
     const Ray ray{origin, e.direction};
-    ++rays;
     const std::optional<Hit> hit = tracer_.intersect(ray);
     if (!hit) continue;
     // Hidden: the element's sky leaves, the obstacle's light comes in its place.
     const float weight = static_cast<float>(cosine * e.solid_angle);
-    const Spectrum obstacle = obstacle_radiance_(ray, *hit, rays);
+    const Spectrum obstacle = obstacle_radiance_(ray, *hit);
     for (int k = 0; k < kSpectralBins; ++k)
       irradiance[k] = std::max(0.0f, irradiance[k] + weight * (obstacle[k] - element_radiance_[i][k]));
   }
   return irradiance;
 }
 
-double SkyLight::sky_view_factor(const Vec3& point, const Vec3& normal, uint64_t& rays) const {
+double SkyLight::sky_view_factor(const Vec3& point, const Vec3& normal) const {
   const Vec3 origin = offset_from_surface(point, normal);
   double visible = 0;
   for (const SkyElement& e : elements_) {
     const double cosine = dot(normal, e.direction);
     if (cosine <= 0 || e.direction.z <= 0) continue;
-    ++rays;
     if (!tracer_.occluded(Ray{origin, e.direction})) visible += cosine * e.solid_angle;
   }
   return visible / kPi;

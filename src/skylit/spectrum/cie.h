@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "skylit/spectrum/color_space.h"
+#include "skylit/spectrum/radiometry.h"
 #include "skylit/spectrum/spectrum.h"
 #include "skylit/spectrum/tabulated.h"
 
@@ -33,5 +34,8 @@ Xyz tristimulus(const std::vector<double>& bin_means, const CmfBinIntegrals& cmf
 // irradiance (W m⁻² nm⁻¹ → Y in lx).
 Xyz xyz_from_spectrum(const Spectrum& spectrum);
 double luminance(const Spectrum& radiance);
+// cd/m² of a radiance, lx of an irradiance (683 lm/W × ∫ · ȳ dλ).
+inline double luminance(const Radiance& radiance) { return luminance(radiance.spectrum()); }
+inline double illuminance(const Irradiance& irradiance) { return luminance(irradiance.spectrum()); }
 
 }  // namespace skylit

@@ -1,0 +1,48 @@
+// The scene's clouds under its sky: how they are lit (Eq. 15: the sun at the clouds'
+// altitude; the ambient standing for multiple scattering inside them), what they do
+// to a view ray (Eq. 16, as a stretch of medium), the shadows they cast, and how much
+// of the sky light they let through to the ground. Built once per scene from the
+// atmosphere's sky model; read by the renderer from any thread.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "skylit/atmosphere/atmosphere.h"
+#include "skylit/clouds/cloud_layer.h"
+#include "skylit/spectrum/medium_stretch.h"
+
+namespace skylit {
+
+class CloudsInSky {
+ public:
+  // The clouds given one by one and those of a generated layer, if any; `ground_point`
+  // is where the share of sky light under the clouds is measured (below the camera).
+  CloudsInSky(const std::vector<CloudShape>& listed, const std::optional<CloudLayerSettings>& generated,
+              const SkyModel& sky, const Vec3& ground_point);
+
+  // What the clouds do along a view ray from its origin up to `distance` (may be
+  // infinite), and where the ray enters the first cloud (infinite if none).
+  struct Along {
+    MediumStretch stretch;
+    double entry_distance;
+  };
+  Along along(const Vec3& origin, const Vec3& direction, double distance) const;
+
+  // e^{−t'} toward the sun from a point (the clouds' shadows).
+  double sun_transmittance(const Vec3& point) const { return layer_.sun_transmittance(point, to_sun_); }
+
+  // A horizontal surface's sky irradiance under the clouds over that under a clear sky,
+  // per bin (at most 2): how the clouds scale the sky light on surfaces.
+  const Transmittance& sky_share() const { return sky_share_; }
+
+ private:
+  Transmittance measure_sky_share(const SkyModel& sky, const Vec3& ground_point) const;
+
+  CloudLayer layer_;
+  Vec3 to_sun_;
+  CloudLighting lighting_;
+  Transmittance sky_share_{1.0f};
+};
+
+}  // namespace skylit

@@ -1,0 +1,109 @@
+// The paper's fast, noise-free method (`bands`), one ray at a time: the radiance that
+// arrives at the camera along a view ray. The sun attenuated on its way to each
+// surface, with hard shadows; the sky dome's band sources on surfaces, hidden by
+// obstacles that send back their own light (sky/sky_light.h); lamps; mirror reflections;
+// the sky and the sun's disc where the ray meets no object; all seen through the air,
+// the fog and the clouds on the way (view_path.h).
+//
+// The image loop (image_loop.h) and the tests call the same function, radiance(); the
+// loop only hands it what it found once for the whole image (the surface a pixel's
+// centre sees, the cached sky light and lamp glow), and each of these is computed
+// exactly where it is not given.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "skylit/render/lamp_glow_image.h"
+#include "skylit/render/prepared_scene.h"
+#include "skylit/render/primary_hits.h"
+#include "skylit/render/surface_cache.h"
+#include "skylit/render/view_path.h"
+#include "skylit/sky/sky_light.h"
+
+namespace skylit {
+
+// What the image loop found once for the whole image, that a sample may use instead of
+// computing it: any of them may be absent.
+struct ImageCaches {
+  const SurfaceCache* sky_light = nullptr;
+  const LampGlowImage* glow = nullptr;
+};
+
+// What lies between the camera and the surface is found once per pixel and shared by the
+// pixel's samples that lie within 1 % of the same distance (their directions differ by
+// under a pixel); a sample on another surface at another depth gets its own.
+class PixelViewPath {
+ public:
+  template <typename Make>
+  const ViewPath& for_distance(double distance, Make&& make) {
+    const bool same = valid_ && (std::isinf(distance) ? std::isinf(distance_)
+                                                      : std::abs(distance - distance_) <= 0.01 * distance_);
+    if (!same) {
+      path_ = make();
+      distance_ = distance;
+      valid_ = true;
+    }
+    return path_;
+  }
+
+ private:
+  bool valid_ = false;
+  double distance_ = 0;
+  ViewPath path_;
+};
+
+// A sample's place in the image and what it may take from the image's caches.
+struct SampleContext {
+  double image_x = 0, image_y = 0;  // pixels, for the caches' look-ups
+  ImageCaches caches;
+  PixelViewPath* pixel_path = nullptr;  // none: the view path is found for this ray alone
+};
+
+class BandsIntegrator {
+ public:
+  explicit BandsIntegrator(const PreparedScene& scene);
+
+  // What a camera ray meets first.
+  PrimaryHit first_hit(const Ray& ray) const;
+
+  // Radiance arriving along `ray` (W m⁻² sr⁻¹ nm⁻¹), whose first hit is `hit`.
+  Radiance radiance(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const;
+  // The same, exactly: traced here, with nothing taken from caches.
+  Radiance radiance(const Ray& ray) const { return radiance(ray, first_hit(ray), {}); }
+
+  // The sky's light at a surface point seen from `to_viewer`, exactly (what the
+  // surface cache holds).
+  CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const;
+
+  const SkyLight& sky_light() const { return *sky_light_; }
+
+ private:
+  const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
+  // The surface point a ray meets, facing the ray's origin.
+  SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
+  ViewPath view_path(const Ray& ray, double distance) const;
+  // The sun's direct normal irradiance at a surface point if it reaches it (0 in
+  // shadow or behind the surface).
+  Spectrum sun_reaching(const SurfacePoint& point) const;
+  // The light a surface sends toward the camera, before the air and fog on the way.
+  Spectrum shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const;
+  // The lamps' glow in fog along the ray: from the glow image if given, else exactly.
+  Spectrum lamp_glow(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const;
+  // The sky light's share that gets through the clouds and the fog to altitude z (1
+  // without either).
+  Spectrum sky_share(double z) const;
+  // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
+  // or the sky and the sun.
+  Spectrum mirrored(const SurfacePoint& point, const Vec3& direction) const;
+  // The light a hit obstacle sends back along `ray`, for the sky light's one bounce:
+  // its Lambertian part, lit by the sun and the unobstructed sky.
+  Spectrum obstacle_radiance(const Ray& ray, const Hit& hit) const;
+
+  const PreparedScene& scene_;
+  const SkyModel& sky_;
+  Vec3 to_sun_;
+  std::unique_ptr<SkyLight> sky_light_;
+};
+
+}  // namespace skylit

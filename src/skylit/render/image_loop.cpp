@@ -1,0 +1,147 @@
+#include "skylit/render/image_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "skylit/render/film.h"
+
+namespace skylit {
+
+namespace {
+
+constexpr int kTileSize = 32;
+// Neighbouring pixel centres that differ by more than this fraction (in X, Y or Z) mark
+// an edge, where the pixel gets its full grid of samples.
+constexpr double kEdgeContrast = 0.05;
+
+// Whether pixel (x, y) lies on an edge: its centre and one of its four neighbours' met
+// different objects, or differ in any of X, Y, Z by more than kEdgeContrast.
+bool is_edge(const XyzImage& image, const PrimaryHits& hits, int x, int y) {
+  const Xyz a = image.at(x, y);
+  const uint32_t mesh = hits.at(x, y).mesh;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int nx = x + dx, ny = y + dy;
+      if ((dx == 0) == (dy == 0) || nx < 0 || ny < 0 || nx >= image.width || ny >= image.height) continue;
+      if (hits.at(nx, ny).mesh != mesh) return true;
+      const Xyz b = image.at(nx, ny);
+      for (auto [p, q] : {std::pair{a.x, b.x}, std::pair{a.y, b.y}, std::pair{a.z, b.z}})
+        if (std::abs(p - q) > kEdgeContrast * std::max(std::abs(p), std::abs(q))) return true;
+    }
+  return false;
+}
+
+// Adds each lamp the camera sees directly (not hidden by an object) to the pixel it
+// falls in: a point source's irradiance at the camera spread over that pixel's solid
+// angle, through the fog and the air.
+void add_seen_lamps(const PreparedScene& scene, const PinholeCamera& camera, Film& film) {
+  const SceneLamps& lamps = *scene.lamps();
+  const Vec3& eye = scene.scene().camera.position;
+  for (size_t i = 0; i < lamps.size(); ++i) {
+    const Vec3& lamp = lamps.position(i);
+    const std::optional<std::pair<double, double>> at = camera.project(lamp);
+    if (!at) continue;
+    const int x = static_cast<int>(std::floor(at->first)), y = static_cast<int>(std::floor(at->second));
+    if (x < 0 || y < 0 || x >= film.width() || y >= film.height()) continue;
+    const Vec3 to_lamp = lamp - eye;
+    const double distance = length(to_lamp);
+    if (!(distance > 0)) continue;
+    const Vec3 direction = to_lamp / distance;
+    if (scene.tracer().occluded(Ray{eye, direction, 0.0, distance * (1 - 1e-6)})) continue;
+    const Irradiance irradiance =
+        Irradiance(lamps.irradiance_from(i, eye)) * scene.sky().aerial_perspective(direction, distance).transmittance;
+    film.add_point_source(x, y, irradiance, camera.pixel_solid_angle(x + 0.5, y + 0.5));
+  }
+}
+
+}  // namespace
+
+XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integrator, const RenderOptions& options) {
+  const RenderSettings& settings = scene.scene().render;
+  const int width = settings.width, height = settings.height, n = settings.samples_per_axis;
+  const PinholeCamera camera(scene.scene().camera, width, height);
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+
+  // What every pixel's centre sees, then the caches made from it: the sky light at a
+  // sparse grid of those points, and the lamps' glow in fog.
+  std::unique_ptr<PrimaryHits> hits;
+  std::unique_ptr<SurfaceCache> sky_light;
+  std::unique_ptr<LampGlowImage> glow;
+  arena.execute([&] {
+    hits = std::make_unique<PrimaryHits>(camera, width, height,
+                                         [&](const Ray& ray) { return integrator.first_hit(ray); });
+    const Vec3& eye = scene.scene().camera.position;
+    sky_light = std::make_unique<SurfaceCache>(*hits, [&](const SurfacePoint& p) {
+      return integrator.sky_light_at(p, normalize(eye - p.position));
+    });
+    if (scene.lamps() && scene.fog()) glow = std::make_unique<LampGlowImage>(camera, *hits, *scene.lamps());
+  });
+  const ImageCaches caches{sky_light.get(), glow.get()};
+
+  // A pixel's value from a regular grid × grid of samples inside it, averaged with equal
+  // weights. Grid 1 is the pixel's centre, whose hit is known already.
+  auto pixel_value = [&](int x, int y, int grid) {
+    PixelViewPath pixel_path;
+    if (grid == 1) {
+      const SampleContext context{x + 0.5, y + 0.5, caches, &pixel_path};
+      return integrator.radiance(camera.ray_through(x + 0.5, y + 0.5), hits->at(x, y), context).spectrum();
+    }
+    Spectrum sum;
+    for (int sy = 0; sy < grid; ++sy)
+      for (int sx = 0; sx < grid; ++sx) {
+        const double px = x + (sx + 0.5) / grid, py = y + (sy + 0.5) / grid;
+        const Ray ray = camera.ray_through(px, py);
+        const SampleContext context{px, py, caches, &pixel_path};
+        sum += integrator.radiance(ray, integrator.first_hit(ray), context).spectrum();
+      }
+    return sum * static_cast<float>(1.0 / (grid * grid));
+  };
+
+  // Two passes over the tiles (adaptive antialiasing): first one sample at every
+  // pixel's centre; then the full n × n grid only where an edge runs (is_edge).
+  // Elsewhere the image is smooth at the pixel's scale and its centre stands for the
+  // grid's mean.
+  const int tiles_x = (width + kTileSize - 1) / kTileSize, tiles_y = (height + kTileSize - 1) / kTileSize;
+  const int tile_count = tiles_x * tiles_y;
+  const int passes = n > 1 ? 2 : 1;
+  std::mutex progress_mutex;
+  int tiles_done = 0;
+  Film centres(width, height);
+  std::optional<Film> refined;  // the second pass reads the first's film and writes here
+  auto render_tile = [&](int tile, int pass) {
+    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+    const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        if (pass == 0)
+          centres.set(x, y, pixel_value(x, y, passes == 1 ? n : 1));
+        else if (is_edge(centres.image(), *hits, x, y))
+          refined->set(x, y, pixel_value(x, y, n));
+      }
+    if (options.on_progress) {
+      std::lock_guard lock(progress_mutex);
+      options.on_progress(++tiles_done, passes * tile_count);
+    }
+  };
+  for (int pass = 0; pass < passes; ++pass) {
+    if (pass == 1) refined = centres;
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
+        for (int tile = range.begin(); tile != range.end(); ++tile) render_tile(tile, pass);
+      });
+    });
+  }
+  Film& film = refined ? *refined : centres;
+  if (scene.lamps()) add_seen_lamps(scene, camera, film);
+  return film.take();
+}
+
+}  // namespace skylit

@@ -1,0 +1,49 @@
+// A scene made ready to render: its meshes in the ray tracer, the atmosphere's tables
+// for its sun and camera, its fog, clouds and lamps. Built once per scene (the costly
+// part of setting up a frame), then only read, by any number of threads, by whichever
+// integrator renders it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "skylit/atmosphere/atmosphere.h"
+#include "skylit/clouds/clouds_in_sky.h"
+#include "skylit/geometry/ray_tracer.h"
+#include "skylit/render/fog_medium.h"
+#include "skylit/render/scene_lamps.h"
+#include "skylit/scene/scene.h"
+
+namespace skylit {
+
+class PreparedScene {
+ public:
+  // Keeps a reference to `scene`, which must outlive it.
+  explicit PreparedScene(const Scene& scene);
+  PreparedScene(Scene&&) = delete;
+
+  const Scene& scene() const { return scene_; }
+  const RayTracer& tracer() const { return tracer_; }
+  const Vec3& to_sun() const { return to_sun_; }
+  const SkyModel& sky() const { return sky_; }
+  const FogMedium* fog() const { return fog_.get(); }         // null without fog
+  const CloudsInSky* clouds() const { return clouds_.get(); }  // null without clouds
+  const SceneLamps* lamps() const { return lamps_.get(); }     // null without lights
+
+  // The material of a mesh hit by a ray (the tracer's mesh id).
+  uint32_t material_of_mesh(uint32_t mesh) const { return material_of_mesh_[mesh]; }
+  const Material& material(uint32_t index) const { return scene_.materials[index].material; }
+
+ private:
+  const Scene& scene_;
+  RayTracer tracer_;
+  std::vector<uint32_t> material_of_mesh_;
+  Vec3 to_sun_;
+  Atmosphere atmosphere_;
+  SkyModel sky_;
+  std::unique_ptr<FogMedium> fog_;
+  std::unique_ptr<CloudsInSky> clouds_;
+  std::unique_ptr<SceneLamps> lamps_;
+};
+
+}  // namespace skylit
