@@ -33,11 +33,18 @@ struct Sun {
   double azimuth_deg = 180.0;  // clockwise from north
 };
 
+// How each pixel's light is found: the paper's fast, noise-free method, or the
+// spectral Monte Carlo reference that every fast path is checked against.
+enum class Integrator { bands, path };
+
 struct RenderSettings {
   int width = 1280;
   int height = 720;
   std::optional<double> exposure_ev;  // empty: automatic from the log-average luminance
-  int samples_per_axis = 2;           // a regular grid of n × n samples per pixel
+  int samples_per_axis = 2;           // bands: a regular grid of n × n samples per pixel
+  Integrator integrator = Integrator::bands;
+  int samples_per_pixel = 64;  // path: paths per pixel, at random places in it
+  uint64_t seed = 1;           // path: which random numbers (the same seed, the same bytes)
 };
 
 struct SceneObject {

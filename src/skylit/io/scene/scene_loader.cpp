@@ -40,7 +40,7 @@ Camera read_camera(const JsonReader& j) {
 }
 
 RenderSettings read_render(const JsonReader& j) {
-  j.allow_only({"width", "height", "exposure_ev", "samples_per_axis"});
+  j.allow_only({"width", "height", "exposure_ev", "samples_per_axis", "integrator", "samples_per_pixel", "seed"});
   RenderSettings render;
   if (auto w = j.optional("width")) render.width = w->integer_in(1, 16384);
   if (auto h = j.optional("height")) render.height = h->integer_in(1, 16384);
@@ -49,6 +49,9 @@ RenderSettings read_render(const JsonReader& j) {
     if (!(ev->is_string() && ev->string() == "auto")) render.exposure_ev = ev->number_in(-30, 40);
   }
   if (auto s = j.optional("samples_per_axis")) render.samples_per_axis = s->integer_in(1, 16);
+  if (auto i = j.optional("integrator")) render.integrator = i->one_of({"bands", "path"}) == "path" ? Integrator::path : Integrator::bands;
+  if (auto s = j.optional("samples_per_pixel")) render.samples_per_pixel = s->integer_in(1, 1 << 20);
+  if (auto s = j.optional("seed")) render.seed = static_cast<uint64_t>(s->integer_in(0, 1 << 30));
   return render;
 }
 
@@ -67,7 +70,11 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   scene.materials = read_materials(root.required("materials"));
   scene.objects = read_objects(root.required("objects"), scene.materials, base_dir);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
-  if (auto render = root.optional("render")) scene.render = read_render(*render);
+  if (auto render = root.optional("render")) {
+    scene.render = read_render(*render);
+    if (scene.render.integrator == Integrator::path && (scene.fog || !scene.clouds.empty() || scene.cloud_layer))
+      render->required("integrator").fail("the path integrator does not yet trace fog or clouds; use \"bands\"");
+  }
   return scene;
 }
 
