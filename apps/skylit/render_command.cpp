@@ -20,6 +20,7 @@ namespace {
 struct RenderArguments {
   std::string scene_file;
   std::vector<std::string> outputs;
+  std::vector<std::string> standard_error_outputs;
   std::vector<std::string> overrides;
   int threads = 0;
   bool quiet = false;
@@ -27,22 +28,27 @@ struct RenderArguments {
 
 int run_render(const RenderArguments& args) {
   // Check every output's format and folder before the work, so a typo costs nothing.
-  for (const std::string& out : args.outputs) {
+  std::vector<std::string> all_outputs = args.outputs;
+  all_outputs.insert(all_outputs.end(), args.standard_error_outputs.begin(), args.standard_error_outputs.end());
+  for (const std::string& out : all_outputs) {
     image_format_from_path(out);
     const std::filesystem::path dir = std::filesystem::path(out).parent_path();
     if (!dir.empty() && !std::filesystem::is_directory(dir))
       throw InputError(out + ": the folder " + dir.string() + " does not exist");
   }
   const Scene scene = load_scene(args.scene_file, args.overrides);
+  if (!args.standard_error_outputs.empty() && scene.render.integrator != Integrator::path)
+    throw InputError(args.scene_file + ": --standard-error needs render.integrator \"path\" (the bands method has no noise)");
   const Renderer renderer(scene);
   ProgressBar progress(!args.quiet && isatty(STDERR_FILENO) != 0);
   RenderOptions options;
   options.threads = args.threads;
   options.on_progress = [&progress](int done, int total) { progress.update(done, total); };
-  const XyzImage image = renderer.render(options);
+  const Renderer::Result result = renderer.render_with_error(options);
   DisplayOptions display;
   display.exposure_ev = scene.render.exposure_ev;
-  for (const std::string& out : args.outputs) write_image(image, out, display);
+  for (const std::string& out : args.outputs) write_image(result.image, out, display);
+  for (const std::string& out : args.standard_error_outputs) write_image(*result.standard_error, out, display);
   return 0;
 }
 
@@ -58,6 +64,9 @@ CommandRunner add_render_command(CLI::App& app) {
                      "(EXR adds a Y channel in cd/m²); .hdr is Radiance RGBE (luminance = 179 × "
                      "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image")
       ->required();
+  render->add_option("--standard-error", args->standard_error_outputs,
+                     "With render.integrator \"path\": also write each pixel's standard error of the mean "
+                     "(luminance in cd/m², as a grey) to this image; repeat for several formats");
   render->add_option("--set", args->overrides,
                      "Override a scene value: PATH=VALUE, e.g. --set sun.altitude_deg=4 "
                      "--set render.width=640 (degrees, metres and pixels as in the scene file)");
