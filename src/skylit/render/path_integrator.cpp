@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "skylit/material/reflection.h"
 #include "skylit/material/reflection_sampling.h"
+#include "skylit/media/fog_free_flight.h"
 
 namespace skylit {
 
@@ -19,12 +21,22 @@ double mean(const Spectrum& s) {
   return sum / kSpectralBins;
 }
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 }  // namespace
 
-PathIntegrator::PathIntegrator(const PreparedScene& scene) : scene_(scene), sky_sampler_(scene.sky()) {}
+PathIntegrator::PathIntegrator(const PreparedScene& scene) : scene_(scene), sky_sampler_(scene.sky()) {
+  if (const FogMedium* fog = scene.fog()) {
+    const FogLayer& layer = fog->layer();
+    fog_phase_ = std::make_unique<PhaseSampler>([&layer](double c) { return layer.phase(c); });
+  }
+}
 
 PathIntegrator::PathIntegrator(const PreparedScene& scene, const UniformEnvironment& furnace)
-    : scene_(scene), furnace_(furnace), sky_sampler_([&furnace](const Vec3&) { return furnace.radiance; }) {}
+    : PathIntegrator(scene) {
+  furnace_ = furnace;
+  sky_sampler_ = SkySampler([&furnace](const Vec3&) { return furnace.radiance; });
+}
 
 Spectrum PathIntegrator::environment(const Vec3& direction) const {
   return furnace_ ? furnace_->radiance : scene_.sky().sky_radiance_near_ground(direction);
@@ -36,40 +48,62 @@ SurfacePoint PathIntegrator::surface_point(const Ray& ray, const Hit& hit) const
   return {ray.origin + hit.t * ray.direction, normal, hit.t, scene_.material_of_mesh(hit.mesh_id)};
 }
 
-Spectrum PathIntegrator::direct_light(const SurfacePoint& point, const Vec3& to_viewer, CounterRandom& random) const {
-  const Material& material = scene_.material(point.material);
+Spectrum PathIntegrator::fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const {
+  if (!scene_.fog()) return Spectrum(1.0f);
+  return fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, distance);
+}
+
+Spectrum PathIntegrator::scattering_cos(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const {
+  if (scatterer.material) return reflection_cos(*scatterer.material, scatterer.normal, to_light, to_viewer);
+  // In fog: σ_s F / σ_s per unit of scattering (the albedo is in the flight's weight).
+  return Spectrum(static_cast<float>(scene_.fog()->layer().phase(dot(-to_viewer, to_light))));
+}
+
+double PathIntegrator::scattering_pdf(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const {
+  if (scatterer.material) return reflection_pdf(*scatterer.material, scatterer.normal, to_light, to_viewer);
+  return fog_phase_->pdf(dot(-to_viewer, to_light));
+}
+
+Spectrum PathIntegrator::direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
+                                      CounterRandom& random) const {
   const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
-  const Vec3 origin = offset_from_surface(point.position, point.normal);
+  const bool surface = scatterer.material != nullptr;
+  const Vec3 origin = surface ? offset_from_surface(position, scatterer.normal) : position;
+  auto faces = [&](const Vec3& direction) { return !surface || dot(scatterer.normal, direction) > 0; };
   Spectrum light(0.0f);
   // The sun, a direction with the direct irradiance of the sky model at this height.
   const Vec3& to_sun = scene_.to_sun();
-  if (!furnace_ && dot(point.normal, to_sun) > 0) {
-    const Spectrum sun = sky.direct_sun(point.position.z);
-    if (sun[kSpectralBins - 1] > 0.0f && !tracer.occluded(Ray{origin, to_sun}))
-      light += reflection_cos(material, point.normal, to_sun, to_viewer) * sun;
+  if (!furnace_ && faces(to_sun)) {
+    const Spectrum sun = sky.direct_sun(position.z);
+    if (sun[kSpectralBins - 1] > 0.0f && !tracer.occluded(Ray{origin, to_sun})) {
+      Spectrum reaching = sun;
+      if (const FogMedium* fog = scene_.fog()) reaching *= fog->sun_transmittance(position);
+      light += scattering_cos(scatterer, to_sun, to_viewer) * reaching;
+    }
   }
   // The sky, one direction drawn from its table.
   const double u1 = random.uniform(), u2 = random.uniform();
   const SkySampler::Sample s = sky_sampler_.sample(u1, u2);
-  if (dot(point.normal, s.direction) > 0 && s.pdf > 0) {
-    const Spectrum f = reflection_cos(material, point.normal, s.direction, to_viewer);
+  if (faces(s.direction) && s.pdf > 0) {
+    const Spectrum f = scattering_cos(scatterer, s.direction, to_viewer);
     if (!f.is_black() && !tracer.occluded(Ray{origin, s.direction})) {
-      const double weight = power_heuristic(s.pdf, reflection_pdf(material, point.normal, s.direction, to_viewer));
-      light += f * environment(s.direction) * static_cast<float>(weight / s.pdf);
+      const double weight = power_heuristic(s.pdf, scattering_pdf(scatterer, s.direction, to_viewer));
+      light += f * environment(s.direction) * fog_transmittance_toward(position, s.direction, kInfinity) *
+               static_cast<float>(weight / s.pdf);
     }
   }
-  // Every lamp, a point source.
+  // Every lamp, a point source (its irradiance already through the fog).
   if (const SceneLamps* lamps = scene_.lamps()) {
     for (size_t i = 0; i < lamps->size(); ++i) {
-      const Vec3 to_lamp = lamps->position(i) - point.position;
+      const Vec3 to_lamp = lamps->position(i) - position;
       const double distance = length(to_lamp);
       if (!(distance > 0)) continue;
       const Vec3 direction = to_lamp / distance;
-      if (dot(point.normal, direction) <= 0) continue;
-      const Spectrum f = reflection_cos(material, point.normal, direction, to_viewer);
+      if (!faces(direction)) continue;
+      const Spectrum f = scattering_cos(scatterer, direction, to_viewer);
       if (f.is_black()) continue;
-      const Spectrum irradiance = lamps->irradiance_from(i, point.position);
+      const Spectrum irradiance = lamps->irradiance_from(i, position);
       if (irradiance.is_black()) continue;
       if (tracer.occluded(Ray{origin, direction, 0.0, distance * (1 - 1e-6)})) continue;
       light += f * irradiance;
@@ -81,47 +115,73 @@ Spectrum PathIntegrator::direct_light(const SurfacePoint& point, const Vec3& to_
 Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) const {
   const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
+  const FogLayer* fog = scene_.fog() ? &scene_.fog()->layer() : nullptr;
   Spectrum radiance(0.0f), throughput(1.0f);
   Ray ray = camera_ray;
   // How the ray was drawn: from the camera or a mirror (nothing else could have drawn
-  // it, so the sky and the sun it meets count in full), or from a material's lobes with
-  // density `lobe_pdf` (the sky it meets is weighed against the sky's own sampling).
+  // it, so the sky and the sun it meets count in full), or from a material's lobes or
+  // the fog's phase function with density `scatter_pdf` (the sky it meets is then
+  // weighed against the sky's own sampling).
   bool delta = true;
-  double lobe_pdf = 0;
-  MediumStretch camera_air;  // the air between the camera and its first hit
-  for (int bounce = 0; bounce <= kMaxBounces; ++bounce) {
+  double scatter_pdf = 0;
+  MediumStretch camera_air;  // the air between the camera and where its ray first scatters
+  for (int event = 0; event < kMaxEvents; ++event) {
     const std::optional<Hit> hit = tracer.intersect(ray);
+    const double t_hit = hit ? hit->t : kInfinity;
+    if (fog) {
+      const double u_bin = random.uniform(), u_depth = random.uniform();
+      const FogFlight flight = sample_fog_flight(*fog, ray, t_hit, u_bin, u_depth);
+      throughput *= flight.weight;
+      if (flight.scattered) {
+        const Vec3 at = ray.origin + flight.distance * ray.direction;
+        if (event == 0 && !furnace_) camera_air = sky.aerial_perspective(ray.direction, flight.distance);
+        const Vec3 to_viewer = -ray.direction;
+        radiance += throughput * direct_light(at, Scatterer{nullptr, {}}, to_viewer, random);
+        const double u1 = random.uniform(), u2 = random.uniform();
+        const PhaseSampler::Sample next = fog_phase_->sample(ray.direction, u1, u2);
+        throughput *= static_cast<float>(fog->phase(dot(ray.direction, next.direction)) / next.pdf);
+        delta = false;
+        scatter_pdf = next.pdf;
+        ray = Ray{at, next.direction};
+        if (event >= 3) {
+          const double survive = std::min(0.95, mean(throughput));
+          if (random.uniform() >= survive) break;
+          throughput *= static_cast<float>(1.0 / survive);
+        }
+        continue;
+      }
+    }
     if (!hit) {
-      if (bounce == 0 && furnace_) {
-        radiance += furnace_->radiance;
+      if (event == 0 && furnace_) {
+        radiance += throughput * furnace_->radiance;
         break;
       }
-      if (bounce == 0) {
+      if (event == 0) {
         // The camera sees the sky as the observer's table gives it, air included.
-        radiance += sky.sky_radiance(ray.direction) + sky.sun_radiance(ray.direction);
+        radiance += throughput * (sky.sky_radiance(ray.direction) + sky.sun_radiance(ray.direction));
         break;
       }
       Spectrum arriving = environment(ray.direction);
-      if (!delta) arriving *= static_cast<float>(power_heuristic(lobe_pdf, sky_sampler_.pdf(ray.direction)));
+      if (!delta) arriving *= static_cast<float>(power_heuristic(scatter_pdf, sky_sampler_.pdf(ray.direction)));
       else if (!furnace_) arriving += sky.sun_radiance(ray.direction);
       radiance += throughput * arriving;
       break;
     }
     const SurfacePoint point = surface_point(ray, *hit);
-    if (bounce == 0 && !furnace_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
+    if (event == 0 && !furnace_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
     const Vec3 to_viewer = -ray.direction;
-    radiance += throughput * direct_light(point, to_viewer, random);
+    const Material& material = scene_.material(point.material);
+    radiance += throughput * direct_light(point.position, Scatterer{&material, point.normal}, to_viewer, random);
     const double u0 = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
-    const std::optional<ReflectionSample> next =
-        sample_reflection(scene_.material(point.material), point.normal, to_viewer, u0, u1, u2);
+    const std::optional<ReflectionSample> next = sample_reflection(material, point.normal, to_viewer, u0, u1, u2);
     if (!next || next->weight.is_black() || dot(next->to_light, point.normal) <= 0) break;
     throughput *= next->weight;
     delta = next->mirror;
-    lobe_pdf = next->pdf;
+    scatter_pdf = next->pdf;
     ray = Ray{offset_from_surface(point.position, point.normal), next->to_light};
-    // Russian roulette from the fourth bounce: a path goes on with a chance that follows
+    // Russian roulette from the fourth event: a path goes on with a chance that follows
     // its throughput, and carries the inverse of that chance.
-    if (bounce >= 3) {
+    if (event >= 3) {
       const double survive = std::min(0.95, mean(throughput));
       if (random.uniform() >= survive) break;
       throughput *= static_cast<float>(1.0 / survive);

@@ -5,8 +5,11 @@
 // (docs/validation.md).
 //
 // A path carries all spectral bins at once (the materials and the air are what make
-// light spectral; nothing here changes a path's direction by wavelength). At each
-// surface it takes next-event estimates of the sun (a directional source of the sky
+// light spectral; nothing here changes a path's direction by wavelength). In fog it
+// scatters where free-flight sampling in the layer's density puts it
+// (media/fog_free_flight.h), in directions drawn from the fog's phase function
+// (media/phase_sampler.h), as often as it takes: full multiple scattering. At each
+// surface and each scattering event it takes next-event estimates of the sun (a directional source of the sky
 // model's direct irradiance at the point's height, as the fast path), of the sky (drawn
 // by sky/sky_sampler.h and weighed against the material's own sampling by the power
 // heuristic, Veach 1997) and of every lamp (point sources, their intensity
@@ -15,13 +18,14 @@
 // camera's ray crosses the air as in the fast path (aerial perspective from its
 // tables); the sun's disc is seen where a camera ray or a mirror's reflection meets it.
 //
-// Not yet: fog and clouds as participating media (scenes with them are refused).
+// Not yet: clouds as a participating medium (scenes with clouds are refused).
 #pragma once
 
 #include <memory>
 #include <optional>
 
 #include "skylit/core/counter_random.h"
+#include "skylit/media/phase_sampler.h"
 #include "skylit/render/prepared_scene.h"
 #include "skylit/render/primary_hits.h"
 #include "skylit/sky/sky_sampler.h"
@@ -44,13 +48,26 @@ class PathIntegrator {
   // One path's estimate of the radiance arriving along a camera ray.
   Radiance sample(const Ray& camera_ray, CounterRandom& random) const;
 
-  // The longest path (bounces) before it is cut; Russian roulette ends most far sooner.
-  static constexpr int kMaxBounces = 64;
+  // The longest path (bounces and scattering events) before it is cut; Russian roulette
+  // ends almost all far sooner. Diffusion through a fog of optical depth τ takes ~τ²
+  // events, so the cap is far above what τ = 30 needs.
+  static constexpr int kMaxEvents = 100000;
 
  private:
-  // The light a surface point sends toward `to_viewer` directly from the sun, the sky
-  // (weighed against the material's sampling) and the lamps.
-  Spectrum direct_light(const SurfacePoint& point, const Vec3& to_viewer, CounterRandom& random) const;
+  // How a point scatters light toward the viewer: a surface's reflection, or the fog's
+  // phase function at a point in it (`point.normal` unused).
+  struct Scatterer {
+    const Material* material;  // null: the fog
+    Vec3 normal;
+  };
+  // The light a surface or fog point sends toward `to_viewer` directly from the sun,
+  // the sky (weighed against the point's own sampling) and the lamps.
+  Spectrum direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
+                        CounterRandom& random) const;
+  Spectrum scattering_cos(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
+  double scattering_pdf(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
+  // The fog's transmittance from a point toward a direction, to `distance` (1 without fog).
+  Spectrum fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const;
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
 
   // The radiance arriving from a direction at a surface: the sky's, or the furnace's.
@@ -59,6 +76,7 @@ class PathIntegrator {
   const PreparedScene& scene_;
   std::optional<UniformEnvironment> furnace_;
   SkySampler sky_sampler_;
+  std::unique_ptr<PhaseSampler> fog_phase_;  // with fog only
 };
 
 }  // namespace skylit

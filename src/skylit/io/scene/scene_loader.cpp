@@ -72,8 +72,8 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto render = root.optional("render")) {
     scene.render = read_render(*render);
-    if (scene.render.integrator == Integrator::path && (scene.fog || !scene.clouds.empty() || scene.cloud_layer))
-      render->required("integrator").fail("the path integrator does not yet trace fog or clouds; use \"bands\"");
+    if (scene.render.integrator == Integrator::path && (!scene.clouds.empty() || scene.cloud_layer))
+      render->required("integrator").fail("the path integrator does not yet trace clouds; use \"bands\"");
   }
   return scene;
 }
