@@ -469,7 +469,7 @@ TEST(CloudLayer, CoverageAsRequested) {
   EXPECT_TRUE(CloudLayer::generate(none).empty());
 }
 
-// The march skips runs of steps where margin_bounds proves the sign of g = T/2 − |z − z_mid|
+// The march skips runs of steps where cloud_margin_bounds proves the sign of g = T/2 − |z − z_mid|
 // (docs/clouds.md). Clouds to test it on: generated Gardner clouds (as in the renderer),
 // the wavy test cloud with other falloff exponents (p = 0: a step at the rim; p < 1: an
 // infinite slope there), and a texture clipped at 0 (Σ|a| ≥ 1: no curvature bound).
@@ -526,7 +526,7 @@ TEST(CloudMarch, MarginBoundsHoldOnDenseSamples) {
       const double len = std::exp(uni(std::log(0.2), std::log(3000.0)));
       const double t0 = length(o - Vec3{shape.center_x, shape.center_y, shape.altitude}) * uni(0.5, 1.0) - 0.5 * len;
       double lo, hi;
-      c.margin_bounds(o, d, t0, t0 + len, lo, hi);
+      cloud_margin_bounds(c, o, d, t0, t0 + len, lo, hi);
       ASSERT_LE(lo, hi);
       ++intervals;
       if (hi - lo < 0.5 * shape.max_thickness) ++tight;
@@ -555,8 +555,9 @@ TEST(CloudMarch, SkippingFindsTheSameStretchesAsEveryStep) {
       double t0, t1;
       if (!c.clip(o, d, 0, kInf, t0, t1)) continue;
       std::vector<std::pair<double, double>> skipping, every;
-      c.for_each_inside(o, d, t0, t1, 1.0, [&](double s0, double s1) { skipping.emplace_back(s0, s1); });
-      c.for_each_inside(o, d, t0, t1, 1.0, [&](double s0, double s1) { every.emplace_back(s0, s1); }, true);
+      march_cloud_inside(c, o, d, t0, t1, [&](double s0, double s1) { skipping.emplace_back(s0, s1); });
+      march_cloud_inside(c, o, d, t0, t1, [&](double s0, double s1) { every.emplace_back(s0, s1); },
+                         {.every_step = true});
       ++rays;
       if (!every.empty()) ++crossing;
       ASSERT_EQ(skipping, every) << "cloud p " << shape.falloff_exponent << " ray " << k;
