@@ -80,7 +80,7 @@ TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
   const Ray ray{origin, normalize(Vec3{1, 0, 0})};  // eastward, behind the block
   const double length = 160;
   const Spectrum difference = (open.along(ray, length).in_scattered - shaded.along(ray, length).in_scattered).spectrum();
-  const ShadowVolumes shadows(with_block, to_sun);
+  const SunShadowVolumes shadows(with_block, to_sun);
   double shadowed = length;
   for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length)) shadowed -= lit.end - lit.begin;
   ASSERT_GT(shadowed, 5.0);  // the geometry does put part of the ray in shadow

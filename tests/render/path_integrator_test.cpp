@@ -133,13 +133,13 @@ TEST(PathIntegrator, BytesDoNotDependOnThreads) {
   EXPECT_EQ(images[0], images[2]);
 }
 
-TEST(PathIntegrator, SceneWithFogIsRefusedForNow) {
+TEST(PathIntegrator, SceneWithCloudsIsRefusedForNow) {
   testing::TempDir dir;
-  const auto file = dir.write("fog.json", R"({"camera": {"position": [0, -10, 2], "look_at": [0, 0, 1]},
+  const auto file = dir.write("clouds.json", R"({"camera": {"position": [0, -10, 2], "look_at": [0, 0, 1]},
     "sun": {"altitude_deg": 30, "azimuth_deg": 180},
     "materials": {"g": {"type": "diffuse", "reflectance": 0.2}},
     "objects": [{"type": "plane", "material": "g"}],
-    "fog": {"density_at_ground": 0.01},
+    "clouds": [{"center_m": [0, 0], "altitude_m": 1500, "semi_axes_m": [700, 420], "max_thickness_m": 400}],
     "render": {"integrator": "path"}})");
   const std::string message = testing::input_error_of([&] { load_scene(file); });
   EXPECT_NE(message.find("render.integrator"), std::string::npos) << message;

@@ -92,7 +92,7 @@ std::optional<CloudLayer::Crossing> CloudLayer::first_hit(const Vec3& o, const V
                                                           double t_max) const {
   for (const Crossing& c : crossings(o, d, t_min, t_max)) {
     double first = kInf;
-    clouds_[c.index].for_each_inside(o, d, c.t_enter, c.t_exit, 1.0, [&](double s0, double s1) {
+    march_cloud_inside(clouds_[c.index], o, d, c.t_enter, c.t_exit, [&](double s0, double s1) {
       if (s1 > s0) first = std::min(first, s0);
     });
     if (first < kInf) return c;

@@ -29,8 +29,8 @@
 #include <memory>
 #include <vector>
 
+#include "skylit/geometry/intervals.h"
 #include "skylit/geometry/ray_tracer.h"
-#include "skylit/geometry/shadow_volumes.h"
 #include "skylit/lights/intensity_map.h"
 #include "skylit/lights/luminaire.h"
 #include "skylit/media/fog_layer.h"

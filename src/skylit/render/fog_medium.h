@@ -10,7 +10,7 @@
 
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/geometry/ray_tracer.h"
-#include "skylit/geometry/shadow_volumes.h"
+#include "skylit/geometry/sun_shadow_volumes.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/fog_sky_light.h"
 #include "skylit/spectrum/medium_stretch.h"
@@ -42,7 +42,7 @@ class FogMedium {
   const SkyModel& sky_;
   Vec3 to_sun_;
   Spectrum sun_above_fog_;  // the sun's direct normal irradiance at the layer's top
-  ShadowVolumes shadows_;
+  SunShadowVolumes shadows_;
   FogSkyLight sky_light_;
 
   // The sky light scattered toward the camera along rays of elevation row i, up to

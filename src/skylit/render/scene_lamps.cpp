@@ -14,8 +14,8 @@ SceneLamps::SceneLamps(const std::vector<SceneLight>& lights, const RayTracer& t
   for (const SceneLight& light : lights) {
     Lamp lamp{&light, std::make_unique<IntensityMap>(light.luminaire), nullptr, nullptr};
     if (fog) {
-      lamp.volumes = std::make_unique<ShadowVolumes>(ShadowVolumes::for_point_light(
-          meshes, light.luminaire.position(), light.luminaire.aim(), light.luminaire.distribution().max_gamma_deg()));
+      lamp.volumes = std::make_unique<PointLightShadowVolumes>(
+          meshes, light.luminaire.position(), light.luminaire.aim(), light.luminaire.distribution().max_gamma_deg());
       lamp.glow = std::make_unique<LampInScatter>(*fog, light.luminaire, light.spectrum_per_candela, lamp.map.get());
     }
     lamps_.push_back(std::move(lamp));
@@ -104,7 +104,7 @@ Spectrum SceneLamps::in_scattered(const Ray& ray, double distance) const {
     // Shadows only where the lamp shines at all (a headlight's cone is narrow).
     lamp.glow->emitting_intervals(ray, span.lo, span.hi, emitting);
     if (emitting.empty()) continue;
-    lamp.volumes->sunlit_intervals(ray, emitting.front().begin, emitting.back().end, lit);
+    lamp.volumes->lit_intervals(ray, emitting.front().begin, emitting.back().end, lit);
     if (!lit.empty()) sum += lamp.glow->along(ray, lit, emitting);
   }
   return sum;

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "skylit/geometry/ray_tracer.h"
-#include "skylit/geometry/shadow_volumes.h"
+#include "skylit/geometry/point_light_shadow_volumes.h"
 #include "skylit/lights/intensity_map.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/lamp_in_scatter.h"
@@ -59,7 +59,7 @@ class SceneLamps {
   struct Lamp {
     const SceneLight* light;
     std::unique_ptr<IntensityMap> map;  // the luminaire's intensity, for fast look-ups
-    std::unique_ptr<ShadowVolumes> volumes;  // with fog only
+    std::unique_ptr<PointLightShadowVolumes> volumes;  // with fog only
     std::unique_ptr<LampInScatter> glow;      // with fog only
   };
   std::vector<Lamp> lamps_;

@@ -3,7 +3,7 @@
 // test, a camera standing in shade, unions of shadows, open meshes and a ground
 // plane, grazing sun, cracks along shared edges, agreement with Embree occlusion
 // sampled along the ray, bad input, threads, and speed.
-#include "skylit/geometry/shadow_volumes.h"
+#include "skylit/geometry/sun_shadow_volumes.h"
 
 #include <gtest/gtest.h>
 
@@ -19,6 +19,7 @@
 #include "skylit/geometry/primitives.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/transform.h"
+#include "shadow_test_support.h"
 
 namespace skylit {
 namespace {
@@ -139,7 +140,7 @@ TriangleMesh reversed(TriangleMesh mesh) {
 // 50 - 0.75 s_max to 60 - 0.75 s_min.
 TEST(ShadowVolumes, BoxShadowEndpointsMatchHandGeometry) {
   const Vec3 w = direction_from_altitude_azimuth(30, 120);
-  const ShadowVolumes volumes({make_box({0, 0, 0}, {10, 10, 20})}, w);
+  const SunShadowVolumes volumes({make_box({0, 0, 0}, {10, 10, 20})}, w);
   const double wy = -w.y;  // 0.4330..., northward reach per unit of s
   ASSERT_NEAR(wy, 0.4330127, 1e-7);
 
@@ -185,7 +186,7 @@ TEST(ShadowVolumes, BoxShadowEndpointsMatchHandGeometry) {
 // leaves the y slab: 12 + t - 0.4330 * 16 = 10, t = 16 * 0.4330 - 2 = 4.928.
 TEST(ShadowVolumes, CameraStandingInShadeStartsInShadow) {
   const Vec3 w = direction_from_altitude_azimuth(30, 120);
-  const ShadowVolumes volumes({make_box({0, 0, 0}, {10, 10, 20})}, w);
+  const SunShadowVolumes volumes({make_box({0, 0, 0}, {10, 10, 20})}, w);
   const Ray look_north{{-2, 12, 1.7}, {0, 1, 0}};
   const double exit = 16 * (-w.y) - 2;
   const auto lit = volumes.sunlit_intervals(look_north, 0, 50);
@@ -207,7 +208,7 @@ TEST(ShadowVolumes, CameraStandingInShadeStartsInShadow) {
 TEST(ShadowVolumes, OverlappingShadowsAreUnited) {
   const Vec3 w = direction_from_altitude_azimuth(30, 120);
   const Vec3 a_lo{0, 0, 0}, a_hi{10, 10, 20}, b_lo{5, 8, 0}, b_hi{15, 18, 30};
-  const ShadowVolumes volumes({make_box(a_lo, a_hi), make_box(b_lo, b_hi)}, w);
+  const SunShadowVolumes volumes({make_box(a_lo, a_hi), make_box(b_lo, b_hi)}, w);
   const Ray ray{{-60, 12, 1}, {1, 0, 0}};  // 2 m north of A, through B
   const auto ra = bisect_shadow(
       [&](double t) { return half_line_meets_box(ray.origin + t * ray.direction, w, a_lo, a_hi); }, 0, 100);
@@ -224,7 +225,7 @@ TEST(ShadowVolumes, OverlappingShadowsAreUnited) {
   EXPECT_NEAR(lit[1].begin, rb->end, kTol);
 
   // Disjoint shadows of two boxes side by side: three sunlit pieces.
-  const ShadowVolumes apart({make_box({0, 0, 0}, {10, 10, 20}), make_box({40, 0, 0}, {50, 10, 20})}, w);
+  const SunShadowVolumes apart({make_box({0, 0, 0}, {10, 10, 20}), make_box({40, 0, 0}, {50, 10, 20})}, w);
   EXPECT_EQ(apart.sunlit_intervals({{-60, 15, 1}, {1, 0, 0}}, 0, 150).size(), 3u);
 }
 
@@ -236,7 +237,7 @@ TEST(ShadowVolumes, RotatedBoxMatchesIndependentPointTest) {
   int checked = 0;
   for (double altitude : {12.0, 35.0, 71.0}) {
     const Vec3 w = direction_from_altitude_azimuth(altitude, 250);
-    const ShadowVolumes volumes({make_box_centered(c, size, angle)}, w);
+    const SunShadowVolumes volumes({make_box_centered(c, size, angle)}, w);
     for (int i = 0; i < 40; ++i) {
       // Rays aimed near the shadow: from a point beside the box, across the sweep.
       const Vec3 target = c - (10 + 60 * uni(rng)) * w + Vec3{8 * uni(rng) - 4, 8 * uni(rng) - 4, 0};
@@ -267,7 +268,7 @@ TEST(ShadowVolumes, OpenQuadWallCastsShadowWhicheverWayItIsWound) {
   for (double azimuth : {90.0, 270.0}) {  // sun in the east (facing the normal), then west
     const Vec3 w = direction_from_altitude_azimuth(30, azimuth);
     for (const TriangleMesh& mesh : {wall, reversed(wall)}) {
-      const ShadowVolumes volumes({mesh}, w);
+      const SunShadowVolumes volumes({mesh}, w);
       EXPECT_EQ(volumes.volume_count(), 2u);  // open: every triangle casts
       // 3 m on the side away from the sun, at 1 m: the sun ray climbs 3 tan30 = 1.73 m
       // to the wall, below its top: shaded for y in [0, 10] (w.y is ~1e-17 here).
@@ -286,7 +287,7 @@ TEST(ShadowVolumes, OpenQuadWallCastsShadowWhicheverWayItIsWound) {
   const Vec3 w = direction_from_altitude_azimuth(30, 120);
   TriangleMesh open_box = make_box({0, 0, 0}, {10, 10, 20});
   open_box.triangles.erase(open_box.triangles.begin() + 8, open_box.triangles.begin() + 10);  // the -z face
-  const ShadowVolumes open({open_box}, w), closed({make_box({0, 0, 0}, {10, 10, 20})}, w);
+  const SunShadowVolumes open({open_box}, w), closed({make_box({0, 0, 0}, {10, 10, 20})}, w);
   EXPECT_EQ(open.volume_count(), 10u);
   for (double z : {1.0, 10.0}) {
     const Ray ray{{-50, 15, z}, {1, 0, 0}};
@@ -304,7 +305,7 @@ TEST(ShadowVolumes, OpenQuadWallCastsShadowWhicheverWayItIsWound) {
 TEST(ShadowVolumes, GroundPlaneShadowsOnlyBelowItself) {
   const Vec3 w = direction_from_altitude_azimuth(40, 200);
   for (const TriangleMesh& ground : {make_ground_plane({0, 0, 0}, 1000), reversed(make_ground_plane({0, 0, 0}, 1000))}) {
-    const ShadowVolumes volumes({ground}, w);
+    const SunShadowVolumes volumes({ground}, w);
     const auto above = volumes.sunlit_intervals({{-100, 0, 2}, {1, 0, 0}}, 0, 200);
     ASSERT_EQ(above.size(), 1u);
     EXPECT_EQ(above[0].begin, 0);
@@ -328,7 +329,7 @@ TEST(ShadowVolumes, GroundPlaneShadowsOnlyBelowItself) {
 TEST(ShadowVolumes, GrazingSunCastsLongShadowExactly) {
   const TriangleMesh box = make_box({-5, -5, 0}, {5, 5, 10});
   const Vec3 w = direction_from_altitude_azimuth(0.5, 180);  // (0, -cos, sin)
-  const ShadowVolumes volumes({box}, w);
+  const SunShadowVolumes volumes({box}, w);
   // Northward along x = 0 at 1 m, from 20 m south of the box: lit to the south wall
   // (y = -5, t = 15), dark through the box and its shadow to y = 5 + 9 cos/sin.
   const Ray north{{0, -20, 1}, {0, 1, 0}};
@@ -342,7 +343,7 @@ TEST(ShadowVolumes, GrazingSunCastsLongShadowExactly) {
   // Sun exactly on the horizon: roofs are edge-on and cast nothing, the walls cast
   // shadows without end (almost: sin 180° is 1.2e-16, so after 4e16 m the shadow
   // has drifted 5 m sideways, off the ray).
-  const ShadowVolumes horizon({box}, direction_from_altitude_azimuth(0, 180));
+  const SunShadowVolumes horizon({box}, direction_from_altitude_azimuth(0, 180));
   const auto flat = horizon.sunlit_intervals(north, 0, 1e9);
   ASSERT_EQ(flat.size(), 1u);
   EXPECT_NEAR(flat[0].end, 15, kTol);
@@ -360,17 +361,17 @@ TEST(ShadowVolumes, ClosedMeshesCastWithTheirSunFacingHalf) {
     for (uint32_t i : t) unwelded.vertices.push_back(box.vertices[i]);
     unwelded.triangles.push_back({base, base + 1, base + 2});
   }
-  const ShadowVolumes outward({box}, w), inward({reversed(box)}, w), copies({unwelded}, w);
+  const SunShadowVolumes outward({box}, w), inward({reversed(box)}, w), copies({unwelded}, w);
   EXPECT_EQ(outward.volume_count(), 6u);
   EXPECT_EQ(inward.volume_count(), 6u);
   EXPECT_EQ(copies.volume_count(), 6u);
   // Two boxes appended into one mesh stay closed (each edge once each way).
   TriangleMesh two = box;
   two.append(make_box({30, 0, 0}, {40, 10, 20}));
-  EXPECT_EQ(ShadowVolumes({two}, w).volume_count(), 12u);
+  EXPECT_EQ(SunShadowVolumes({two}, w).volume_count(), 12u);
   for (const Ray& ray : {Ray{{-50, 15, 1}, {1, 0, 0}}, Ray{{-2, 12, 1.7}, {0, 1, 0}}, Ray{{5, 5, 5}, {0, 1, 0}}}) {
     const auto a = outward.sunlit_intervals(ray, 0, 100);
-    for (const ShadowVolumes* other : {&inward, &copies}) {
+    for (const SunShadowVolumes* other : {&inward, &copies}) {
       const auto b = other->sunlit_intervals(ray, 0, 100);
       ASSERT_EQ(a.size(), b.size());
       for (size_t i = 0; i < a.size(); ++i) {
@@ -392,7 +393,7 @@ TEST(ShadowVolumes, SharedEdgesAndVerticesLeaveNoCracks) {
   const TriangleMesh cube = transformed(subdivided_cube(8),
                                         Transform::translation({4, 4, 6}) * Transform::scale({4, 4, 4}));
   {
-    const ShadowVolumes volumes({cube}, {0, 0, 1});
+    const SunShadowVolumes volumes({cube}, {0, 0, 1});
     EXPECT_EQ(volumes.volume_count(), 128u);  // the roof; walls are edge-on, floor faces away
     for (double y : {0.0, 1.0, 3.0, 4.0, 8.0}) {  // grid lines of the roof, including its edges
       const auto lit = volumes.sunlit_intervals({{-5, y, 1}, {1, 0, 0}}, 0, 18);
@@ -411,7 +412,7 @@ TEST(ShadowVolumes, SharedEdgesAndVerticesLeaveNoCracks) {
                                                                    Transform::rotation_xyz_deg({17, 29, 41}) *
                                                                    Transform::scale({3, 3, 3}));
   const Vec3 w = direction_from_altitude_azimuth(37, 151);
-  const ShadowVolumes volumes({turned}, w);
+  const SunShadowVolumes volumes({turned}, w);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> uni(-1, 1);
   int crossing = 0;
@@ -442,31 +443,6 @@ TEST(ShadowVolumes, SharedEdgesAndVerticesLeaveNoCracks) {
 // Every sampled point is classified by Embree's occlusion test toward the sun; away
 // from the interval ends (where single precision and the step blur the answer) the
 // two must agree, and the sunlit lengths agree to within a step per boundary.
-// Samples [0, t_max] at kSamples midpoints with an independent test of light (an
-// occlusion ray): how many samples it finds lit, and how many disagree with `lit`
-// farther than 1 mm from an interval's end (the samples' own resolution is coarser).
-struct SampledLight {
-  int lit_samples = 0, disagreements = 0;
-};
-template <class IsLit>
-SampledLight sample_light(const std::vector<Interval>& lit, double t_max, int samples, const IsLit& is_lit) {
-  SampledLight out;
-  const double step = t_max / samples;
-  for (int k = 0; k < samples; ++k) {
-    const double t = (k + 0.5) * step;
-    const bool traced_lit = is_lit(t);
-    out.lit_samples += traced_lit;
-    bool exact_lit = false;
-    double distance = kInf;
-    for (const Interval& i : lit) {
-      exact_lit |= i.begin <= t && t <= i.end;
-      distance = std::min({distance, std::abs(t - i.begin), std::abs(t - i.end)});
-    }
-    if (exact_lit != traced_lit && distance > 1e-3) ++out.disagreements;
-  }
-  return out;
-}
-
 TEST(ShadowVolumes, AgreesWithBruteForceOcclusionSampling) {
   std::vector<TriangleMesh> meshes{make_ground_plane({0, 0, 0}, 1000)};
   std::mt19937 rng(3);
@@ -479,7 +455,7 @@ TEST(ShadowVolumes, AgreesWithBruteForceOcclusionSampling) {
   wall.triangles = {{0, 1, 2}, {0, 2, 3}};
   meshes.push_back(wall);
   const Vec3 w = direction_from_altitude_azimuth(25, 200);
-  const ShadowVolumes volumes(meshes, w);
+  const SunShadowVolumes volumes(meshes, w);
   RayTracer tracer;
   for (const auto& m : meshes) tracer.add_mesh(m);
   tracer.commit();
@@ -507,26 +483,26 @@ TEST(ShadowVolumes, AgreesWithBruteForceOcclusionSampling) {
 
 TEST(ShadowVolumes, DegenerateInputs) {
   const Vec3 w = direction_from_altitude_azimuth(45, 180);
-  EXPECT_THROW(ShadowVolumes(std::vector<TriangleMesh>{}, Vec3{0, 0, 0}), std::invalid_argument);
-  EXPECT_THROW(ShadowVolumes(std::vector<TriangleMesh>{}, Vec3{0, std::nan(""), 1}), std::invalid_argument);
+  EXPECT_THROW(SunShadowVolumes(std::vector<TriangleMesh>{}, Vec3{0, 0, 0}), std::invalid_argument);
+  EXPECT_THROW(SunShadowVolumes(std::vector<TriangleMesh>{}, Vec3{0, std::nan(""), 1}), std::invalid_argument);
   TriangleMesh bad;
   bad.vertices = {{0, 0, 0}, {1, 0, 0}};
   bad.triangles = {{0, 1, 2}};
-  EXPECT_THROW(ShadowVolumes({bad}, w), std::invalid_argument);
+  EXPECT_THROW(SunShadowVolumes({bad}, w), std::invalid_argument);
   bad.vertices.push_back({0, kInf, 0});
-  EXPECT_THROW(ShadowVolumes({bad}, w), std::invalid_argument);
+  EXPECT_THROW(SunShadowVolumes({bad}, w), std::invalid_argument);
 
   // No meshes, an empty mesh, zero-area triangles: nothing casts.
   TriangleMesh flat;
   flat.vertices = {{0, 0, 5}, {1, 1, 5}, {2, 2, 5}};
   flat.triangles = {{0, 1, 2}, {0, 0, 1}};
-  const ShadowVolumes none({TriangleMesh{}, flat}, w);
+  const SunShadowVolumes none({TriangleMesh{}, flat}, w);
   EXPECT_EQ(none.volume_count(), 0u);
   EXPECT_EQ(none.sunlit_length({{0, 0, 0}, {1, 0, 0}}, 0, 10), 10);
   // The sun's direction is normalised.
-  EXPECT_NEAR(ShadowVolumes(std::vector<TriangleMesh>{}, Vec3{0, 0, 7}).to_sun().z, 1.0, 1e-15);
+  EXPECT_NEAR(SunShadowVolumes(std::vector<TriangleMesh>{}, Vec3{0, 0, 7}).to_sun().z, 1.0, 1e-15);
 
-  const ShadowVolumes box({make_box({-1, -1, 0}, {1, 1, 2})}, {0, 0, 1});
+  const SunShadowVolumes box({make_box({-1, -1, 0}, {1, 1, 2})}, {0, 0, 1});
   // Non-finite rays meet nothing; reversed or NaN ranges give nothing.
   EXPECT_EQ(box.sunlit_length({{0, 0, std::nan("")}, {1, 0, 0}}, 0, 10), 10);
   EXPECT_TRUE(box.sunlit_intervals({{0, 0, -1}, {1, 0, 0}}, 5, 4).empty());
@@ -543,7 +519,7 @@ TEST(ShadowVolumes, DegenerateInputs) {
 TEST(ShadowVolumes, ThreadsGetIdenticalAnswers) {
   std::vector<TriangleMesh> meshes;
   for (int i = 0; i < 10; ++i) meshes.push_back(make_box_centered({15.0 * i, 7.0 * (i % 3), 10}, {8, 6, 20}, 9.0 * i));
-  const ShadowVolumes volumes(meshes, direction_from_altitude_azimuth(28, 140));
+  const SunShadowVolumes volumes(meshes, direction_from_altitude_azimuth(28, 140));
   std::vector<Ray> rays;
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> uni(0, 1);
@@ -585,7 +561,7 @@ TEST(ShadowVolumes, QueriesPerSecondOnFiftyBoxes) {
       meshes.push_back(make_box_centered({40.0 * i - 120, 40.0 * j - 120, 0},
                                          {10 + 15 * uni(rng), 10 + 15 * uni(rng), 20 + 60 * uni(rng)}, 30 * uni(rng)));
   meshes.push_back(make_box_centered({170, 20, 0}, {20, 20, 150}, 0));  // a tower
-  const ShadowVolumes volumes(meshes, direction_from_altitude_azimuth(35, 220));
+  const SunShadowVolumes volumes(meshes, direction_from_altitude_azimuth(35, 220));
   RayTracer tracer;
   for (const auto& m : meshes) tracer.add_mesh(m);
   tracer.commit();
@@ -619,54 +595,6 @@ TEST(ShadowVolumes, QueriesPerSecondOnFiftyBoxes) {
               length / rays.size());
   EXPECT_GT(pieces, rays.size());  // some rays do cross shadows
   EXPECT_GT(rate, 20000.0);
-}
-
-}  // namespace
-}  // namespace skylit
-
-namespace skylit {
-namespace {
-
-TEST(ShadowVolumes, PointLightAgreesWithOcclusionRaysTowardTheLight) {
-  // A street lamp among boxes, a thin pole and an open wall: along random view rays,
-  // every point sample agrees with an occlusion ray toward the lamp, except within
-  // 1 mm of an interval end (the samples' own resolution is 2 mm).
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> uni(0, 1);
-  std::vector<TriangleMesh> meshes;
-  for (int i = 0; i < 8; ++i)
-    meshes.push_back(make_box_centered({80 * uni(rng) - 40, 80 * uni(rng) - 40, 0},
-                                       {2 + 8 * uni(rng), 2 + 8 * uni(rng), 3 + 15 * uni(rng)}, 90 * uni(rng)));
-  meshes.push_back(make_box_centered({0.6, 0, 0}, {0.15, 0.15, 7.5}, 0));  // the pole beside the lamp
-  TriangleMesh wall;
-  wall.vertices = {{-20, 15, 0}, {5, 25, 0}, {5, 25, 9}, {-20, 15, 9}};
-  wall.triangles = {{0, 1, 2}, {0, 2, 3}};
-  meshes.push_back(wall);
-  const Vec3 lamp{0, 0, 8};
-  std::vector<const TriangleMesh*> pointers;
-  for (const auto& m : meshes) pointers.push_back(&m);
-  const ShadowVolumes volumes = ShadowVolumes::for_point_light(pointers, lamp);
-  RayTracer tracer;
-  for (const auto& m : meshes) tracer.add_mesh(m);
-  tracer.commit();
-
-  constexpr int kSamples = 50000;
-  const double t_max = 100;
-  int boundaries = 0;
-  for (int r = 0; r < 16; ++r) {
-    const Vec3 origin{100 * uni(rng) - 50, 100 * uni(rng) - 50, 0.5 + 10 * uni(rng)};
-    const Vec3 target{20 * uni(rng) - 10, 20 * uni(rng) - 10, 4 * uni(rng)};
-    const Ray ray{origin, normalize(target - origin)};
-    const auto lit = volumes.sunlit_intervals(ray, 0, t_max);
-    boundaries += static_cast<int>(2 * lit.size());
-    const SampledLight sampled = sample_light(lit, t_max, kSamples, [&](double t) {
-      const Vec3 p = ray.origin + t * ray.direction;
-      const Vec3 to_lamp = lamp - p;
-      return !tracer.occluded({p, normalize(to_lamp), 0.0, length(to_lamp)});
-    });
-    EXPECT_EQ(sampled.disagreements, 0) << "ray " << r;
-  }
-  EXPECT_GT(boundaries, 40);  // the rays do cross shadows
 }
 
 }  // namespace

@@ -1,0 +1,108 @@
+// The sun-depth grid (clouds/sun_depth_grid.h): interpolated t' against marching, and
+// scatter() with the grid against scatter() without, and faster.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "skylit/clouds/cloud.h"
+#include "skylit/clouds/cloud_layer.h"
+#include "cloud_test_support.h"
+
+namespace skylit {
+namespace {
+
+// The sun grid: interpolated t' against marching at random points in the solid, and
+// scatter() with and without the grid (accuracy and time per ray).
+TEST(CloudSunGrid, InterpolatedDepthMatchesMarching) {
+  Cloud c(wavy_cloud());
+  const CloudShape& s = c.shape();
+  std::mt19937_64 rng(3);
+  auto uni = [&](double a, double b) { return a + (b - a) * cloud_uniform(rng()); };
+  for (double elev : {75.0, 40.0, 15.0}) {
+    const Vec3 to_sun = direction_from_altitude_azimuth(elev, 200);
+    const auto b0 = std::chrono::steady_clock::now();
+    c.prepare_sun(to_sun);
+    const double build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - b0).count();
+    ASSERT_TRUE(c.sun_prepared_for(to_sun));
+    ASSERT_TRUE(c.sun_prepared_for(to_sun * 3.0));
+    ASSERT_FALSE(c.sun_prepared_for(direction_from_altitude_azimuth(elev + 1, 200)));
+    double max_dtrans = 0, sum_dtau = 0, max_dtau = 0;
+    int n = 0;
+    while (n < 20000) {
+      const Vec3 p = local_point(s, uni(-s.semi_axis_a, s.semi_axis_a), uni(-s.semi_axis_b, s.semi_axis_b),
+                                 s.altitude + uni(-0.5, 0.5) * s.max_thickness);
+      if (!c.contains(p)) continue;
+      ++n;
+      const double marched = c.optical_depth(p, to_sun, 0, kInf);
+      const double interp = c.interpolated_sun_depth(p);
+      const double d = std::abs(interp - marched);
+      sum_dtau += d;
+      max_dtau = std::max(max_dtau, d);
+      max_dtrans = std::max(max_dtrans, std::abs(std::exp(-interp) - std::exp(-marched)));
+    }
+    std::printf("sun elev %4.0f: grid built in %.1f ms; |dt'| mean %.3f max %.3f; max |d e^-t'| %.3f\n", elev,
+                build_ms, sum_dtau / n, max_dtau, max_dtrans);
+    // Tolerances from the measured errors (docs/clouds.md) with ~1.5x margin.
+    EXPECT_LT(sum_dtau / n, elev >= 40 ? 0.1 : 0.5) << elev;
+  }
+}
+
+TEST(CloudSunGrid, ScatterWithGridMatchesMarchingAndIsFaster) {
+  Cloud c(wavy_cloud());
+  const CloudShape& s = c.shape();
+  const Vec3 eye{s.center_x - 3000, s.center_y - 2000, 0};
+  for (double elev : {60.0, 25.0}) {
+    const CloudLighting light = flat_light(direction_from_altitude_azimuth(elev, 200));
+    std::vector<Vec3> dirs;
+    for (int i = 0; i < 24; ++i)
+      for (int j = 0; j < 24; ++j)
+        dirs.push_back(normalize(local_point(s, (i - 11.5) / 12.5 * s.semi_axis_a, (j - 11.5) / 12.5 * s.semi_axis_b,
+                                             s.altitude) - eye));
+    c.clear_sun();
+    std::vector<float> marched;
+    const auto m0 = std::chrono::steady_clock::now();
+    for (const Vec3& d : dirs) marched.push_back(total(c.scatter(eye, d, 0, kInf, light).in_scattered));
+    const double march_us =
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - m0).count() / dirs.size();
+    const auto b0 = std::chrono::steady_clock::now();
+    c.prepare_sun(light.to_sun);
+    const double build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - b0).count();
+    std::vector<float> gridded;
+    const auto g0 = std::chrono::steady_clock::now();
+    for (const Vec3& d : dirs) gridded.push_back(total(c.scatter(eye, d, 0, kInf, light).in_scattered));
+    const double grid_us =
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - g0).count() / dirs.size();
+    double max_rel = 0, sum_rel = 0, peak = 0;
+    for (float m : marched) peak = std::max(peak, static_cast<double>(m));
+    int n = 0;
+    for (std::size_t i = 0; i < dirs.size(); ++i) {
+      if (marched[i] < 1e-3 * peak) continue;
+      const double rel = std::abs(gridded[i] - marched[i]) / marched[i];
+      max_rel = std::max(max_rel, rel);
+      sum_rel += rel;
+      ++n;
+    }
+    std::printf("sun elev %.0f: scatter %.1f us/ray marched, %.1f us/ray gridded (x%.0f), grid %.1f ms; "
+                "in-scattered rel. error mean %.4f max %.4f over %d rays\n",
+                elev, march_us, grid_us, march_us / grid_us, build_ms, sum_rel / n, max_rel, n);
+    EXPECT_GT(n, 200);
+    // Tolerances from the measured errors (docs/clouds.md) with ~1.5x margin.
+    EXPECT_LT(sum_rel / n, elev > 40 ? 0.015 : 0.05) << elev;
+    EXPECT_LT(max_rel, elev > 40 ? 0.08 : 0.4) << elev;
+    EXPECT_LT(grid_us, march_us);
+  }
+  // A layer forwards to its clouds.
+  CloudLayer layer({Cloud(wavy_cloud())});
+  const Vec3 to_sun = direction_from_altitude_azimuth(40, 10);
+  layer.prepare_sun(to_sun);
+  EXPECT_TRUE(layer.clouds()[0].sun_prepared_for(to_sun));
+  layer.clear_sun();
+  EXPECT_FALSE(layer.clouds()[0].sun_prepared_for(to_sun));
+}
+
+}  // namespace
+}  // namespace skylit
