@@ -36,8 +36,8 @@ TEST(Renderer, HorizontalPlaneHasLambertLuminance) {
     const Scene scene = open_plane_scene(altitude, 0.6f);
     const Renderer renderer(scene);
     const XyzImage image = renderer.render();
-    const double e_direct = lux(renderer.sky().direct_sun(0.0)) * std::sin(radians(altitude));
-    const double e_sky = lux(renderer.sky().sky_irradiance({0, 0, 1}));
+    const double e_direct = illuminance(renderer.sky().direct_sun(0.0)) * std::sin(radians(altitude));
+    const double e_sky = illuminance(renderer.sky().sky_irradiance({0, 0, 1}));
     const double expected = 0.6 * (e_direct + e_sky) / kPi;
     for (int y = 0; y < 8; y += 7)
       for (int x = 0; x < 8; x += 7) EXPECT_NEAR(image.at(x, y).y, expected, 0.005 * expected) << altitude;
@@ -48,7 +48,7 @@ TEST(Renderer, HorizontalPlaneHasLambertLuminance) {
 TEST(Renderer, SunBelowHorizonLeavesOnlySkyLight) {
   const Scene scene = open_plane_scene(-3.0, 1.0f);
   const Renderer renderer(scene);
-  const double sky_only = lux(renderer.sky().sky_irradiance({0, 0, 1})) / kPi;
+  const double sky_only = illuminance(renderer.sky().sky_irradiance({0, 0, 1})) / kPi;
   EXPECT_GT(sky_only, 1.0);  // civil twilight still lights the ground
   EXPECT_NEAR(renderer.render().at(4, 4).y, sky_only, 0.005 * sky_only);
 }
@@ -74,7 +74,7 @@ TEST(Renderer, BoxCastsAHardShadowWhereGeometrySays) {
   };
   auto sky_and_sun = [&](double y) {
     const Spectrum e = renderer.sky_light().diffuse_irradiance({0, y, 0}, {0, 0, 1}) +
-                       renderer.sky().direct_sun(0.0) * static_cast<float>(std::sin(radians(45.0)));
+                       renderer.sky().direct_sun(0.0).spectrum() * static_cast<float>(std::sin(radians(45.0)));
     return seen(e * static_cast<float>(0.5 / kPi));
   };
   // 0.5 %: what is left is float rounding and the sun's profile against height.
@@ -84,7 +84,7 @@ TEST(Renderer, BoxCastsAHardShadowWhereGeometrySays) {
   EXPECT_NEAR(ground_luminance(-10.0), sky_and_sun(-10.0), 0.005 * sky_and_sun(-10.0));  // sunny side
   // Near the box the ground sees less sky than in the open.
   EXPECT_LT(lux(renderer.sky_light().diffuse_irradiance({0, 10, 0}, {0, 0, 1})),
-            lux(renderer.sky().sky_irradiance({0, 0, 1})));
+            illuminance(renderer.sky().sky_irradiance({0, 0, 1})));
   EXPECT_GT(renderer.rays_traced(), 0u);
 }
 

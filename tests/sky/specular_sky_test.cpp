@@ -27,7 +27,7 @@ double dense_specular_luminance(const SkyModel& sky, const Material& m, const Ve
       if (dot(n, l) <= 0) continue;
       const double w = specular_weight(m, n, l, v);
       if (w <= 0) continue;
-      sum += specular_reflection(m, n, l, v) * sky.sky_radiance_near_ground(l) * static_cast<float>(weight);
+      sum += specular_reflection(m, n, l, v) * sky.sky_radiance_near_ground(l).spectrum() * static_cast<float>(weight);
     }
   }
   return luminance(sum);

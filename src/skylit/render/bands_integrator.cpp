@@ -47,7 +47,7 @@ Spectrum BandsIntegrator::sky_share(double z) const {
 
 Spectrum BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
   if (dot(point.normal, to_sun_) <= 0) return Spectrum(0.0f);
-  const Spectrum sun = sky_.direct_sun(point.position.z);
+  const Spectrum sun = sky_.direct_sun(point.position.z).spectrum();
   // Transmittance is largest in the red: if the last bin is dark, all are (the sun is
   // below this point's horizon).
   if (sun[kSpectralBins - 1] <= 0.0f) return sun;
@@ -61,7 +61,7 @@ Spectrum BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
 
 Spectrum BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) const {
   const SurfacePoint point = surface_point(ray, hit);
-  const Spectrum irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
+  const Spectrum irradiance = sky_.sky_irradiance(point.normal).spectrum() * sky_share(point.position.z) +
                               sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   const Spectrum albedo = diffuse_albedo(material_of(point), -dot(point.normal, ray.direction));
   return albedo * irradiance * static_cast<float>(1.0 / kPi);
@@ -76,7 +76,7 @@ CachedSkyLight BandsIntegrator::sky_light_at(const SurfacePoint& point, const Ve
 Spectrum BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direction) const {
   const Ray ray{offset_from_surface(point.position, point.normal), direction};
   if (const std::optional<Hit> hit = scene_.tracer().intersect(ray)) return obstacle_radiance(ray, *hit);
-  return sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction);
+  return (sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction)).spectrum();
 }
 
 Spectrum BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const {

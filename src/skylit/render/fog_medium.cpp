@@ -24,7 +24,7 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
     : layer_(settings),
       sky_(sky),
       to_sun_(sky.to_sun()),
-      sun_above_fog_(sky.direct_sun(std::max(0.0, layer_.top_m()))),
+      sun_above_fog_(sky.direct_sun(std::max(0.0, layer_.top_m())).spectrum()),
       shadows_(meshes, sky.to_sun()),
       sky_light_(layer_, sky),
       camera_(camera),

@@ -12,7 +12,7 @@ namespace skylit {
 SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
                    std::vector<SkyElement> elements)
     : sky_(sky), tracer_(tracer), obstacle_radiance_(std::move(obstacle_radiance)), elements_(std::move(elements)) {
-  for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
+  for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction).spectrum());
 }
 
 Spectrum SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Spectrum& sky) const {
@@ -49,14 +49,14 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   // across it: a single point there would count all of the element as sky or as ground,
   // and a wall seen head-on reflects exactly that part of the dome.
   auto sky_over = [&](double alpha, double delta, const Vec3& centre) {
-    if (std::abs(centre.z) > 0.75 * width) return sky_.sky_radiance_near_ground(centre);
+    if (std::abs(centre.z) > 0.75 * width) return sky_.sky_radiance_near_ground(centre).spectrum();
     Spectrum mean;
     double total = 0;
     for (int u = 0; u < 4; ++u)
       for (int w = 0; w < 4; ++w) {
         const double sub_alpha = alpha + (u - 1.5) * width / 4, sub_delta = delta + (w - 1.5) * width / 4;
         const double weight = std::sin(sub_alpha);
-        mean += sky_.sky_radiance_near_ground(direction_at(sub_alpha, sub_delta)) * static_cast<float>(weight);
+        mean += sky_.sky_radiance_near_ground(direction_at(sub_alpha, sub_delta)).spectrum() * static_cast<float>(weight);
         total += weight;
       }
     return mean * static_cast<float>(1.0 / total);
@@ -138,7 +138,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
 }
 
 Spectrum SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) const {
-  Spectrum irradiance = sky_.sky_irradiance(normal);
+  Spectrum irradiance = sky_.sky_irradiance(normal).spectrum();
   const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
   for (size_t i = 0; i < elements.size(); ++i) {
