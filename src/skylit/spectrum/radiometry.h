@@ -92,6 +92,21 @@ struct Brdf {
   }
 };
 
+// A BRDF times the incidence cosine, f(l, v) (n·l) (sr⁻¹), for one pair of directions:
+// what turns light arriving from l into radiance leaving toward v. From a beam's
+// irradiance measured normal to it (the sun, a lamp): f cos θ_l E; from radiance L
+// arriving within a small solid angle dω: f cos θ_l L dω. (Unlike Brdf::reflect, the
+// cosine is already in per_sr.)
+struct CosineWeightedBrdf {
+  Spectrum per_sr;
+  Radiance reflect(const Irradiance& normal_irradiance) const {
+    return Radiance(per_sr * normal_irradiance.spectrum());
+  }
+  Radiance reflect(const Radiance& incoming, double solid_angle) const {
+    return Radiance(per_sr * incoming.spectrum() * static_cast<float>(solid_angle));
+  }
+};
+
 // The radiance a Lambertian surface of this albedo sends back under irradiance E: ρE/π.
 inline Radiance lambertian_radiance(const Reflectance& albedo, const Irradiance& irradiance) {
   return Radiance(albedo.spectrum() * irradiance.spectrum() * static_cast<float>(1.0 / kPi));
