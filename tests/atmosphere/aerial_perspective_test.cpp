@@ -107,7 +107,7 @@ TEST(AerialPerspective, LongNearlyHorizontalPathApproachesTheHorizonSky) {
   for (double azimuth : {20.0, 90.0, 180.0}) {
     const Vec3 view = world_direction(0.1, azimuth);
     const MediumStretch air = sky.aerial_perspective(view, AerialPerspectiveTable::kMaxDistanceM);
-    const Spectrum horizon = sky.sky_radiance(view);
+    const Radiance horizon = sky.sky_radiance(view);
     double worst = 0;
     for (int k = 0; k < kSpectralBins; ++k) worst = std::max(worst, std::abs(air.in_scattered[k] / horizon[k] - 1.0));
     if (report())
@@ -133,7 +133,7 @@ TableError table_error(double elevation, double azimuth, double d) {
   for (int i = 1; i <= 400; ++i) stops.push_back(d * i / 400.0);
   const ScatteredLight direct = atmosphere.integrator().up_to(r, view.z, sun.z, dot(view, sun), stops).back();
   const MediumStretch table = sky.aerial_perspective(world_direction(elevation, azimuth), d);
-  const Spectrum radiance = direct.radiance * atmosphere.extraterrestrial_irradiance();
+  const Radiance radiance(direct.radiance * atmosphere.extraterrestrial_irradiance().spectrum());
   TableError e;
   for (int k = 0; k < kSpectralBins; ++k) {
     e.radiance = std::max(e.radiance, std::abs(static_cast<double>(table.in_scattered[k]) / radiance[k] - 1.0));

@@ -22,13 +22,11 @@ using test_reference::world_direction;
 
 using test_reference::report;
 
-double illuminance_lx(const Spectrum& irradiance) { return xyz_from_spectrum(irradiance).y; }
-
 TEST(PublishedValues, DirectNormalIlluminanceForASunAt60Degrees) {
   // Clear-sky direct normal illuminance with the sun 60° up: 80–105 klx (the issue's
   // range). Measured 103.1 klx, as a hand estimate says: 133.4 klx above the air ×
   // e^(−(0.097 Rayleigh + 0.10 aerosol + 0.03 ozone)·1.155 air masses) at 555 nm.
-  const double dni = illuminance_lx(default_sky(60.0).direct_sun(0.0));
+  const double dni = illuminance(default_sky(60.0).direct_sun(0.0));
   if (report()) std::printf("direct normal illuminance, sun 60 deg: %.0f lx\n", dni);
   EXPECT_GT(dni, 80e3);
   EXPECT_LT(dni, 105e3);
@@ -37,7 +35,7 @@ TEST(PublishedValues, DirectNormalIlluminanceForASunAt60Degrees) {
 TEST(PublishedValues, DiffuseHorizontalIlluminanceForASunAt60Degrees) {
   // Clear-sky diffuse horizontal illuminance with the sun 60° up: 10–25 klx (the
   // issue's range). Measured 16.5 klx.
-  const double dhi = illuminance_lx(default_sky(60.0).diffuse_horizontal_at_observer());
+  const double dhi = illuminance(default_sky(60.0).diffuse_horizontal_at_observer());
   if (report()) std::printf("diffuse horizontal illuminance, sun 60 deg: %.0f lx\n", dhi);
   EXPECT_GT(dhi, 10e3);
   EXPECT_LT(dhi, 25e3);
@@ -120,10 +118,10 @@ TEST(PublishedValues, PaperModelHasADarkerSkyAndABrighterSun) {
   const Atmosphere paper(paper_settings);
   const SkyModel paper_sky(paper, direction_from_altitude_azimuth(60.0, test_reference::kSunAzimuthDeg), 0.0);
   const SkyModel& full_sky = default_sky(60.0);
-  const double dhi_paper = illuminance_lx(paper_sky.diffuse_horizontal_at_observer());
-  const double dhi_full = illuminance_lx(full_sky.diffuse_horizontal_at_observer());
-  const double dni_paper = illuminance_lx(paper_sky.direct_sun(0.0));
-  const double dni_full = illuminance_lx(full_sky.direct_sun(0.0));
+  const double dhi_paper = illuminance(paper_sky.diffuse_horizontal_at_observer());
+  const double dhi_full = illuminance(full_sky.diffuse_horizontal_at_observer());
+  const double dni_paper = illuminance(paper_sky.direct_sun(0.0));
+  const double dni_full = illuminance(full_sky.direct_sun(0.0));
   if (report())
     std::printf("sun 60: DHI paper %.0f lx, full %.0f lx; DNI paper %.0f lx, full %.0f lx\n", dhi_paper, dhi_full,
                 dni_paper, dni_full);
@@ -131,7 +129,7 @@ TEST(PublishedValues, PaperModelHasADarkerSkyAndABrighterSun) {
   EXPECT_LT(dhi_paper, 0.9 * dhi_full);
   EXPECT_GT(dni_paper, dni_full);
   // Every bin: no ozone absorbs nothing, so the paper's sun is at least as bright.
-  const Spectrum paper_sun = paper_sky.direct_sun(0.0), full_sun = full_sky.direct_sun(0.0);
+  const Irradiance paper_sun = paper_sky.direct_sun(0.0), full_sun = full_sky.direct_sun(0.0);
   for (int k = 0; k < kSpectralBins; ++k) EXPECT_GE(paper_sun[k], full_sun[k]) << k;
 }
 
@@ -158,8 +156,8 @@ TEST(PublishedValues, RayleighOnlyAtmosphereAttenuatesTheZenithSunByItsOpticalDe
   settings.ozone_column_du = 0.0;
   const Atmosphere rayleigh(settings);
   const SkyModel sky(rayleigh, {0, 0, 1}, 0.0);
-  const Spectrum exact = sky.direct_sun(0.0), table = rayleigh.direct_sun(0.0, kPi / 2);
-  const Spectrum& outside = rayleigh.extraterrestrial_irradiance();
+  const Irradiance exact = sky.direct_sun(0.0), table = rayleigh.direct_sun(0.0, kPi / 2);
+  const Irradiance& outside = rayleigh.extraterrestrial_irradiance();
   const double column = 1.0 - std::exp(-100e3 / settings.rayleigh_scale_height_m);
   double worst = 0;
   for (int k = 0; k < kSpectralBins; ++k) {

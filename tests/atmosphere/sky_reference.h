@@ -69,6 +69,8 @@ inline Chromaticity chromaticity(const Spectrum& spectrum) {
   const double sum = c.x + c.y + c.z;
   return {c.x / sum, c.y / sum};
 }
+inline Chromaticity chromaticity(const Radiance& radiance) { return chromaticity(radiance.spectrum()); }
+inline Chromaticity chromaticity(const Irradiance& irradiance) { return chromaticity(irradiance.spectrum()); }
 
 // Correlated colour temperature (K) by McCamy (1992), Color Res. Appl. 17, 142: within
 // a few K of Robertson's method from 2856 K to 6504 K, good enough to rank two colours.

@@ -37,7 +37,8 @@ Spectrum specular_albedo(const Material& material, double view_theta) {
       const double vh = dot(v, h);
       if (vh <= 0) continue;
       const Vec3 l = 2 * vh * h - v;
-      sum += specular_reflection(material, kNormal, l, v) * static_cast<float>(4 * vh * std::sin(theta) * d_theta * d_phi);
+      sum += specular_reflection(material, kNormal, l, v).per_sr *
+             static_cast<float>(4 * vh * std::sin(theta) * d_theta * d_phi);
     }
   }
   return sum;
@@ -48,7 +49,7 @@ TEST(Material, DiffuseIsLambertianOnly) {
   EXPECT_FLOAT_EQ(diffuse_albedo(m, 0.2)[5], 0.3f);
   EXPECT_FALSE(has_specular(m));
   EXPECT_FALSE(mirror_reflectance(m, kNormal, kNormal).has_value());
-  EXPECT_TRUE(specular_reflection(m, kNormal, kNormal, kNormal).is_black());
+  EXPECT_TRUE(specular_reflection(m, kNormal, kNormal, kNormal).per_sr.is_black());
   EXPECT_EQ(specular_lobe_radius(m), 0.0);
 }
 
@@ -68,7 +69,7 @@ TEST(Material, SpecularWeightIsTheBinMeanOfSpecularReflection) {
   for (int i = 0; i < 50; ++i) {
     const Vec3 l = from_spherical(1.5 * std::fmod(i * 0.618034, 1.0), 6.283 * std::fmod(i * 0.414214, 1.0));
     const Vec3 v = from_spherical(1.5 * std::fmod(i * 0.732051, 1.0), 0.3);
-    const double expected = mean(specular_reflection(m, kNormal, l, v));
+    const double expected = mean(specular_reflection(m, kNormal, l, v).per_sr);
     EXPECT_NEAR(specular_weight(m, kNormal, l, v), expected, 1e-5 * std::max(1.0, expected));
   }
 }
@@ -76,8 +77,8 @@ TEST(Material, SpecularWeightIsTheBinMeanOfSpecularReflection) {
 TEST(Material, SpecularReflectionIsBrdfTimesCosine) {
   const Material m = CookTorranceMaterial(constant_ior(1.5), 0.2, Spectrum(0.5f));
   const Vec3 l = from_spherical(0.7, 0.2), v = from_spherical(0.5, 3.0);
-  EXPECT_NEAR(specular_reflection(m, kNormal, l, v)[3], specular_brdf(m, kNormal, l, v)[3] * std::cos(0.7), 1e-6);
-  EXPECT_TRUE(specular_reflection(m, kNormal, {0.3, 0, -0.9539}, v).is_black());
+  EXPECT_NEAR(specular_reflection(m, kNormal, l, v).per_sr[3], specular_brdf(m, kNormal, l, v)[3] * std::cos(0.7), 1e-6);
+  EXPECT_TRUE(specular_reflection(m, kNormal, {0.3, 0, -0.9539}, v).per_sr.is_black());
 }
 
 TEST(Material, LayeredWhiteBaseUnderSmoothCoatConservesEnergyExactly) {

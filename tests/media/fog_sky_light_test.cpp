@@ -44,7 +44,7 @@ std::array<double, kSpectralBins> direct_j(const FogLayer& fog, double z) {
       const Spectrum t = fog.transmittance((hemisphere ? v_down : v_up) / wn);
       for (int j = 0; j < nphi; ++j) {
         const double phi = 2 * kPi * (j + 0.5) / nphi;
-        const Spectrum l = sky.sky_radiance_near_ground({sz * std::cos(phi), sz * std::sin(phi), w});
+        const Radiance l = sky.sky_radiance_near_ground({sz * std::cos(phi), sz * std::sin(phi), w});
         for (int i = 0; i < kSpectralBins; ++i) sum[static_cast<size_t>(i)] += l[i] * t[i] * dw * 2 * kPi / nphi;
       }
     }

@@ -47,7 +47,7 @@ TEST(FogRender, FogAddsNoMoreLightThanItsSources) {
   const std::vector<const TriangleMesh*> meshes{&scene.objects[0].mesh, &scene.objects[1].mesh};
   const FogMedium fog(*scene.fog, meshes, sky, scene.camera.position);
   const FogSkyLight sky_light(fog.layer(), sky);
-  const Spectrum sun = sky.direct_sun(fog.layer().top_m());
+  const Irradiance sun = sky.direct_sun(fog.layer().top_m());
   for (const Vec3 dir : {normalize(Vec3{0, 1, 0}), normalize(Vec3{0.5, 1, 0.05}), normalize(Vec3{-1, 0.2, 0.3}),
                          normalize(Vec3{0.3, 1, -0.02})}) {
     const Ray ray{scene.camera.position, dir};
@@ -85,9 +85,9 @@ TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
   for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length)) shadowed -= lit.end - lit.begin;
   ASSERT_GT(shadowed, 5.0);  // the geometry does put part of the ray in shadow
   // The light lost is the sun's in-scatter over the shadowed part, from the closed form.
-  Spectrum expected = fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, 0, length, sky.direct_sun(60.0));
+  Spectrum expected = fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, 0, length, sky.direct_sun(60.0).spectrum());
   for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length))
-    expected -= fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, lit.begin, lit.end, sky.direct_sun(60.0));
+    expected -= fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, lit.begin, lit.end, sky.direct_sun(60.0).spectrum());
   for (int k = 0; k < kSpectralBins; k += 7) EXPECT_NEAR(difference[k], expected[k], 1e-4 * expected[k] + 1e-9);
   EXPECT_GT(luminance(difference), 0.0);
 }

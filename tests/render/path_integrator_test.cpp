@@ -81,10 +81,10 @@ TEST(PathIntegrator, OpenLambertianGroundReflectsRhoEOverPi) {
     for (int j = 0; j < kPhi; ++j) {
       const double theta = (i + 0.5) * (kPi / 2) / kTheta, phi = (j + 0.5) * 2 * kPi / kPhi;
       const Vec3 l{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-      e_sky += sky.sky_radiance_near_ground(l) *
+      e_sky += sky.sky_radiance_near_ground(l).spectrum() *
                static_cast<float>(std::cos(theta) * std::sin(theta) * (kPi / 2 / kTheta) * (2 * kPi / kPhi));
     }
-  const Spectrum e_sun = sky.direct_sun(0.0) * static_cast<float>(std::sin(radians(scene.sun.altitude_deg)));
+  const Spectrum e_sun = sky.direct_sun(0.0).spectrum() * static_cast<float>(std::sin(radians(scene.sun.altitude_deg)));
   const Vec3 eye = scene.camera.position, target{2, 3, 0};
   const Ray ray{eye, normalize(target - eye)};
   const MediumStretch air = sky.aerial_perspective(ray.direction, length(target - eye));

@@ -26,9 +26,6 @@ Scene open_plane_scene(double sun_altitude_deg, float reflectance) {
   return scene;
 }
 
-// Illuminance (lx) of a spectral irradiance.
-double lux(const Spectrum& irradiance) { return xyz_from_spectrum(irradiance).y; }
-
 TEST(Renderer, HorizontalPlaneHasLambertLuminance) {
   // L = ρ (E_direct sin a + E_sky) / π with both illuminances from the atmosphere
   // model; 10 m of air between camera and plane change it by well under 0.1 %: 0.5 %.
@@ -36,8 +33,8 @@ TEST(Renderer, HorizontalPlaneHasLambertLuminance) {
     const Scene scene = open_plane_scene(altitude, 0.6f);
     const Renderer renderer(scene);
     const XyzImage image = renderer.render();
-    const double e_direct = lux(renderer.sky().direct_sun(0.0)) * std::sin(radians(altitude));
-    const double e_sky = lux(renderer.sky().sky_irradiance({0, 0, 1}));
+    const double e_direct = illuminance(renderer.sky().direct_sun(0.0)) * std::sin(radians(altitude));
+    const double e_sky = illuminance(renderer.sky().sky_irradiance({0, 0, 1}));
     const double expected = 0.6 * (e_direct + e_sky) / kPi;
     for (int y = 0; y < 8; y += 7)
       for (int x = 0; x < 8; x += 7) EXPECT_NEAR(image.at(x, y).y, expected, 0.005 * expected) << altitude;
@@ -48,7 +45,7 @@ TEST(Renderer, HorizontalPlaneHasLambertLuminance) {
 TEST(Renderer, SunBelowHorizonLeavesOnlySkyLight) {
   const Scene scene = open_plane_scene(-3.0, 1.0f);
   const Renderer renderer(scene);
-  const double sky_only = lux(renderer.sky().sky_irradiance({0, 0, 1})) / kPi;
+  const double sky_only = illuminance(renderer.sky().sky_irradiance({0, 0, 1})) / kPi;
   EXPECT_GT(sky_only, 1.0);  // civil twilight still lights the ground
   EXPECT_NEAR(renderer.render().at(4, 4).y, sky_only, 0.005 * sky_only);
 }
@@ -68,14 +65,14 @@ TEST(Renderer, BoxCastsAHardShadowWhereGeometrySays) {
   // sun's share is all or nothing.
   // Seen through the camera's 50 m of air.
   const MediumStretch air = renderer.sky().aerial_perspective({0, 0, -1}, 50.0);
-  auto seen = [&](const Spectrum& radiance) { return luminance(air.seen_through(Radiance(radiance))); };
-  auto sky_only = [&](double y) {
-    return seen(renderer.sky_light().diffuse_irradiance({0, y, 0}, {0, 0, 1}) * static_cast<float>(0.5 / kPi));
+  // The ground (albedo 0.5) under irradiance E, seen through the air.
+  auto seen = [&](const Irradiance& e) {
+    return luminance(air.seen_through(lambertian_radiance(Reflectance(0.5f), e)));
   };
+  auto sky_only = [&](double y) { return seen(renderer.sky_light().diffuse_irradiance({0, y, 0}, {0, 0, 1})); };
   auto sky_and_sun = [&](double y) {
-    const Spectrum e = renderer.sky_light().diffuse_irradiance({0, y, 0}, {0, 0, 1}) +
-                       renderer.sky().direct_sun(0.0) * static_cast<float>(std::sin(radians(45.0)));
-    return seen(e * static_cast<float>(0.5 / kPi));
+    return seen(renderer.sky_light().diffuse_irradiance({0, y, 0}, {0, 0, 1}) +
+                renderer.sky().direct_sun(0.0) * static_cast<float>(std::sin(radians(45.0))));
   };
   // 0.5 %: what is left is float rounding and the sun's profile against height.
   EXPECT_NEAR(ground_luminance(10.0), sky_only(10.0), 0.005 * sky_only(10.0));         // in the shadow
@@ -83,8 +80,8 @@ TEST(Renderer, BoxCastsAHardShadowWhereGeometrySays) {
   EXPECT_NEAR(ground_luminance(15.5), sky_and_sun(15.5), 0.005 * sky_and_sun(15.5));   // just outside
   EXPECT_NEAR(ground_luminance(-10.0), sky_and_sun(-10.0), 0.005 * sky_and_sun(-10.0));  // sunny side
   // Near the box the ground sees less sky than in the open.
-  EXPECT_LT(lux(renderer.sky_light().diffuse_irradiance({0, 10, 0}, {0, 0, 1})),
-            lux(renderer.sky().sky_irradiance({0, 0, 1})));
+  EXPECT_LT(illuminance(renderer.sky_light().diffuse_irradiance({0, 10, 0}, {0, 0, 1})),
+            illuminance(renderer.sky().sky_irradiance({0, 0, 1})));
   EXPECT_GT(renderer.rays_traced(), 0u);
 }
 

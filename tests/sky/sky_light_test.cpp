@@ -45,7 +45,7 @@ struct Fixture {
 };
 
 // Radiance of obstacles for these tests: black, so only the sky counts.
-Spectrum black_obstacle(const Ray&, const Hit&) { return Spectrum(0.0f); }
+Radiance black_obstacle(const Ray&, const Hit&) { return Radiance(0.0f); }
 
 // A street canyon of width w between two walls of height h, `length_m` long, along y
 // (or along x when turned).
@@ -85,8 +85,8 @@ TEST(SkyLight, OpenFieldGetsTheUnobstructedIrradiance) {
   f.tracer.commit();
   const SkyLight light(f.sky, f.tracer, black_obstacle);
   for (const Vec3 n : {Vec3{0, 0, 1}, Vec3{1, 0, 0}, normalize(Vec3{0, -1, 1})}) {
-    const Spectrum e = light.diffuse_irradiance({0, 0, 0}, n);
-    const Spectrum table = f.sky.sky_irradiance(n);
+    const Irradiance e = light.diffuse_irradiance({0, 0, 0}, n);
+    const Irradiance table = f.sky.sky_irradiance(n);
     for (int k = 0; k < kSpectralBins; ++k) EXPECT_FLOAT_EQ(e[k], table[k]);
   }
 }
@@ -108,11 +108,11 @@ TEST(SkyLight, UnobstructedIrradianceMatchesADenseQuadratureOfTheSky) {
           const Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
           const double c = dot(n, w);
           if (c <= 0) continue;
-          dense += f.sky.sky_radiance_near_ground(w) * static_cast<float>(c * std::sin(theta) * (kPi / kTheta) * (2 * kPi / kPhi));
+          dense += f.sky.sky_radiance_near_ground(w).spectrum() * static_cast<float>(c * std::sin(theta) * (kPi / kTheta) * (2 * kPi / kPhi));
         }
       }
-      const double expected = xyz_from_spectrum(dense).y;
-      EXPECT_NEAR(xyz_from_spectrum(f.sky.sky_irradiance(n)).y, expected, 0.01 * expected) << elevation << " " << azimuth;
+      const double expected = illuminance(Irradiance(dense));
+      EXPECT_NEAR(illuminance(f.sky.sky_irradiance(n)), expected, 0.01 * expected) << elevation << " " << azimuth;
     }
   }
 }
@@ -123,16 +123,16 @@ TEST(SkyLight, ObstaclesSendBackTheirLight) {
   Fixture f;
   f.tracer.add_mesh(make_box({-500, 5, 0}, {500, 15, 1000}));
   f.tracer.commit();
-  const Spectrum wall_radiance(0.01f);
+  const Radiance wall_radiance(0.01f);
   const SkyLight light(f.sky, f.tracer, [&](const Ray&, const Hit&) { return wall_radiance; });
   const SkyLight dark(f.sky, f.tracer, black_obstacle);
   const Vec3 point{0, 0, 500}, north{0, 1, 0};
-  const double lit = xyz_from_spectrum(light.diffuse_irradiance(point, north)).y;
-  const double unlit = xyz_from_spectrum(dark.diffuse_irradiance(point, north)).y;
+  const double lit = illuminance(light.diffuse_irradiance(point, north));
+  const double unlit = illuminance(dark.diffuse_irradiance(point, north));
   // The wall fills nearly the whole hemisphere (it subtends all but ~0.5° at 500 m up).
-  const double expected = xyz_from_spectrum(wall_radiance * static_cast<float>(kPi)).y;
+  const double expected = illuminance(Irradiance(wall_radiance.spectrum() * static_cast<float>(kPi)));  // π L
   EXPECT_NEAR(lit - unlit, expected, 0.03 * expected);
-  EXPECT_LT(unlit, 0.03 * xyz_from_spectrum(f.sky.sky_irradiance(north)).y);
+  EXPECT_LT(unlit, 0.03 * illuminance(f.sky.sky_irradiance(north)));
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ namespace {
 // grid in (θ, φ) (0.45° cells): the brute-force reference, in luminance.
 double dense_specular_luminance(const SkyModel& sky, const Material& m, const Vec3& n, const Vec3& v) {
   constexpr int kTheta = 400, kPhi = 800;
-  Spectrum sum;
+  Radiance sum;
   for (int i = 0; i < kTheta; ++i) {
     const double theta = kPi * (i + 0.5) / kTheta;
     const double weight = std::sin(theta) * (kPi / kTheta) * (2 * kPi / kPhi);
@@ -27,7 +27,7 @@ double dense_specular_luminance(const SkyModel& sky, const Material& m, const Ve
       if (dot(n, l) <= 0) continue;
       const double w = specular_weight(m, n, l, v);
       if (w <= 0) continue;
-      sum += specular_reflection(m, n, l, v) * sky.sky_radiance_near_ground(l) * static_cast<float>(weight);
+      sum += specular_reflection(m, n, l, v).reflect(sky.sky_radiance_near_ground(l), weight);
     }
   }
   return luminance(sum);
@@ -38,7 +38,7 @@ TEST(SpecularSky, AdaptiveBandSearchMatchesADenseQuadrature) {
   const SkyModel sky(atmosphere, direction_from_altitude_azimuth(30, 150), 1.6);
   RayTracer open_field;
   open_field.commit();
-  const SkyLight light(sky, open_field, [](const Ray&, const Hit&) { return Spectrum(0.0f); });
+  const SkyLight light(sky, open_field, [](const Ray&, const Hit&) { return Radiance(0.0f); });
   struct Case {
     Vec3 normal;
     double view_from_normal_deg, view_azimuth_deg;

@@ -21,7 +21,7 @@ Atmosphere::Atmosphere(const AtmosphereSettings& settings, const SpectralBands& 
       medium_(settings, bands),
       transmittance_(medium_, settings.earth_radius_m + settings.site_elevation_m,
                      settings.earth_radius_m + settings.top_altitude_m),
-      extraterrestrial_(skylit::extraterrestrial_irradiance(bands, settings.earth_sun_distance_au)) {
+      extraterrestrial_(Irradiance(skylit::extraterrestrial_irradiance(bands, settings.earth_sun_distance_au))) {
   if (settings.model == AtmosphereModel::full)
     multiple_ = std::make_unique<MultipleScatteringTable>(medium_, transmittance_, settings.ground_albedo);
   sky_only_ = std::make_unique<ScatteringIntegrator>(medium_, transmittance_, multiple_.get(), nullptr,
@@ -33,16 +33,17 @@ Atmosphere::Atmosphere(const AtmosphereSettings& settings, const SpectralBands& 
 
 Atmosphere::~Atmosphere() = default;
 
-Spectrum Atmosphere::direct_sun(double height_m, double sun_elevation_rad) const {
-  return extraterrestrial_ * transmittance_.to_top(ground_radius() + std::max(0.0, height_m), std::sin(sun_elevation_rad));
+Irradiance Atmosphere::direct_sun(double height_m, double sun_elevation_rad) const {
+  return extraterrestrial_ *
+         Transmittance(transmittance_.to_top(ground_radius() + std::max(0.0, height_m), std::sin(sun_elevation_rad)));
 }
 
-Spectrum Atmosphere::direct_sun_exact(double height_m, double sun_elevation_rad) const {
+Irradiance Atmosphere::direct_sun_exact(double height_m, double sun_elevation_rad) const {
   const double r = ground_radius() + std::max(0.0, height_m), mu = std::sin(sun_elevation_rad);
-  if (shell::hits_ground(r, mu, ground_radius())) return Spectrum(0.0f);
+  if (shell::hits_ground(r, mu, ground_radius())) return Irradiance(0.0f);
   const ColumnDensities c =
       column_densities(medium_, r, mu, shell::distance_to_outer_sphere(r, mu, transmittance_.top_radius()));
-  return extraterrestrial_ * transmittance_of(medium_.extinction(c.rayleigh, c.aerosol, c.ozone));
+  return extraterrestrial_ * Transmittance(transmittance_of(medium_.extinction(c.rayleigh, c.aerosol, c.ozone)));
 }
 
 SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double observer_height_m)
@@ -52,7 +53,7 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
       observer_radius_(atmosphere.ground_radius() + std::clamp(observer_height_m, 0.0, 0.9 * atmosphere.settings().top_altitude_m)),
       sun_angular_radius_(kSunAngularRadiusAt1AuRad / atmosphere.settings().earth_sun_distance_au) {
   const double ground = atmosphere.ground_radius();
-  const Spectrum& sun = atmosphere.extraterrestrial_irradiance();
+  const Spectrum& sun = atmosphere.extraterrestrial_irradiance().spectrum();
   // Direct sunlight against height, with exact column densities toward the sun.
   for (int k = 0; k < kDirectSunProfileSize; ++k) {
     const double u = static_cast<double>(k) / (kDirectSunProfileSize - 1);
@@ -66,7 +67,7 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
   ground_sky_irradiance_ = std::make_unique<SkyIrradianceTable>(ground_view_ ? *ground_view_ : *observer_view_, to_sun_);
 }
 
-Spectrum SkyModel::direct_sun(double height_m) const {
+Irradiance SkyModel::direct_sun(double height_m) const {
   if (height_m >= kDirectSunProfileTopM) return atmosphere_.direct_sun(height_m, sun_elevation_);
   const double f = std::sqrt(std::max(0.0, height_m) / kDirectSunProfileTopM) * (kDirectSunProfileSize - 1);
   const int k = std::min(static_cast<int>(f), kDirectSunProfileSize - 2);
@@ -74,26 +75,26 @@ Spectrum SkyModel::direct_sun(double height_m) const {
   return direct_sun_profile_[static_cast<size_t>(k)] * (1 - a) + direct_sun_profile_[static_cast<size_t>(k + 1)] * a;
 }
 
-Spectrum SkyModel::sky_radiance(const Vec3& direction) const {
-  return observer_view_->radiance(relative_direction(direction, to_sun_));
+Radiance SkyModel::sky_radiance(const Vec3& direction) const {
+  return Radiance(observer_view_->radiance(relative_direction(direction, to_sun_)));
 }
 
-Spectrum SkyModel::sky_radiance_near_ground(const Vec3& direction) const {
-  return (ground_view_ ? *ground_view_ : *observer_view_).radiance(relative_direction(direction, to_sun_));
+Radiance SkyModel::sky_radiance_near_ground(const Vec3& direction) const {
+  return Radiance((ground_view_ ? *ground_view_ : *observer_view_).radiance(relative_direction(direction, to_sun_)));
 }
 
-Spectrum SkyModel::sun_radiance(const Vec3& direction) const {
+Radiance SkyModel::sun_radiance(const Vec3& direction) const {
   const double angle = std::acos(std::clamp(dot(normalize(direction), to_sun_), -1.0, 1.0));
-  if (angle >= sun_angular_radius_) return Spectrum(0.0f);
-  return sun_disc_radiance(sun_through_air_, atmosphere_.bands(), sun_angular_radius_, angle);
+  if (angle >= sun_angular_radius_) return Radiance(0.0f);
+  return Radiance(sun_disc_radiance(sun_through_air_.spectrum(), atmosphere_.bands(), sun_angular_radius_, angle));
 }
 
 MediumStretch SkyModel::aerial_perspective(const Vec3& direction, double distance_m) const {
   return aerial_->at(relative_direction(direction, to_sun_), distance_m);
 }
 
-Spectrum SkyModel::diffuse_horizontal_at_observer() const {
-  return SkyIrradianceTable::integrate(*observer_view_, {kPi / 2, 0.0});
+Irradiance SkyModel::diffuse_horizontal_at_observer() const {
+  return Irradiance(SkyIrradianceTable::integrate(*observer_view_, {kPi / 2, 0.0}));
 }
 
 }  // namespace skylit

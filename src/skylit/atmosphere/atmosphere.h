@@ -30,12 +30,12 @@ class Atmosphere {
   // The scene's ground (z = 0) as a sphere about the Earth's centre.
   double ground_radius() const { return transmittance_.ground_radius(); }
   // W m⁻² nm⁻¹ at the top of the atmosphere, for the date's Earth–Sun distance.
-  const Spectrum& extraterrestrial_irradiance() const { return extraterrestrial_; }
+  const Irradiance& extraterrestrial_irradiance() const { return extraterrestrial_; }
   // Direct sunlight on a plane normal to the sun at `height_m` above the ground; 0 when
   // the sun's centre is below the horizon there. From the transmittance table, and
   // exactly (quadrature of the column densities toward the sun).
-  Spectrum direct_sun(double height_m, double sun_elevation_rad) const;
-  Spectrum direct_sun_exact(double height_m, double sun_elevation_rad) const;
+  Irradiance direct_sun(double height_m, double sun_elevation_rad) const;
+  Irradiance direct_sun_exact(double height_m, double sun_elevation_rad) const;
 
  private:
   AtmosphereSettings settings_;
@@ -46,7 +46,7 @@ class Atmosphere {
   std::unique_ptr<ScatteringIntegrator> sky_only_;  // without the ground's sky irradiance
   std::unique_ptr<GroundIrradianceTable> ground_sky_;
   std::unique_ptr<ScatteringIntegrator> integrator_;
-  Spectrum extraterrestrial_;
+  Irradiance extraterrestrial_;
 };
 
 class SkyModel {
@@ -58,22 +58,22 @@ class SkyModel {
 
   // Radiance of the sky (and of the ground far below the horizon) seen by the
   // observer, without the sun's disc.
-  Spectrum sky_radiance(const Vec3& direction) const;
+  Radiance sky_radiance(const Vec3& direction) const;
   // The same for a point near the ground (where the scene's surfaces are), whatever the
   // observer's height: the light that reaches surfaces from the sky and the far ground.
-  Spectrum sky_radiance_near_ground(const Vec3& direction) const;
+  Radiance sky_radiance_near_ground(const Vec3& direction) const;
   // The sun's disc as the observer sees it (limb-darkened, attenuated); 0 off the disc.
-  Spectrum sun_radiance(const Vec3& direction) const;
+  Radiance sun_radiance(const Vec3& direction) const;
   // What the air adds and lets through between the observer and a surface.
   MediumStretch aerial_perspective(const Vec3& direction, double distance_m) const;
   // Unobstructed sky and ground irradiance on a plane near the ground with this normal.
-  Spectrum sky_irradiance(const Vec3& normal) const { return ground_sky_irradiance_->at(normal); }
+  Irradiance sky_irradiance(const Vec3& normal) const { return Irradiance(ground_sky_irradiance_->at(normal)); }
   // The sun's direct normal irradiance at a height above the ground (computed exactly
   // for the sun's direction at heights up to kDirectSunProfileTopM, not interpolated
   // from the transmittance table).
-  Spectrum direct_sun(double height_m) const;
+  Irradiance direct_sun(double height_m) const;
   // Diffuse irradiance on a horizontal plane at the observer.
-  Spectrum diffuse_horizontal_at_observer() const;
+  Irradiance diffuse_horizontal_at_observer() const;
   double sun_angular_radius_rad() const { return sun_angular_radius_; }
 
  private:
@@ -84,8 +84,8 @@ class SkyModel {
   double sun_angular_radius_;
   static constexpr int kDirectSunProfileSize = 65;
   static constexpr double kDirectSunProfileTopM = 2000.0;
-  std::vector<Spectrum> direct_sun_profile_;  // at heights top·(k/(size−1))²
-  Spectrum sun_through_air_;  // extraterrestrial × transmittance from the observer
+  std::vector<Irradiance> direct_sun_profile_;  // at heights top·(k/(size−1))²
+  Irradiance sun_through_air_;  // extraterrestrial × transmittance from the observer
   std::unique_ptr<SkyViewTable> observer_view_;
   std::unique_ptr<SkyViewTable> ground_view_;  // the same table when the observer is near the ground
   std::unique_ptr<AerialPerspectiveTable> aerial_;

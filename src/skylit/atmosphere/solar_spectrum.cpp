@@ -22,8 +22,8 @@ std::vector<SolarSpectrumSample> solar_spectrum(const AtmosphereSettings& settin
     // these three quantities are wanted, at many wavelengths.
     const double sun_elevation = std::asin(std::clamp(normalize(to_sun).z, -1.0, 1.0));
     const double r = atmosphere.ground_radius() + observer_height_m, mu_sun = std::sin(sun_elevation);
-    const Spectrum& e0 = atmosphere.extraterrestrial_irradiance();
-    const Spectrum direct = atmosphere.direct_sun_exact(observer_height_m, sun_elevation);
+    const Spectrum& e0 = atmosphere.extraterrestrial_irradiance().spectrum();
+    const Spectrum direct = atmosphere.direct_sun_exact(observer_height_m, sun_elevation).spectrum();
     const Spectrum diffuse = atmosphere.integrator().horizontal_irradiance(r, mu_sun, 16, 16, 48) * e0;
     const Spectrum zenith = atmosphere.integrator().along_ray(r, 1.0, mu_sun, mu_sun, 96).radiance * e0;
     for (int i = 0; i < kSpectralBins && chunk + i <= last_nm; ++i)

@@ -34,9 +34,9 @@ CloudsInSky::CloudsInSky(const std::vector<CloudShape>& listed, const std::optio
   // as the radiance of a Lambertian of albedo 0.25 under the sun and the sky there
   // (docs/clouds.md), so that clouds stay lit by the sky after sunset.
   lighting_.to_sun = to_sun_;
-  lighting_.sun = sky.direct_sun(altitude);
+  lighting_.sun = sky.direct_sun(altitude).spectrum();
   lighting_.ambient = default_cloud_ambient(lighting_.sun, to_sun_) +
-                      sky.sky_irradiance({0, 0, 1}) * static_cast<float>(kDefaultCloudAmbientFraction / kPi);
+                      (sky.sky_irradiance({0, 0, 1}) * static_cast<float>(kDefaultCloudAmbientFraction / kPi)).spectrum();
   sky_share_ = measure_sky_share(sky, ground_point);
 }
 
@@ -48,16 +48,16 @@ CloudsInSky::Along CloudsInSky::along(const Vec3& origin, const Vec3& direction,
 Transmittance CloudsInSky::measure_sky_share(const SkyModel& sky, const Vec3& ground_point) const {
   // The sky over a horizontal surface, with and without the clouds in front of it, by a
   // cosine-weighted midpoint rule (16 × 32 directions).
-  Spectrum clear, cloudy;
+  Radiance clear, cloudy;
   for (int i = 0; i < 16; ++i) {
     const double mu = std::sqrt((i + 0.5) / 16), sine = std::sqrt(1 - mu * mu);
     for (int j = 0; j < 32; ++j) {
       const double phi = 2 * kPi * (j + 0.5) / 32;
       const Vec3 dir{sine * std::cos(phi), sine * std::sin(phi), mu};
-      const Spectrum radiance = sky.sky_radiance_near_ground(dir);
+      const Radiance radiance = sky.sky_radiance_near_ground(dir);
       const CloudScattering c = layer_.scatter(ground_point, dir, 0.0, 1e7, lighting_);
       clear += radiance;
-      cloudy += radiance * static_cast<float>(c.transmittance) + c.in_scattered;
+      cloudy += radiance * static_cast<float>(c.transmittance) + Radiance(c.in_scattered);
     }
   }
   Spectrum share;

@@ -32,17 +32,17 @@ std::optional<SpecularPart> glossy_part(const Material& material) {
 
 }  // namespace
 
-Spectrum diffuse_albedo(const Material& material, double cos_view) {
-  if (const auto* d = std::get_if<DiffuseMaterial>(&material)) return d->reflectance;
+Reflectance diffuse_albedo(const Material& material, double cos_view) {
+  if (const auto* d = std::get_if<DiffuseMaterial>(&material)) return Reflectance(d->reflectance);
   if (const auto* ct = std::get_if<CookTorranceMaterial>(&material)) {
-    if (!ct->has_diffuse()) return Spectrum();
+    if (!ct->has_diffuse()) return Reflectance();
     Spectrum out = ct->diffuse_factor();
     const Spectrum f = ct->fresnel().at(cos_view);
     for (int i = 0; i < Spectrum::size(); ++i) out[i] *= 1.0f - f[i];
-    return out;
+    return Reflectance(out);
   }
   const auto& glass = std::get<GlassMaterial>(material);
-  return glass.interior_albedo_factor() * glass.transmittance().at(cos_view);
+  return Reflectance(glass.interior_albedo_factor() * glass.transmittance().at(cos_view));
 }
 
 Spectrum specular_brdf(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer) {
@@ -53,8 +53,9 @@ Spectrum specular_brdf(const Material& material, const Vec3& n, const Vec3& to_l
   return part->fresnel->at(term.cos_view_half) * static_cast<float>(term.brdf_without_fresnel);
 }
 
-Spectrum specular_reflection(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer) {
-  return specular_brdf(material, n, to_light, to_viewer) * static_cast<float>(std::max(0.0, dot(n, to_light)));
+CosineWeightedBrdf specular_reflection(const Material& material, const Vec3& n, const Vec3& to_light,
+                                       const Vec3& to_viewer) {
+  return {specular_brdf(material, n, to_light, to_viewer) * static_cast<float>(std::max(0.0, dot(n, to_light)))};
 }
 
 bool has_specular(const Material& material) { return glossy_part(material).has_value(); }
@@ -77,12 +78,12 @@ double specular_lobe_radius(const Material& material) {
   return part ? 2 * beckmann_half_angle_at_1e3(part->roughness) : 0.0;
 }
 
-std::optional<Spectrum> mirror_reflectance(const Material& material, const Vec3& n, const Vec3& to_viewer) {
+std::optional<Reflectance> mirror_reflectance(const Material& material, const Vec3& n, const Vec3& to_viewer) {
   const auto part = specular_part(material);
   if (!part || part->roughness >= kMirrorRoughness) return std::nullopt;
   const double cos_view = dot(n, to_viewer);
   if (cos_view <= 0) return std::nullopt;
-  return part->fresnel->at(cos_view);
+  return Reflectance(part->fresnel->at(cos_view));
 }
 
 }  // namespace skylit

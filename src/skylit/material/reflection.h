@@ -7,30 +7,33 @@
 // Directions are unit vectors pointing away from the surface: n the normal on the
 // viewer's side, to_light toward the light (a sky element, the sun), to_viewer toward
 // the eye. Radiance toward the viewer is
-//   diffuse_albedo(m, n·v) / π × irradiance
-//   + Σ over light directions specular_reflection(m, n, l, v) × L(l) dω(l)
+//   lambertian_radiance(diffuse_albedo(m, n·v), irradiance)
+//   + Σ over light directions specular_reflection(m, n, l, v).reflect(L(l), dω(l))
+//     (for the sun: specular_reflection(m, n, l, v).reflect(E_normal))
 //   + mirror_reflectance(m, n, v) × L(mirror_direction(n, v))   (when it has one).
+// The types (radiometry.h) admit only these combinations.
 #pragma once
 
 #include <optional>
 
 #include "skylit/core/vec3.h"
 #include "skylit/material/material.h"
-#include "skylit/spectrum/spectrum.h"
+#include "skylit/spectrum/radiometry.h"
 
 namespace skylit {
 
 // The Lambertian part's hemispherical reflectance at view cosine cos_view = n·v (for
 // `diffuse` the reflectance itself; for a coated base and the room behind glass it
 // falls toward grazing views, where the interface reflects more).
-Spectrum diffuse_albedo(const Material& material, double cos_view);
+Reflectance diffuse_albedo(const Material& material, double cos_view);
 
 // The glossy specular BRDF f_s(l, v), sr⁻¹. Zero for `diffuse` and for mirrors.
 Spectrum specular_brdf(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
 
-// f_s(l, v) (n·l): what multiplies incident radiance L(l) dω (sr⁻¹); for the sun,
-// what multiplies its irradiance on a plane facing it.
-Spectrum specular_reflection(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
+// f_s(l, v) (n·l): what reflects incident radiance L(l) dω (sr⁻¹) toward the viewer;
+// for the sun or a lamp, their irradiance on a plane facing them.
+CosineWeightedBrdf specular_reflection(const Material& material, const Vec3& n, const Vec3& to_light,
+                                       const Vec3& to_viewer);
 
 // Whether specular_reflection can be non-zero: a glossy lobe to integrate.
 bool has_specular(const Material& material);
@@ -53,7 +56,7 @@ double specular_roughness(const Material& material);
 // For a smooth surface (roughness below kMirrorRoughness): its spectral mirror
 // reflectance at the view angle, to multiply the radiance arriving from
 // mirror_direction(n, to_viewer). nullopt for other materials (and when n·v ≤ 0).
-std::optional<Spectrum> mirror_reflectance(const Material& material, const Vec3& n, const Vec3& to_viewer);
+std::optional<Reflectance> mirror_reflectance(const Material& material, const Vec3& n, const Vec3& to_viewer);
 
 // The direction of perfect reflection of the view about n: 2 (n·v) n − v.
 inline Vec3 mirror_direction(const Vec3& n, const Vec3& to_viewer) { return 2 * dot(n, to_viewer) * n - to_viewer; }

@@ -13,20 +13,21 @@
 
 #include "skylit/core/vec3.h"
 #include "skylit/material/material.h"
-#include "skylit/spectrum/spectrum.h"
+#include "skylit/spectrum/radiometry.h"
 
 namespace skylit {
 
 struct ReflectionSample {
   Vec3 to_light;    // unit
-  Spectrum weight;  // f·(n·l)/p: what multiplies the radiance arriving from to_light
+  Spectrum weight;  // f·(n·l)/p (or the mirror's reflectance over its chance): what multiplies
+                    // the radiance arriving from to_light
   double pdf = 0;   // sr⁻¹ for the non-mirror lobes; 0 for the mirror (a delta)
   bool mirror = false;
 };
 
 // f(l, v)·(n·l) of the lobes other than the mirror, sr⁻¹: albedo(n·v)/π·(n·l) plus the
 // glossy lobe's specular_reflection. 0 below the surface.
-Spectrum reflection_cos(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
+CosineWeightedBrdf reflection_cos(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
 
 // The density (sr⁻¹) with which sample_reflection draws to_light through the non-mirror
 // lobes, the lobes' choice included (for weighing it against other strategies).

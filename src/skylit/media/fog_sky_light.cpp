@@ -54,7 +54,7 @@ FogSkyLight::FogSkyLight(const FogLayer& fog, const SkyModel& sky, int altitudes
         for (int j = 0; j < kHalfAzimuths; ++j) {
           const double phi = (j + 0.5) * dphi;
           const Vec3 d = sin_zenith * (std::cos(phi) * e1 + std::sin(phi) * e2) + sign * wn * up;
-          sum += sky.sky_radiance_near_ground(d);
+          sum += sky.sky_radiance_near_ground(d).spectrum();
         }
         w.push_back(sign * wn);
         dw.push_back(0.5 * (hi - lo) * kGaussW[static_cast<size_t>(g)]);

@@ -40,31 +40,30 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
   return path;
 }
 
-Spectrum BandsIntegrator::sky_share(double z) const {
-  const Spectrum clouds = scene_.clouds() ? scene_.clouds()->sky_share().spectrum() : Spectrum(1.0f);
+Transmittance BandsIntegrator::sky_share(double z) const {
+  const Transmittance clouds = scene_.clouds() ? scene_.clouds()->sky_share() : Transmittance(1.0f);
   return scene_.fog() ? scene_.fog()->sky_light_share(z) * clouds : clouds;
 }
 
-Spectrum BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
-  if (dot(point.normal, to_sun_) <= 0) return Spectrum(0.0f);
-  const Spectrum sun = sky_.direct_sun(point.position.z);
+Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
+  if (dot(point.normal, to_sun_) <= 0) return Irradiance(0.0f);
+  const Irradiance sun = sky_.direct_sun(point.position.z);
   // Transmittance is largest in the red: if the last bin is dark, all are (the sun is
   // below this point's horizon).
   if (sun[kSpectralBins - 1] <= 0.0f) return sun;
   if (scene_.tracer().occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_}))
-    return Spectrum(0.0f);
-  Spectrum reaching = scene_.fog() ? sun * scene_.fog()->sun_transmittance(point.position) : sun;
+    return Irradiance(0.0f);
+  Irradiance reaching = scene_.fog() ? sun * scene_.fog()->sun_transmittance(point.position) : sun;
   if (scene_.clouds())  // the clouds' shadows
     reaching *= static_cast<float>(scene_.clouds()->sun_transmittance(point.position));
   return reaching;
 }
 
-Spectrum BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) const {
+Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) const {
   const SurfacePoint point = surface_point(ray, hit);
-  const Spectrum irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
-                              sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
-  const Spectrum albedo = diffuse_albedo(material_of(point), -dot(point.normal, ray.direction));
-  return albedo * irradiance * static_cast<float>(1.0 / kPi);
+  const Irradiance irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
+                                sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
+  return lambertian_radiance(diffuse_albedo(material_of(point), -dot(point.normal, ray.direction)), irradiance);
 }
 
 CachedSkyLight BandsIntegrator::sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const {
@@ -73,53 +72,52 @@ CachedSkyLight BandsIntegrator::sky_light_at(const SurfacePoint& point, const Ve
           sky_light_->specular_radiance(point.position, point.normal, to_viewer, material)};
 }
 
-Spectrum BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direction) const {
+Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direction) const {
   const Ray ray{offset_from_surface(point.position, point.normal), direction};
   if (const std::optional<Hit> hit = scene_.tracer().intersect(ray)) return obstacle_radiance(ray, *hit);
   return sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction);
 }
 
-Spectrum BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const {
+Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const {
   const Material& material = material_of(point);
   const Vec3 to_viewer = -ray.direction;
-  const Spectrum sun = sun_reaching(point);
+  const Irradiance sun = sun_reaching(point);
   // Sky light, dimmed by any fog above the point.
-  const Spectrum share = sky_share(point.position.z);
+  const Transmittance share = sky_share(point.position.z);
   // Lambertian part: sky and sun irradiance.
-  const Spectrum irradiance =
+  const Irradiance irradiance =
       sky_light.diffuse_irradiance * share + sun * static_cast<float>(dot(point.normal, to_sun_));
-  Spectrum radiance = diffuse_albedo(material, dot(point.normal, to_viewer)) * irradiance * static_cast<float>(1.0 / kPi);
+  Radiance radiance = lambertian_radiance(diffuse_albedo(material, dot(point.normal, to_viewer)), irradiance);
   // Glossy part: the sky's (cached) and the sun's highlight.
   radiance += sky_light.specular_radiance * share;
-  if (has_specular(material)) radiance += specular_reflection(material, point.normal, to_sun_, to_viewer) * sun;
+  if (has_specular(material)) radiance += specular_reflection(material, point.normal, to_sun_, to_viewer).reflect(sun);
   if (const SceneLamps* lamps = scene_.lamps()) radiance += lamps->reflected(point, material, to_viewer);
   // Mirror part (window glass): what lies in the mirror direction.
-  if (const std::optional<Spectrum> mirror = mirror_reflectance(material, point.normal, to_viewer))
+  if (const std::optional<Reflectance> mirror = mirror_reflectance(material, point.normal, to_viewer))
     radiance += *mirror * mirrored(point, mirror_direction(point.normal, to_viewer));
   return radiance;
 }
 
-Spectrum BandsIntegrator::lamp_glow(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const {
-  if (!scene_.lamps() || !scene_.fog()) return Spectrum(0.0f);
+Radiance BandsIntegrator::lamp_glow(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const {
+  if (!scene_.lamps() || !scene_.fog()) return Radiance(0.0f);
   if (context.caches.glow)
-    return context.caches.glow->at(context.image_x, context.image_y, ray, ViewHit{hit.mesh, hit.distance()});
+    return Radiance(context.caches.glow->at(context.image_x, context.image_y, ray, ViewHit{hit.mesh, hit.distance()}));
   return scene_.lamps()->in_scattered(ray, hit.distance());
 }
 
 Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const {
-  const Spectrum glow = lamp_glow(ray, hit, context);
+  const Radiance glow = lamp_glow(ray, hit, context);
   const double distance = hit.distance();
   auto path = [&]() -> ViewPath {
     if (context.pixel_path) return context.pixel_path->for_distance(distance, [&] { return view_path(ray, distance); });
     return view_path(ray, distance);
   };
   if (hit.is_sky())
-    return Radiance(glow) + path().seen_from_camera(Radiance(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction)));
+    return glow + path().seen_from_camera(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction));
   std::optional<CachedSkyLight> sky_light;
   if (context.caches.sky_light) sky_light = context.caches.sky_light->interpolate(context.image_x, context.image_y, hit.point);
   if (!sky_light) sky_light = sky_light_at(hit.point, -ray.direction);
-  const Spectrum leaving = shade(ray, hit.point, *sky_light);
-  return Radiance(glow) + path().seen_from_camera(Radiance(leaving));
+  return glow + path().seen_from_camera(shade(ray, hit.point, *sky_light));
 }
 
 }  // namespace skylit

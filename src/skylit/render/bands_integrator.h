@@ -85,20 +85,20 @@ class BandsIntegrator {
   ViewPath view_path(const Ray& ray, double distance) const;
   // The sun's direct normal irradiance at a surface point if it reaches it (0 in
   // shadow or behind the surface).
-  Spectrum sun_reaching(const SurfacePoint& point) const;
+  Irradiance sun_reaching(const SurfacePoint& point) const;
   // The light a surface sends toward the camera, before the air and fog on the way.
-  Spectrum shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const;
+  Radiance shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const;
   // The lamps' glow in fog along the ray: from the glow image if given, else exactly.
-  Spectrum lamp_glow(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const;
+  Radiance lamp_glow(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const;
   // The sky light's share that gets through the clouds and the fog to altitude z (1
   // without either).
-  Spectrum sky_share(double z) const;
+  Transmittance sky_share(double z) const;
   // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
   // or the sky and the sun.
-  Spectrum mirrored(const SurfacePoint& point, const Vec3& direction) const;
+  Radiance mirrored(const SurfacePoint& point, const Vec3& direction) const;
   // The light a hit obstacle sends back along `ray`, for the sky light's one bounce:
   // its Lambertian part, lit by the sun and the unobstructed sky.
-  Spectrum obstacle_radiance(const Ray& ray, const Hit& hit) const;
+  Radiance obstacle_radiance(const Ray& ray, const Hit& hit) const;
 
   const PreparedScene& scene_;
   const SkyModel& sky_;

@@ -24,7 +24,7 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
     : layer_(settings),
       sky_(sky),
       to_sun_(sky.to_sun()),
-      sun_above_fog_(sky.direct_sun(std::max(0.0, layer_.top_m()))),
+      sun_above_fog_(sky.direct_sun(std::max(0.0, layer_.top_m())).spectrum()),
       shadows_(meshes, sky.to_sun()),
       sky_light_(layer_, sky),
       camera_(camera),
@@ -104,18 +104,18 @@ MediumStretch FogMedium::along(const Ray& ray, double distance) const {
   return out;
 }
 
-Spectrum FogMedium::sun_transmittance(const Vec3& point) const {
-  if (to_sun_.z <= 0) return Spectrum(0.0f);
-  return layer_.transmittance(layer_.sun_column(point.z, to_sun_.z));
+Transmittance FogMedium::sun_transmittance(const Vec3& point) const {
+  if (to_sun_.z <= 0) return Transmittance(0.0f);
+  return Transmittance(layer_.transmittance(layer_.sun_column(point.z, to_sun_.z)));
 }
 
-Spectrum FogMedium::sky_light_share(double z) const {
-  if (z >= layer_.top_m()) return Spectrum(1.0f);
+Transmittance FogMedium::sky_light_share(double z) const {
+  if (z >= layer_.top_m()) return Transmittance(1.0f);
   const double f = std::clamp((z - layer_.bottom_m()) / (layer_.top_m() - layer_.bottom_m()), 0.0, 1.0) *
                    (kShareAltitudes - 1);
   const int i = std::min(static_cast<int>(f), kShareAltitudes - 2);
   const float w = static_cast<float>(f - i);
-  return sky_share_[static_cast<size_t>(i)] * (1 - w) + sky_share_[static_cast<size_t>(i + 1)] * w;
+  return Transmittance(sky_share_[static_cast<size_t>(i)] * (1 - w) + sky_share_[static_cast<size_t>(i + 1)] * w);
 }
 
 }  // namespace skylit

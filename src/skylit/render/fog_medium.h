@@ -30,10 +30,10 @@ class FogMedium {
   MediumStretch along(const Ray& ray, double distance) const;
 
   // The fog's transmittance toward the sun from a point (0 if the sun is down).
-  Spectrum sun_transmittance(const Vec3& point) const;
+  Transmittance sun_transmittance(const Vec3& point) const;
   // The share of the sky light that still reaches altitude z through the fog, per bin
   // (J(z) over J without fog).
-  Spectrum sky_light_share(double z) const;
+  Transmittance sky_light_share(double z) const;
 
   const FogLayer& layer() const { return layer_; }
 

@@ -65,7 +65,7 @@ LampGlowImage::LampGlowImage(const PinholeCamera& camera, const PrimaryHits& cen
 }
 
 Spectrum LampGlowImage::evaluate(const Ray& ray, const ViewHit& hit) const {
-  return lamps_.in_scattered(ray, hit.distance);
+  return lamps_.in_scattered(ray, hit.distance).spectrum();
 }
 
 void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {

@@ -38,8 +38,8 @@ PathIntegrator::PathIntegrator(const PreparedScene& scene, const UniformEnvironm
   sky_sampler_ = SkySampler([&furnace](const Vec3&) { return furnace.radiance; });
 }
 
-Spectrum PathIntegrator::environment(const Vec3& direction) const {
-  return furnace_ ? furnace_->radiance : scene_.sky().sky_radiance_near_ground(direction);
+Radiance PathIntegrator::environment(const Vec3& direction) const {
+  return furnace_ ? Radiance(furnace_->radiance) : scene_.sky().sky_radiance_near_ground(direction);
 }
 
 SurfacePoint PathIntegrator::surface_point(const Ray& ray, const Hit& hit) const {
@@ -48,15 +48,16 @@ SurfacePoint PathIntegrator::surface_point(const Ray& ray, const Hit& hit) const
   return {ray.origin + hit.t * ray.direction, normal, hit.t, scene_.material_of_mesh(hit.mesh_id)};
 }
 
-Spectrum PathIntegrator::fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const {
-  if (!scene_.fog()) return Spectrum(1.0f);
-  return fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, distance);
+Transmittance PathIntegrator::fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const {
+  if (!scene_.fog()) return Transmittance(1.0f);
+  return Transmittance(fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, distance));
 }
 
-Spectrum PathIntegrator::scattering_cos(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const {
+CosineWeightedBrdf PathIntegrator::scattering_cos(const Scatterer& scatterer, const Vec3& to_light,
+                                                  const Vec3& to_viewer) const {
   if (scatterer.material) return reflection_cos(*scatterer.material, scatterer.normal, to_light, to_viewer);
-  // In fog: σ_s F / σ_s per unit of scattering (the albedo is in the flight's weight).
-  return Spectrum(static_cast<float>(scene_.fog()->layer().phase(dot(-to_viewer, to_light))));
+  // In fog: the phase function per unit of scattering (the albedo is in the flight's weight).
+  return {Spectrum(static_cast<float>(scene_.fog()->layer().phase(dot(-to_viewer, to_light))))};
 }
 
 double PathIntegrator::scattering_pdf(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const {
@@ -64,33 +65,34 @@ double PathIntegrator::scattering_pdf(const Scatterer& scatterer, const Vec3& to
   return fog_phase_->pdf(dot(-to_viewer, to_light));
 }
 
-Spectrum PathIntegrator::direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
+Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                                       CounterRandom& random) const {
   const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
   const bool surface = scatterer.material != nullptr;
   const Vec3 origin = surface ? offset_from_surface(position, scatterer.normal) : position;
   auto faces = [&](const Vec3& direction) { return !surface || dot(scatterer.normal, direction) > 0; };
-  Spectrum light(0.0f);
+  Radiance light(0.0f);
   // The sun, a direction with the direct irradiance of the sky model at this height.
   const Vec3& to_sun = scene_.to_sun();
   if (!furnace_ && faces(to_sun)) {
-    const Spectrum sun = sky.direct_sun(position.z);
+    const Irradiance sun = sky.direct_sun(position.z);
     if (sun[kSpectralBins - 1] > 0.0f && !tracer.occluded(Ray{origin, to_sun})) {
-      Spectrum reaching = sun;
+      Irradiance reaching = sun;
       if (const FogMedium* fog = scene_.fog()) reaching *= fog->sun_transmittance(position);
-      light += scattering_cos(scatterer, to_sun, to_viewer) * reaching;
+      light += scattering_cos(scatterer, to_sun, to_viewer).reflect(reaching);
     }
   }
   // The sky, one direction drawn from its table.
   const double u1 = random.uniform(), u2 = random.uniform();
   const SkySampler::Sample s = sky_sampler_.sample(u1, u2);
   if (faces(s.direction) && s.pdf > 0) {
-    const Spectrum f = scattering_cos(scatterer, s.direction, to_viewer);
-    if (!f.is_black() && !tracer.occluded(Ray{origin, s.direction})) {
+    const CosineWeightedBrdf f = scattering_cos(scatterer, s.direction, to_viewer);
+    if (!f.per_sr.is_black() && !tracer.occluded(Ray{origin, s.direction})) {
       const double weight = power_heuristic(s.pdf, scattering_pdf(scatterer, s.direction, to_viewer));
-      light += f * environment(s.direction) * fog_transmittance_toward(position, s.direction, kInfinity) *
-               static_cast<float>(weight / s.pdf);
+      // One direction standing for the whole sphere: its radiance over its density.
+      light += f.reflect(environment(s.direction) * fog_transmittance_toward(position, s.direction, kInfinity),
+                         weight / s.pdf);
     }
   }
   // Every lamp, a point source (its irradiance already through the fog).
@@ -101,12 +103,12 @@ Spectrum PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
       if (!(distance > 0)) continue;
       const Vec3 direction = to_lamp / distance;
       if (!faces(direction)) continue;
-      const Spectrum f = scattering_cos(scatterer, direction, to_viewer);
-      if (f.is_black()) continue;
-      const Spectrum irradiance = lamps->irradiance_from(i, position);
+      const CosineWeightedBrdf f = scattering_cos(scatterer, direction, to_viewer);
+      if (f.per_sr.is_black()) continue;
+      const Irradiance irradiance = lamps->irradiance_from(i, position);
       if (irradiance.is_black()) continue;
       if (tracer.occluded(Ray{origin, direction, 0.0, distance * (1 - 1e-6)})) continue;
-      light += f * irradiance;
+      light += f.reflect(irradiance);
     }
   }
   return light;
@@ -116,6 +118,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
   const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
   const FogLayer* fog = scene_.fog() ? &scene_.fog()->layer() : nullptr;
+  // The light gathered so far, and what the path's next light will be multiplied by.
   Spectrum radiance(0.0f), throughput(1.0f);
   Ray ray = camera_ray;
   // How the ray was drawn: from the camera or a mirror (nothing else could have drawn
@@ -136,7 +139,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
         const Vec3 at = ray.origin + flight.distance * ray.direction;
         if (event == 0 && !furnace_) camera_air = sky.aerial_perspective(ray.direction, flight.distance);
         const Vec3 to_viewer = -ray.direction;
-        radiance += throughput * direct_light(at, Scatterer{nullptr, {}}, to_viewer, random);
+        radiance += throughput * direct_light(at, Scatterer{nullptr, {}}, to_viewer, random).spectrum();
         const double u1 = random.uniform(), u2 = random.uniform();
         const PhaseSampler::Sample next = fog_phase_->sample(ray.direction, u1, u2);
         throughput *= static_cast<float>(fog->phase(dot(ray.direction, next.direction)) / next.pdf);
@@ -158,20 +161,20 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
       }
       if (event == 0) {
         // The camera sees the sky as the observer's table gives it, air included.
-        radiance += throughput * (sky.sky_radiance(ray.direction) + sky.sun_radiance(ray.direction));
+        radiance += throughput * (sky.sky_radiance(ray.direction) + sky.sun_radiance(ray.direction)).spectrum();
         break;
       }
-      Spectrum arriving = environment(ray.direction);
+      Radiance arriving = environment(ray.direction);
       if (!delta) arriving *= static_cast<float>(power_heuristic(scatter_pdf, sky_sampler_.pdf(ray.direction)));
       else if (!furnace_) arriving += sky.sun_radiance(ray.direction);
-      radiance += throughput * arriving;
+      radiance += throughput * arriving.spectrum();
       break;
     }
     const SurfacePoint point = surface_point(ray, *hit);
     if (event == 0 && !furnace_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
     const Vec3 to_viewer = -ray.direction;
     const Material& material = scene_.material(point.material);
-    radiance += throughput * direct_light(point.position, Scatterer{&material, point.normal}, to_viewer, random);
+    radiance += throughput * direct_light(point.position, Scatterer{&material, point.normal}, to_viewer, random).spectrum();
     const double u0 = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
     const std::optional<ReflectionSample> next = sample_reflection(material, point.normal, to_viewer, u0, u1, u2);
     if (!next || next->weight.is_black() || dot(next->to_light, point.normal) <= 0) break;

@@ -62,16 +62,16 @@ class PathIntegrator {
   };
   // The light a surface or fog point sends toward `to_viewer` directly from the sun,
   // the sky (weighed against the point's own sampling) and the lamps.
-  Spectrum direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
+  Radiance direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                         CounterRandom& random) const;
-  Spectrum scattering_cos(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
+  CosineWeightedBrdf scattering_cos(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
   double scattering_pdf(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
   // The fog's transmittance from a point toward a direction, to `distance` (1 without fog).
-  Spectrum fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const;
+  Transmittance fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const;
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
 
   // The radiance arriving from a direction at a surface: the sky's, or the furnace's.
-  Spectrum environment(const Vec3& direction) const;
+  Radiance environment(const Vec3& direction) const;
 
   const PreparedScene& scene_;
   std::optional<UniformEnvironment> furnace_;

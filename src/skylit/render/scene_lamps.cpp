@@ -22,19 +22,19 @@ SceneLamps::SceneLamps(const std::vector<SceneLight>& lights, const RayTracer& t
   }
 }
 
-Spectrum SceneLamps::irradiance_from(size_t index, const Vec3& point) const {
+Irradiance SceneLamps::irradiance_from(size_t index, const Vec3& point) const {
   const Luminaire& luminaire = lamps_[index].light->luminaire;
   const Vec3 from_lamp = point - luminaire.position();
   const double d2 = dot(from_lamp, from_lamp);
-  if (!(d2 > 0)) return Spectrum(0.0f);
+  if (!(d2 > 0)) return Irradiance(0.0f);
   const double candela = luminaire.intensity(from_lamp);
-  if (!(candela > 0)) return Spectrum(0.0f);
-  Spectrum e = lamps_[index].light->spectrum_per_candela * static_cast<float>(candela / d2);
-  if (fog_) e *= fog_->transmittance(fog_->column_between(luminaire.position(), point));
+  if (!(candela > 0)) return Irradiance(0.0f);
+  Irradiance e(lamps_[index].light->spectrum_per_candela * static_cast<float>(candela / d2));
+  if (fog_) e *= Transmittance(fog_->transmittance(fog_->column_between(luminaire.position(), point)));
   return e;  // for the few lamps seen directly: no need to spare the exponentials
 }
 
-Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const {
+Radiance SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const {
   // Each lamp that sends light to the point at all is a candidate, with the radiance
   // (cd/m², mean over bins; the spectra are one candela per candela) it would reflect
   // toward the viewer unshadowed: its Lambertian part and its glossy highlight, which a
@@ -49,7 +49,7 @@ Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& materi
     double radiance;
   };
   const bool has_glossy = has_specular(material);
-  const Spectrum albedo = diffuse_albedo(material, dot(point.normal, to_viewer));
+  const Reflectance albedo = diffuse_albedo(material, dot(point.normal, to_viewer));
   double mean_albedo = 0;
   for (int b = 0; b < kSpectralBins; ++b) mean_albedo += albedo[b];
   mean_albedo /= kSpectralBins;
@@ -75,7 +75,8 @@ Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& materi
   double left = 0;
   for (const Candidate& c : candidates) left += c.radiance;
 
-  Spectrum irradiance, glossy;
+  Irradiance irradiance;
+  Radiance glossy;
   const Vec3 origin = offset_from_surface(point.position, point.normal);
   double found = 0;
   for (const Candidate& c : candidates) {
@@ -86,16 +87,17 @@ Spectrum SceneLamps::reflected(const SurfacePoint& point, const Material& materi
       if (tracer_.occluded(Ray{origin, c.l, 0.0, length(lamp - origin) * (1 - 1e-6)})) continue;
       found += c.radiance;
     }
-    Spectrum e = lamps_[c.lamp].light->spectrum_per_candela * static_cast<float>(c.scale);
-    if (fog_ && !fog_->is_grey()) e *= fog_->transmittance(fog_->column_between(position(c.lamp), point.position));
+    Irradiance e(lamps_[c.lamp].light->spectrum_per_candela * static_cast<float>(c.scale));
+    if (fog_ && !fog_->is_grey())
+      e *= Transmittance(fog_->transmittance(fog_->column_between(position(c.lamp), point.position)));
     irradiance += e * static_cast<float>(c.cos_in);
-    if (has_glossy) glossy += specular_reflection(material, point.normal, c.l, to_viewer) * e;
+    if (has_glossy) glossy += specular_reflection(material, point.normal, c.l, to_viewer).reflect(e);
   }
-  return albedo * irradiance * static_cast<float>(1.0 / kPi) + glossy;
+  return lambertian_radiance(albedo, irradiance) + glossy;
 }
 
-Spectrum SceneLamps::in_scattered(const Ray& ray, double distance) const {
-  Spectrum sum;
+Radiance SceneLamps::in_scattered(const Ray& ray, double distance) const {
+  Radiance sum;
   if (!fog_) return sum;
   const RaySpan span = fog_->clip(ray.origin.z, ray.direction.z, 0.0, distance);
   if (span.empty()) return sum;
@@ -105,7 +107,7 @@ Spectrum SceneLamps::in_scattered(const Ray& ray, double distance) const {
     lamp.glow->emitting_intervals(ray, span.lo, span.hi, emitting);
     if (emitting.empty()) continue;
     lamp.volumes->lit_intervals(ray, emitting.front().begin, emitting.back().end, lit);
-    if (!lit.empty()) sum += lamp.glow->along(ray, lit, emitting);
+    if (!lit.empty()) sum += Radiance(lamp.glow->along(ray, lit, emitting));
   }
   return sum;
 }

@@ -43,15 +43,15 @@ class SceneLamps {
   // unshadowed (Lambertian and glossy parts); the last ones, together under
   // kUntestedShare of what was found lit, are counted unshadowed, so the result is
   // exact or above it by less than that share (in the mean over bins).
-  Spectrum reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const;
+  Radiance reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const;
 
   // W m⁻² sr⁻¹ nm⁻¹ the fog scatters toward the ray's origin from all lamps, over
   // [0, distance] (distance may be infinite).
-  Spectrum in_scattered(const Ray& ray, double distance) const;
+  Radiance in_scattered(const Ray& ray, double distance) const;
 
   // A lamp's spectral irradiance (W m⁻² nm⁻¹) on a plane facing it at `point`, through
   // the fog but not checked for occlusion.
-  Spectrum irradiance_from(size_t lamp, const Vec3& point) const;
+  Irradiance irradiance_from(size_t lamp, const Vec3& point) const;
   size_t size() const { return lamps_.size(); }
   const Vec3& position(size_t lamp) const { return lamps_[lamp].light->luminaire.position(); }
 

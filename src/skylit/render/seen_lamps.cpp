@@ -22,7 +22,7 @@ void add_seen_lamps(const PreparedScene& scene, const PinholeCamera& camera, Fil
     const Vec3 direction = to_lamp / distance;
     if (scene.tracer().occluded(Ray{eye, direction, 0.0, distance * (1 - 1e-6)})) continue;
     const Irradiance irradiance =
-        Irradiance(lamps.irradiance_from(i, eye)) * scene.sky().aerial_perspective(direction, distance).transmittance;
+        lamps.irradiance_from(i, eye) * scene.sky().aerial_perspective(direction, distance).transmittance;
     film.add_point_source(x, y, irradiance, camera.pixel_solid_angle(x + 0.5, y + 0.5));
   }
 }

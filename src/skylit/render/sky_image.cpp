@@ -27,12 +27,12 @@ XyzImage render_sky(const SkyModel& sky, SkyProjection projection, int size) {
   XyzImage image(width, size);
   tbb::parallel_for(0, size, [&](int row) {
     for (int column = 0; column < width; ++column) {
-      Spectrum sum;
+      Radiance sum;
       for (int s = 0; s < 4; ++s) {
         const auto direction = sky_projection_direction(projection, size, column + 0.25 + 0.5 * (s % 2), row + 0.25 + 0.5 * (s / 2));
         if (direction) sum += sky.sky_radiance(*direction) + sky.sun_radiance(*direction);
       }
-      image.set(column, row, xyz_from_spectrum(sum * 0.25f));
+      image.set(column, row, xyz_from_spectrum((sum * 0.25f).spectrum()));
     }
   });
   return image;

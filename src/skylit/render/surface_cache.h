@@ -14,15 +14,15 @@
 #include <vector>
 
 #include "skylit/render/primary_hits.h"
-#include "skylit/spectrum/spectrum.h"
+#include "skylit/spectrum/radiometry.h"
 
 namespace skylit {
 
 // The sky's light at a surface point: its irradiance (for the Lambertian part) and the
 // radiance that the glossy part reflects toward the camera.
 struct CachedSkyLight {
-  Spectrum diffuse_irradiance;
-  Spectrum specular_radiance;
+  Irradiance diffuse_irradiance;
+  Radiance specular_radiance;
 };
 
 // Whether a cached point can stand in for `point`: the same material on the same plane

@@ -15,15 +15,15 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
 }
 
-Spectrum SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Spectrum& sky) const {
+Radiance SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const {
   const Ray ray{origin, direction};
   const std::optional<Hit> hit = tracer_.intersect(ray);
   return hit ? obstacle_radiance_(ray, *hit) : sky;
 }
 
-Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer,
+Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer,
                                      const Material& material) const {
-  if (!has_specular(material)) return Spectrum(0.0f);
+  if (!has_specular(material)) return Radiance(0.0f);
   const Vec3 origin = offset_from_surface(point, normal);
   // The bands' frame: axis a ⟂ n and ⟂ r; the element (α, δ) lies in direction
   // cos α·a + sin α (cos δ·r + sin δ·b), b = a × r. The mirror direction r is (90°, 0)
@@ -36,7 +36,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   const double beta = std::atan2(dot(normal, b), dot(normal, r));
   const double width = std::clamp(kSpecularElementPerRoughness * specular_roughness(material), radians(1.0), radians(5.0));
   const int half_segments = static_cast<int>(std::ceil(0.5 * kPi / width));  // along α, each way from 90°
-  Spectrum sum;
+  Radiance sum;
   double peak = 0;  // the largest G met: ε is relative to it
 
   // Element (band k, segment j): δ = k·width, α = 90° + j·width. Adds it when its G
@@ -50,7 +50,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   // and a wall seen head-on reflects exactly that part of the dome.
   auto sky_over = [&](double alpha, double delta, const Vec3& centre) {
     if (std::abs(centre.z) > 0.75 * width) return sky_.sky_radiance_near_ground(centre);
-    Spectrum mean;
+    Radiance mean;
     double total = 0;
     for (int u = 0; u < 4; ++u)
       for (int w = 0; w < 4; ++w) {
@@ -66,7 +66,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
     int k, j;
     double alpha, delta, solid_angle;
     Vec3 direction;
-    Spectrum sky;
+    Radiance sky;
   };
   std::vector<Element> found;
   auto visit = [&](int k, int j) {
@@ -76,7 +76,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
     const double solid_angle = std::sin(alpha) * width * width;
     const double weight = specular_weight(material, normal, l, to_viewer);
     if (weight <= 0) return 0.0;
-    const Spectrum sky = sky_over(alpha, delta, l);
+    const Radiance sky = sky_over(alpha, delta, l);
     const double g = luminance(sky) * weight * solid_angle;
     peak = std::max(peak, g);
     if (g >= kSpecularThreshold * peak) found.push_back({k, j, alpha, delta, solid_angle, l, sky});
@@ -108,7 +108,7 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   // building opposite blotchy from one surface point to the next.)
   std::map<std::pair<int, int>, size_t> index;
   for (size_t i = 0; i < found.size(); ++i) index[{found[i].k, found[i].j}] = i;
-  std::vector<std::optional<Spectrum>> obstacle(found.size());  // the obstacle's light, if hidden
+  std::vector<std::optional<Radiance>> obstacle(found.size());  // the obstacle's light, if hidden
   for (size_t i = 0; i < found.size(); ++i) {
     const Ray ray{origin, found[i].direction};
     if (const std::optional<Hit> hit = tracer_.intersect(ray)) obstacle[i] = obstacle_radiance_(ray, *hit);
@@ -120,9 +120,9 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
       const auto it = index.find({e.k + dk, e.j + dj});
       edge = edge || (it != index.end() && obstacle[it->second].has_value() != obstacle[i].has_value());
     }
-    Spectrum incoming_light = obstacle[i] ? *obstacle[i] : e.sky;
+    Radiance incoming_light = obstacle[i] ? *obstacle[i] : e.sky;
     if (edge) {
-      Spectrum mixed;
+      Radiance mixed;
       for (int u = -1; u <= 1; ++u)
         for (int w = -1; w <= 1; ++w) {
           const Ray ray{origin, direction_at(e.alpha + u * width / 3, e.delta + w * width / 3)};
@@ -131,14 +131,14 @@ Spectrum SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
         }
       incoming_light = mixed * (1.0f / 9.0f);
     }
-    sum += specular_reflection(material, normal, e.direction, to_viewer) * incoming_light *
-           static_cast<float>(e.solid_angle);
+    sum += specular_reflection(material, normal, e.direction, to_viewer).reflect(incoming_light, e.solid_angle);
   }
   return sum;
 }
 
-Spectrum SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) const {
-  Spectrum irradiance = sky_.sky_irradiance(normal);
+Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) const {
+  // Per bin: the hidden elements' radiance × cos dω changes the irradiance.
+  Spectrum irradiance = sky_.sky_irradiance(normal).spectrum();
   const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
   for (size_t i = 0; i < elements.size(); ++i) {
@@ -150,11 +150,11 @@ Spectrum SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) con
     if (!hit) continue;
     // Hidden: the element's sky leaves, the obstacle's light comes in its place.
     const float weight = static_cast<float>(cosine * e.solid_angle);
-    const Spectrum obstacle = obstacle_radiance_(ray, *hit);
+    const Radiance obstacle = obstacle_radiance_(ray, *hit);
     for (int k = 0; k < kSpectralBins; ++k)
       irradiance[k] = std::max(0.0f, irradiance[k] + weight * (obstacle[k] - element_radiance_[i][k]));
   }
-  return irradiance;
+  return Irradiance(irradiance);
 }
 
 double SkyLight::sky_view_factor(const Vec3& point, const Vec3& normal) const {

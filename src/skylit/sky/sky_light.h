@@ -23,7 +23,7 @@
 namespace skylit {
 
 // Radiance (W m⁻² sr⁻¹ nm⁻¹) that the obstacle hit by `ray` sends back along it.
-using ObstacleRadiance = std::function<Spectrum(const Ray& ray, const Hit& hit)>;
+using ObstacleRadiance = std::function<Radiance(const Ray& ray, const Hit& hit)>;
 
 class SkyLight {
  public:
@@ -46,7 +46,7 @@ class SkyLight {
 
   // Irradiance (W m⁻² nm⁻¹) on a surface at `point` with unit `normal` (facing the side
   // being lit), from the sky, the far ground, and the obstacles that hide them.
-  Spectrum diffuse_irradiance(const Vec3& point, const Vec3& normal) const;
+  Irradiance diffuse_irradiance(const Vec3& point, const Vec3& normal) const;
 
   // Radiance (W m⁻² sr⁻¹ nm⁻¹) that a glossy surface reflects toward `to_viewer` from the
   // sky and the obstacles that hide it, by the paper's adaptive search (§4.2): from the
@@ -61,7 +61,7 @@ class SkyLight {
   // the world's x axis put east- and west-facing walls seen head-on at the bands' pole,
   // where the search breaks down, and cut the lobe short at grazing views (errors of
   // 5 % and 84 % against the dense quadrature).
-  Spectrum specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer, const Material& material) const;
+  Radiance specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer, const Material& material) const;
 
   // The sky view factor at a point: the share of a cosine-weighted hemisphere that sees
   // the sky (z > 0) unobstructed. 1 for a horizontal surface in the open.
@@ -73,10 +73,10 @@ class SkyLight {
   const RayTracer& tracer_;
   ObstacleRadiance obstacle_radiance_;
   // The light arriving from an element's direction: the sky's, or the obstacle's.
-  Spectrum incoming(const Vec3& origin, const Vec3& direction, const Spectrum& sky) const;
+  Radiance incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const;
 
   std::vector<SkyElement> elements_;
-  std::vector<Spectrum> element_radiance_;  // the sky (or far ground) at each element
+  std::vector<Radiance> element_radiance_;  // the sky (or far ground) at each element
 };
 
 }  // namespace skylit

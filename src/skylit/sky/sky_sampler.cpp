@@ -30,7 +30,7 @@ int interval_of(const double* cdf, int size, double u) {
 }  // namespace
 
 SkySampler::SkySampler(const SkyModel& sky)
-    : SkySampler([&sky](const Vec3& direction) { return sky.sky_radiance_near_ground(direction); }) {}
+    : SkySampler([&sky](const Vec3& direction) { return sky.sky_radiance_near_ground(direction).spectrum(); }) {}
 
 SkySampler::SkySampler(const RadianceOf& radiance_of)
     : cell_probability_(kRows * kColumns), row_cdf_(kRows + 1, 0.0), column_cdf_((kColumns + 1) * kRows, 0.0) {

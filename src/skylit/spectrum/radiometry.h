@@ -9,7 +9,7 @@
 //
 // Only the products with a physical meaning exist: a radiance or irradiance times a
 // transmittance or reflectance keeps its unit; irradiance becomes radiance only through
-// a named conversion (lambertian_radiance, Brdf). Each type holds a Spectrum, read
+// a named conversion (lambertian_radiance, CosineWeightedBrdf). Each type holds a Spectrum, read
 // with spectrum() where generic code (colour, tables) needs the numbers.
 #pragma once
 
@@ -82,13 +82,17 @@ SpectralQuantity<Share>& operator*=(SpectralQuantity<Share>& a, const SpectralQu
   return a = a * b;
 }
 
-// A bidirectional reflectance distribution (sr⁻¹) for one pair of directions.
-struct Brdf {
+// A BRDF times the incidence cosine, f(l, v) (n·l) (sr⁻¹), for one pair of directions:
+// what turns light arriving from l into radiance leaving toward v. From a beam's
+// irradiance measured normal to it (the sun, a lamp): f cos θ_l E; from radiance L
+// arriving within a small solid angle dω: f cos θ_l L dω.
+struct CosineWeightedBrdf {
   Spectrum per_sr;
-  // Radiance reflected from irradiance E arriving normal to the beam at incidence cosine
-  // cos_incident: f · E · cos θ_i.
-  Radiance reflect(const Irradiance& normal_irradiance, double cos_incident) const {
-    return Radiance(per_sr * normal_irradiance.spectrum() * static_cast<float>(cos_incident));
+  Radiance reflect(const Irradiance& normal_irradiance) const {
+    return Radiance(per_sr * normal_irradiance.spectrum());
+  }
+  Radiance reflect(const Radiance& incoming, double solid_angle) const {
+    return Radiance(per_sr * incoming.spectrum() * static_cast<float>(solid_angle));
   }
 };
 
