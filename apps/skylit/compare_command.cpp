@@ -108,7 +108,7 @@ CommandRunner add_compare_command(CLI::App& app) {
       "Compare two renders of one view (e.g. the bands integrator against the path-traced reference) in absolute "
       "luminance: per region, the mean luminance of A and B (cd/m²), the ratio mean(B)/mean(A) with its standard "
       "error, and the per-pixel ratio's median, 5th and 95th percentiles (docs/validation.md).");
-  compare->add_option("a", args->a, "Image A, the reference side of the ratio (.exr or .pfm, as skylit writes them)")
+  compare->add_option("a", args->a, "Image A, the denominator of B/A (.exr or .pfm, as skylit writes them)")
       ->required();
   compare->add_option("b", args->b, "Image B, the same size (.exr or .pfm); ratios are B/A")->required();
   compare->add_option("--regions", args->regions_file,
