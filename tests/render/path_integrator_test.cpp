@@ -55,7 +55,7 @@ TEST(PathIntegrator, NonAbsorbingSceneInAWhiteFurnaceIsAsBrightAsItsSurroundings
   Scene scene = open_ground(1.0);
   scene.objects.push_back({"tower", make_box({-5, -5, 0}, {5, 5, 30}), 0});
   const PreparedScene prepared(scene);
-  const PathIntegrator furnace(prepared, UniformEnvironment{Spectrum(1.0f)});
+  const PathIntegrator furnace(prepared, TestEnvironment{Spectrum(1.0f), Spectrum(1.0f)});
   for (const Vec3& target : {Vec3{0, -5, 10}, Vec3{0, -6, 0.01}, Vec3{-3, -5.5, 0.2}, Vec3{20, 20, 0}}) {
     const Vec3 eye{3, -40, 8};
     const Estimate e = estimate(furnace, Ray{eye, normalize(target - eye)}, 20000,

@@ -32,14 +32,15 @@ PathIntegrator::PathIntegrator(const PreparedScene& scene) : scene_(scene), sky_
   }
 }
 
-PathIntegrator::PathIntegrator(const PreparedScene& scene, const UniformEnvironment& furnace)
+PathIntegrator::PathIntegrator(const PreparedScene& scene, const TestEnvironment& environment)
     : PathIntegrator(scene) {
-  furnace_ = furnace;
-  sky_sampler_ = SkySampler([&furnace](const Vec3&) { return furnace.radiance; });
+  test_environment_ = environment;
+  sky_sampler_ = SkySampler([this](const Vec3& direction) { return this->environment(direction).spectrum(); });
 }
 
 Radiance PathIntegrator::environment(const Vec3& direction) const {
-  return furnace_ ? Radiance(furnace_->radiance) : scene_.sky().sky_radiance_near_ground(direction);
+  if (test_environment_) return Radiance(direction.z > 0 ? test_environment_->above : test_environment_->below);
+  return scene_.sky().sky_radiance_near_ground(direction);
 }
 
 SurfacePoint PathIntegrator::surface_point(const Ray& ray, const Hit& hit) const {
@@ -75,7 +76,7 @@ Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
   Radiance light(0.0f);
   // The sun, a direction with the direct irradiance of the sky model at this height.
   const Vec3& to_sun = scene_.to_sun();
-  if (!furnace_ && faces(to_sun)) {
+  if (!test_environment_ && faces(to_sun)) {
     const Irradiance sun = sky.direct_sun(position.z);
     if (sun[kSpectralBins - 1] > 0.0f && !tracer.occluded(Ray{origin, to_sun})) {
       Irradiance reaching = sun;
@@ -137,7 +138,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
       throughput *= flight.weight;
       if (flight.scattered) {
         const Vec3 at = ray.origin + flight.distance * ray.direction;
-        if (event == 0 && !furnace_) camera_air = sky.aerial_perspective(ray.direction, flight.distance);
+        if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, flight.distance);
         const Vec3 to_viewer = -ray.direction;
         radiance += throughput * direct_light(at, Scatterer{nullptr, {}}, to_viewer, random).spectrum();
         const double u1 = random.uniform(), u2 = random.uniform();
@@ -155,8 +156,8 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
       }
     }
     if (!hit) {
-      if (event == 0 && furnace_) {
-        radiance += throughput * furnace_->radiance;
+      if (event == 0 && test_environment_) {
+        radiance += throughput * environment(ray.direction).spectrum();
         break;
       }
       if (event == 0) {
@@ -166,12 +167,12 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
       }
       Radiance arriving = environment(ray.direction);
       if (!delta) arriving *= static_cast<float>(power_heuristic(scatter_pdf, sky_sampler_.pdf(ray.direction)));
-      else if (!furnace_) arriving += sky.sun_radiance(ray.direction);
+      else if (!test_environment_) arriving += sky.sun_radiance(ray.direction);
       radiance += throughput * arriving.spectrum();
       break;
     }
     const SurfacePoint point = surface_point(ray, *hit);
-    if (event == 0 && !furnace_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
+    if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
     const Vec3 to_viewer = -ray.direction;
     const Material& material = scene_.material(point.material);
     radiance += throughput * direct_light(point.position, Scatterer{&material, point.normal}, to_viewer, random).spectrum();

@@ -33,17 +33,20 @@
 
 namespace skylit {
 
-// A light of uniform radiance from every direction, without the sun or the air: the
-// "white furnace" in which a closed or open scene of non-absorbing surfaces must look
-// exactly as bright as its surroundings (a test of energy bookkeeping).
-struct UniformEnvironment {
-  Spectrum radiance;
+// Light of a uniform radiance from above the horizon and another from below, without
+// the sun or the air, in place of the sky: for tests against independent solutions. The
+// "white furnace" (the same radiance everywhere), in which a scene of non-absorbing
+// surfaces must look exactly as bright as its surroundings; a slab of fog under a
+// uniform sky over a black ground, as adding–doubling solves it.
+struct TestEnvironment {
+  Spectrum above;
+  Spectrum below;
 };
 
 class PathIntegrator {
  public:
   explicit PathIntegrator(const PreparedScene& scene);
-  PathIntegrator(const PreparedScene& scene, const UniformEnvironment& furnace);
+  PathIntegrator(const PreparedScene& scene, const TestEnvironment& environment);
 
   // One path's estimate of the radiance arriving along a camera ray.
   Radiance sample(const Ray& camera_ray, CounterRandom& random) const;
@@ -70,11 +73,12 @@ class PathIntegrator {
   Transmittance fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const;
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
 
-  // The radiance arriving from a direction at a surface: the sky's, or the furnace's.
+  // The radiance arriving from a direction: the sky's (as surfaces near the ground
+  // receive it), or the test environment's.
   Radiance environment(const Vec3& direction) const;
 
   const PreparedScene& scene_;
-  std::optional<UniformEnvironment> furnace_;
+  std::optional<TestEnvironment> test_environment_;
   SkySampler sky_sampler_;
   std::unique_ptr<PhaseSampler> fog_phase_;  // with fog only
 };
