@@ -36,6 +36,8 @@ class CloudsInSky {
   // per bin (at most 2): how the clouds scale the sky light on surfaces.
   const Transmittance& sky_share() const { return sky_share_; }
 
+  const CloudLayer& layer() const { return layer_; }
+
  private:
   Transmittance measure_sky_share(const SkyModel& sky, const Vec3& ground_point) const;
 

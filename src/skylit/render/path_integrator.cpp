@@ -7,6 +7,8 @@
 
 #include "skylit/material/reflection.h"
 #include "skylit/material/reflection_sampling.h"
+#include "skylit/clouds/cloud_scattering.h"
+#include "skylit/clouds/cloud_tracking.h"
 #include "skylit/media/fog_free_flight.h"
 
 namespace skylit {
@@ -22,6 +24,8 @@ double mean(const Spectrum& s) {
 }
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// Shadow rays toward the sky end here: above any cloud (as in clouds/clouds_in_sky.cpp).
+constexpr double kSkyDistanceM = 1e7;
 
 }  // namespace
 
@@ -30,6 +34,7 @@ PathIntegrator::PathIntegrator(const PreparedScene& scene) : scene_(scene), sky_
     const FogLayer& layer = fog->layer();
     fog_phase_ = std::make_unique<PhaseSampler>([&layer](double c) { return layer.phase(c); });
   }
+  if (scene.clouds()) cloud_phase_ = std::make_unique<PhaseSampler>([](double c) { return cloud_phase(c); });
 }
 
 PathIntegrator::PathIntegrator(const PreparedScene& scene, const TestEnvironment& environment)
@@ -49,28 +54,38 @@ SurfacePoint PathIntegrator::surface_point(const Ray& ray, const Hit& hit) const
   return {ray.origin + hit.t * ray.direction, normal, hit.t, scene_.material_of_mesh(hit.mesh_id)};
 }
 
-Transmittance PathIntegrator::fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const {
-  if (!scene_.fog()) return Transmittance(1.0f);
-  return Transmittance(fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, distance));
+Transmittance PathIntegrator::media_transmittance(const Vec3& point, const Vec3& direction, double distance,
+                                                  CounterRandom& random) const {
+  Transmittance t(1.0f);
+  if (scene_.fog()) t = Transmittance(fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, distance));
+  if (scene_.clouds())
+    t *= static_cast<float>(estimate_cloud_transmittance(scene_.clouds()->layer(), point, direction,
+                                                          std::min(distance, kSkyDistanceM), random));
+  return t;
 }
 
 CosineWeightedBrdf PathIntegrator::scattering_cos(const Scatterer& scatterer, const Vec3& to_light,
                                                   const Vec3& to_viewer) const {
-  if (scatterer.material) return reflection_cos(*scatterer.material, scatterer.normal, to_light, to_viewer);
-  // In fog: the phase function per unit of scattering (the albedo is in the flight's weight).
-  return {Spectrum(static_cast<float>(scene_.fog()->layer().phase(dot(-to_viewer, to_light))))};
+  if (scatterer.kind == ScattererKind::surface)
+    return reflection_cos(*scatterer.material, scatterer.normal, to_light, to_viewer);
+  // In a medium: the phase function per unit of scattering (the albedo is in the
+  // collision's weight).
+  const double cos_theta = dot(-to_viewer, to_light);
+  const double phase = scatterer.kind == ScattererKind::fog ? scene_.fog()->layer().phase(cos_theta) : cloud_phase(cos_theta);
+  return {Spectrum(static_cast<float>(phase))};
 }
 
 double PathIntegrator::scattering_pdf(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const {
-  if (scatterer.material) return reflection_pdf(*scatterer.material, scatterer.normal, to_light, to_viewer);
-  return fog_phase_->pdf(dot(-to_viewer, to_light));
+  if (scatterer.kind == ScattererKind::surface)
+    return reflection_pdf(*scatterer.material, scatterer.normal, to_light, to_viewer);
+  return phase_sampler(scatterer.kind).pdf(dot(-to_viewer, to_light));
 }
 
 Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                                       CounterRandom& random) const {
   const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
-  const bool surface = scatterer.material != nullptr;
+  const bool surface = scatterer.kind == ScattererKind::surface;
   const Vec3 origin = surface ? offset_from_surface(position, scatterer.normal) : position;
   auto faces = [&](const Vec3& direction) { return !surface || dot(scatterer.normal, direction) > 0; };
   Radiance light(0.0f);
@@ -81,6 +96,8 @@ Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
     if (sun[kSpectralBins - 1] > 0.0f && !tracer.occluded(Ray{origin, to_sun})) {
       Irradiance reaching = sun;
       if (const FogMedium* fog = scene_.fog()) reaching *= fog->sun_transmittance(position);
+      if (const CloudsInSky* clouds = scene_.clouds())
+        reaching *= static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, to_sun, kSkyDistanceM, random));
       light += scattering_cos(scatterer, to_sun, to_viewer).reflect(reaching);
     }
   }
@@ -92,7 +109,7 @@ Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
     if (!f.per_sr.is_black() && !tracer.occluded(Ray{origin, s.direction})) {
       const double weight = power_heuristic(s.pdf, scattering_pdf(scatterer, s.direction, to_viewer));
       // One direction standing for the whole sphere: its radiance over its density.
-      light += f.reflect(environment(s.direction) * fog_transmittance_toward(position, s.direction, kInfinity),
+      light += f.reflect(environment(s.direction) * media_transmittance(position, s.direction, kInfinity, random),
                          weight / s.pdf);
     }
   }
@@ -106,9 +123,11 @@ Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
       if (!faces(direction)) continue;
       const CosineWeightedBrdf f = scattering_cos(scatterer, direction, to_viewer);
       if (f.per_sr.is_black()) continue;
-      const Irradiance irradiance = lamps->irradiance_from(i, position);
+      Irradiance irradiance = lamps->irradiance_from(i, position);
       if (irradiance.is_black()) continue;
       if (tracer.occluded(Ray{origin, direction, 0.0, distance * (1 - 1e-6)})) continue;
+      if (const CloudsInSky* clouds = scene_.clouds())
+        irradiance *= static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, direction, distance, random));
       light += f.reflect(irradiance);
     }
   }
@@ -119,6 +138,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
   const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
   const FogLayer* fog = scene_.fog() ? &scene_.fog()->layer() : nullptr;
+  const CloudLayer* clouds = scene_.clouds() ? &scene_.clouds()->layer() : nullptr;
   // The light gathered so far, and what the path's next light will be multiplied by.
   Spectrum radiance(0.0f), throughput(1.0f);
   Ray ray = camera_ray;
@@ -132,28 +152,43 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
   for (int event = 0; event < kMaxEvents; ++event) {
     const std::optional<Hit> hit = tracer.intersect(ray);
     const double t_hit = hit ? hit->t : kInfinity;
+    // The media: a cloud's collision first (it bounds how far the fog's flight may go),
+    // then the fog's; the nearer event is where the path scatters.
+    CloudCollision cloud;
+    if (clouds) cloud = sample_cloud_collision(*clouds, ray.origin, ray.direction, std::min(t_hit, kSkyDistanceM), random);
+    std::optional<double> medium_event;
+    ScattererKind medium_kind = ScattererKind::cloud;
+    if (cloud.collided) {
+      throughput *= static_cast<float>(cloud.albedo);
+      medium_event = cloud.distance;
+    }
     if (fog) {
       const double u_bin = random.uniform(), u_depth = random.uniform();
-      const FogFlight flight = sample_fog_flight(*fog, ray, t_hit, u_bin, u_depth);
+      const FogFlight flight = sample_fog_flight(*fog, ray, medium_event ? *medium_event : t_hit, u_bin, u_depth);
       throughput *= flight.weight;
       if (flight.scattered) {
-        const Vec3 at = ray.origin + flight.distance * ray.direction;
-        if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, flight.distance);
-        const Vec3 to_viewer = -ray.direction;
-        radiance += throughput * direct_light(at, Scatterer{nullptr, {}}, to_viewer, random).spectrum();
-        const double u1 = random.uniform(), u2 = random.uniform();
-        const PhaseSampler::Sample next = fog_phase_->sample(ray.direction, u1, u2);
-        throughput *= static_cast<float>(fog->phase(dot(ray.direction, next.direction)) / next.pdf);
-        delta = false;
-        scatter_pdf = next.pdf;
-        ray = Ray{at, next.direction};
-        if (event >= 3) {
-          const double survive = std::min(0.95, mean(throughput));
-          if (random.uniform() >= survive) break;
-          throughput *= static_cast<float>(1.0 / survive);
-        }
-        continue;
+        if (cloud.collided) throughput *= static_cast<float>(1.0 / cloud.albedo);  // the cloud did not scatter
+        medium_event = flight.distance;
+        medium_kind = ScattererKind::fog;
       }
+    }
+    if (medium_event) {
+      const Vec3 at = ray.origin + *medium_event * ray.direction;
+      if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, *medium_event);
+      const Vec3 to_viewer = -ray.direction;
+      radiance += throughput * direct_light(at, Scatterer{medium_kind}, to_viewer, random).spectrum();
+      const double u1 = random.uniform(), u2 = random.uniform();
+      const PhaseSampler::Sample next = phase_sampler(medium_kind).sample(ray.direction, u1, u2);
+      throughput *= scattering_cos(Scatterer{medium_kind}, next.direction, to_viewer).per_sr * static_cast<float>(1.0 / next.pdf);
+      delta = false;
+      scatter_pdf = next.pdf;
+      ray = Ray{at, next.direction};
+      if (event >= 3) {
+        const double survive = std::min(0.95, mean(throughput));
+        if (random.uniform() >= survive) break;
+        throughput *= static_cast<float>(1.0 / survive);
+      }
+      continue;
     }
     if (!hit) {
       if (event == 0 && test_environment_) {
@@ -175,7 +210,8 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
     const Vec3 to_viewer = -ray.direction;
     const Material& material = scene_.material(point.material);
-    radiance += throughput * direct_light(point.position, Scatterer{&material, point.normal}, to_viewer, random).spectrum();
+    radiance += throughput * direct_light(point.position, Scatterer{ScattererKind::surface, &material, point.normal},
+                                          to_viewer, random).spectrum();
     const double u0 = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
     const std::optional<ReflectionSample> next = sample_reflection(material, point.normal, to_viewer, u0, u1, u2);
     if (!next || next->weight.is_black() || dot(next->to_light, point.normal) <= 0) break;

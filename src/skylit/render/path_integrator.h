@@ -7,8 +7,10 @@
 // A path carries all spectral bins at once (the materials and the air are what make
 // light spectral; nothing here changes a path's direction by wavelength). In fog it
 // scatters where free-flight sampling in the layer's density puts it
-// (media/fog_free_flight.h), in directions drawn from the fog's phase function
-// (media/phase_sampler.h), as often as it takes: full multiple scattering. At each
+// (media/fog_free_flight.h), in clouds where delta tracking against their exact solids
+// does (clouds/cloud_tracking.h), in directions drawn from each medium's phase function
+// (media/phase_sampler.h), as often as it takes: full multiple scattering. Shadow rays
+// cross the clouds by ratio tracking, the fog by its closed-form transmittance. At each
 // surface and each scattering event it takes next-event estimates of the sun (a directional source of the sky
 // model's direct irradiance at the point's height, as the fast path), of the sky (drawn
 // by sky/sky_sampler.h and weighed against the material's own sampling by the power
@@ -18,7 +20,6 @@
 // camera's ray crosses the air as in the fast path (aerial perspective from its
 // tables); the sun's disc is seen where a camera ray or a mirror's reflection meets it.
 //
-// Not yet: clouds as a participating medium (scenes with clouds are refused).
 #pragma once
 
 #include <memory>
@@ -57,11 +58,13 @@ class PathIntegrator {
   static constexpr int kMaxEvents = 100000;
 
  private:
-  // How a point scatters light toward the viewer: a surface's reflection, or the fog's
-  // phase function at a point in it (`point.normal` unused).
+  // How a point scatters light toward the viewer: a surface's reflection, or the phase
+  // function of the fog or a cloud at a point in it.
+  enum class ScattererKind { surface, fog, cloud };
   struct Scatterer {
-    const Material* material;  // null: the fog
-    Vec3 normal;
+    ScattererKind kind;
+    const Material* material = nullptr;  // for a surface
+    Vec3 normal{};                       // for a surface
   };
   // The light a surface or fog point sends toward `to_viewer` directly from the sun,
   // the sky (weighed against the point's own sampling) and the lamps.
@@ -69,8 +72,13 @@ class PathIntegrator {
                         CounterRandom& random) const;
   CosineWeightedBrdf scattering_cos(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
   double scattering_pdf(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
-  // The fog's transmittance from a point toward a direction, to `distance` (1 without fog).
-  Transmittance fog_transmittance_toward(const Vec3& point, const Vec3& direction, double distance) const;
+  // The transmittance of the fog and the clouds from a point toward a direction, to
+  // `distance` (the clouds' by an unbiased estimate).
+  Transmittance media_transmittance(const Vec3& point, const Vec3& direction, double distance,
+                                    CounterRandom& random) const;
+  const PhaseSampler& phase_sampler(ScattererKind kind) const {
+    return kind == ScattererKind::fog ? *fog_phase_ : *cloud_phase_;
+  }
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
 
   // The radiance arriving from a direction: the sky's (as surfaces near the ground
@@ -80,7 +88,8 @@ class PathIntegrator {
   const PreparedScene& scene_;
   std::optional<TestEnvironment> test_environment_;
   SkySampler sky_sampler_;
-  std::unique_ptr<PhaseSampler> fog_phase_;  // with fog only
+  std::unique_ptr<PhaseSampler> fog_phase_;    // with fog only
+  std::unique_ptr<PhaseSampler> cloud_phase_;  // with clouds only
 };
 
 }  // namespace skylit

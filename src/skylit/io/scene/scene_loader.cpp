@@ -70,11 +70,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   scene.materials = read_materials(root.required("materials"));
   scene.objects = read_objects(root.required("objects"), scene.materials, base_dir);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
-  if (auto render = root.optional("render")) {
-    scene.render = read_render(*render);
-    if (scene.render.integrator == Integrator::path && (!scene.clouds.empty() || scene.cloud_layer))
-      render->required("integrator").fail("the path integrator does not yet trace clouds; use \"bands\"");
-  }
+  if (auto render = root.optional("render")) scene.render = read_render(*render);
   return scene;
 }
 

@@ -1,0 +1,95 @@
+#include "skylit/clouds/cloud_tracking.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace skylit {
+
+namespace {
+
+// The ray's pieces between the bounding volumes' entries and exits, each with the
+// clouds that cover it and their summed extinction (the majorant there).
+struct Piece {
+  double begin, end, majorant;
+  std::vector<const Cloud*> clouds;
+};
+
+std::vector<Piece> pieces_of(const CloudLayer& layer, const Vec3& o, const Vec3& d, double t_end) {
+  const std::vector<CloudLayer::Crossing> crossings = layer.crossings(o, d, 0.0, t_end);
+  std::vector<double> cuts;
+  for (const CloudLayer::Crossing& c : crossings) {
+    cuts.push_back(std::clamp(c.t_enter, 0.0, t_end));
+    cuts.push_back(std::clamp(c.t_exit, 0.0, t_end));
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::vector<Piece> pieces;
+  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+    Piece piece{cuts[i], cuts[i + 1], 0.0, {}};
+    const double middle = 0.5 * (piece.begin + piece.end);
+    for (const CloudLayer::Crossing& c : crossings) {
+      const Cloud& cloud = layer.clouds()[c.index];
+      if (c.t_enter <= middle && middle <= c.t_exit && cloud.shape().extinction > 0) {
+        piece.clouds.push_back(&cloud);
+        piece.majorant += cloud.shape().extinction;
+      }
+    }
+    if (piece.majorant > 0) pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+// The extinction at p (m⁻¹): the clouds of the piece whose solid holds it.
+double extinction_at(const Piece& piece, const Vec3& p, const Cloud** which, double pick) {
+  double sum = 0;
+  for (const Cloud* c : piece.clouds)
+    if (c->contains(p)) sum += c->shape().extinction;
+  if (which) {
+    // The cloud that scattered, chosen in proportion to its share of the extinction.
+    double running = 0;
+    for (const Cloud* c : piece.clouds)
+      if (c->contains(p)) {
+        running += c->shape().extinction;
+        if (pick * sum < running) {
+          *which = c;
+          break;
+        }
+      }
+  }
+  return sum;
+}
+
+}  // namespace
+
+CloudCollision sample_cloud_collision(const CloudLayer& layer, const Vec3& o, const Vec3& d, double t_end,
+                                      CounterRandom& random) {
+  for (const Piece& piece : pieces_of(layer, o, d, t_end)) {
+    double t = piece.begin;
+    while (true) {
+      t -= std::log1p(-random.uniform()) / piece.majorant;
+      if (t >= piece.end) break;
+      const Vec3 p = o + t * d;
+      const Cloud* which = nullptr;
+      const double sigma = extinction_at(piece, p, &which, random.uniform());
+      if (random.uniform() * piece.majorant < sigma) return {true, t, which ? which->shape().albedo : 1.0};
+    }
+  }
+  return {};
+}
+
+double estimate_cloud_transmittance(const CloudLayer& layer, const Vec3& o, const Vec3& d, double t_end,
+                                    CounterRandom& random) {
+  double transmittance = 1;
+  for (const Piece& piece : pieces_of(layer, o, d, t_end)) {
+    double t = piece.begin;
+    while (transmittance > 0) {
+      t -= std::log1p(-random.uniform()) / piece.majorant;
+      if (t >= piece.end) break;
+      transmittance *= 1 - extinction_at(piece, o + t * d, nullptr, 0) / piece.majorant;
+    }
+  }
+  return transmittance;
+}
+
+}  // namespace skylit
