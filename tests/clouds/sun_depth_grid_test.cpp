@@ -51,7 +51,7 @@ TEST(CloudSunGrid, InterpolatedDepthMatchesMarching) {
   }
 }
 
-TEST(CloudSunGrid, ScatterWithGridMatchesMarchingAndIsFaster) {
+TEST(CloudSunGrid, ScatterWithGridMatchesMarching) {
   Cloud c(wavy_cloud());
   const CloudShape& s = c.shape();
   const Vec3 eye{s.center_x - 3000, s.center_y - 2000, 0};
@@ -64,18 +64,10 @@ TEST(CloudSunGrid, ScatterWithGridMatchesMarchingAndIsFaster) {
                                              s.altitude) - eye));
     c.clear_sun();
     std::vector<float> marched;
-    const auto m0 = std::chrono::steady_clock::now();
     for (const Vec3& d : dirs) marched.push_back(total(c.scatter(eye, d, 0, kInf, light).in_scattered));
-    const double march_us =
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - m0).count() / dirs.size();
-    const auto b0 = std::chrono::steady_clock::now();
     c.prepare_sun(light.to_sun);
-    const double build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - b0).count();
     std::vector<float> gridded;
-    const auto g0 = std::chrono::steady_clock::now();
     for (const Vec3& d : dirs) gridded.push_back(total(c.scatter(eye, d, 0, kInf, light).in_scattered));
-    const double grid_us =
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - g0).count() / dirs.size();
     double max_rel = 0, sum_rel = 0, peak = 0;
     for (float m : marched) peak = std::max(peak, static_cast<double>(m));
     int n = 0;
@@ -86,14 +78,13 @@ TEST(CloudSunGrid, ScatterWithGridMatchesMarchingAndIsFaster) {
       sum_rel += rel;
       ++n;
     }
-    std::printf("sun elev %.0f: scatter %.1f us/ray marched, %.1f us/ray gridded (x%.0f), grid %.1f ms; "
-                "in-scattered rel. error mean %.4f max %.4f over %d rays\n",
-                elev, march_us, grid_us, march_us / grid_us, build_ms, sum_rel / n, max_rel, n);
+    // (The grid's speed-up is measured by the benchmark, not here: docs/clouds.md.)
+    std::printf("sun elev %.0f: in-scattered rel. error of the grid mean %.4f max %.4f over %d rays\n", elev,
+                sum_rel / n, max_rel, n);
     EXPECT_GT(n, 200);
     // Tolerances from the measured errors (docs/clouds.md) with ~1.5x margin.
     EXPECT_LT(sum_rel / n, elev > 40 ? 0.015 : 0.05) << elev;
     EXPECT_LT(max_rel, elev > 40 ? 0.08 : 0.4) << elev;
-    EXPECT_LT(grid_us, march_us);
   }
   // A layer forwards to its clouds.
   CloudLayer layer({Cloud(wavy_cloud())});
