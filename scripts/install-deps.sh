@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  g++ cmake make pkg-config
+  g++ cmake make pkg-config clang-tidy
   libembree-dev libtbb-dev libopenexr-dev libpng-dev
   nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev libcli11-dev
   libgtest-dev libbenchmark-dev

@@ -60,7 +60,9 @@ TEST(PlotTicks, AxesNeverDegenerate) {
         const AxisScale a = axis_for_data(lo, hi, pad, zero);
         EXPECT_TRUE(std::isfinite(a.lo) && std::isfinite(a.hi)) << lo;
         EXPECT_LT(a.lo, a.hi) << lo;
-        if (std::isfinite(lo)) EXPECT_TRUE(a.lo <= lo && lo <= a.hi) << lo;
+        if (std::isfinite(lo)) {  // braces: EXPECT_* expands to an if/else
+          EXPECT_TRUE(a.lo <= lo && lo <= a.hi) << lo;
+        }
       }
   // A y axis over 0–1.83 is widened to its ticks: 0–2 by 0.5.
   const AxisScale y = axis_for_data(0.02, 1.83, true, true);

@@ -130,7 +130,7 @@ TEST(EulumdatReader, MalformedFilesNameFileAndLine) {
   // Bad symmetry indicator and counts.
   {
     std::string t = good;
-    t.replace(t.find("\n4\n4\n") + 1, 1, "7");
+    t[t.find("\n4\n4\n") + 1] = '7';
     EXPECT_NE(message_of(t).find("lum.ldt:3: expected the symmetry indicator"), std::string::npos);
   }
   {

@@ -122,7 +122,7 @@ TEST(IesReader, ReadsOlderHeaderForms) {
   EXPECT_DOUBLE_EQ(b.rated_lumens(), -1);  // absolute photometry
   // CRLF line ends.
   std::string crlf = kIsotropic2002;
-  for (std::size_t p = crlf.find('\n'); p != std::string::npos; p = crlf.find('\n', p + 2)) crlf.insert(p, "\r");
+  for (std::size_t p = crlf.find('\n'); p != std::string::npos; p = crlf.find('\n', p + 2)) crlf.insert(p, 1, '\r');
   EXPECT_NEAR(parse_ies(crlf, "crlf.ies").distribution.candela(0, 0), 79.5775, 1e-9);
 }
 

@@ -67,7 +67,9 @@ TEST(CookTorrance, WhiteFurnaceDirectionalAlbedoIsAtMostOne) {
       std::printf(" %.4f", a);
       EXPECT_LE(a, 1.0 + 2e-3) << "m = " << m << ", view " << view_deg << "°";
       EXPECT_GT(a, 0.3) << "m = " << m << ", view " << view_deg << "°";
-      if (m <= 0.1 && view_deg == 0.0) EXPECT_GE(a, 0.99) << "m = " << m;
+      if (m <= 0.1 && view_deg == 0.0) {  // braces: EXPECT_* expands to an if/else
+        EXPECT_GE(a, 0.99) << "m = " << m;
+      }
     }
     std::printf("\n");
   }

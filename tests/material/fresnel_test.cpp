@@ -73,7 +73,7 @@ TEST(Fresnel, TotalInternalReflectionBeyondTheCriticalAngle) {
 }
 
 TEST(Fresnel, ComplexFormMatchesTheClassicConductorFormula) {
-  for (const auto nk : {std::pair{1.0, 6.6}, std::pair{0.5, 2.0}, std::pair{2.7, 8.4}, std::pair{1.5, 1e-7}})
+  for (const auto& nk : {std::pair{1.0, 6.6}, std::pair{0.5, 2.0}, std::pair{2.7, 8.4}, std::pair{1.5, 1e-7}})
     for (double deg = 0; deg <= 90; deg += 2.5) {
       const double c = std::cos(radians(deg));
       EXPECT_NEAR(fresnel_reflectance(c, {nk.first, nk.second}), classic_conductor(c, nk.first, nk.second), 1e-9)

@@ -20,7 +20,7 @@ TriangleMesh make_box(Vec3 min, Vec3 max) {
   TriangleMesh mesh;
   // Vertex i has x from bit 0, y from bit 1, z from bit 2 (0 = min, 1 = max).
   for (int i = 0; i < 8; ++i)
-    mesh.vertices.push_back({(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z});
+    mesh.vertices.emplace_back((i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z);
   // Two triangles per face, counter-clockwise seen from outside.
   mesh.triangles = {
       {0, 4, 6}, {0, 6, 2},  // -x

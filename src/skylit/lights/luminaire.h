@@ -22,7 +22,7 @@ class Luminaire {
   // multipliers, evaluated at the angle between the aim and straight down.
   // Throws std::invalid_argument for a zero or non-finite aim.
   Luminaire(Vec3 position, IntensityDistribution distribution, Vec3 aim = {0, 0, -1}, double rotation_deg = 0,
-            TiltTable tilt = {});
+            const TiltTable& tilt = {});
 
   const Vec3& position() const { return position_; }
   const Vec3& aim() const { return nadir_; }

@@ -129,11 +129,8 @@ OffsetDateTime parse_offset_date_time(std::string_view text, std::string_view wh
     in.expect(sign);
     const int offset_hours = in.digits(2);
     int offset_minutes = 0;
-    if (in.accept(':')) {
-      offset_minutes = in.digits(2);
-    } else if (!in.at_end()) {
-      offset_minutes = in.digits(2);
-    }
+    // Minutes after a colon (required then), or straight after the hours, or none.
+    if (in.accept(':') || !in.at_end()) offset_minutes = in.digits(2);
     if (offset_minutes > 59 || offset_hours * 60 + offset_minutes > 18 * 60)
       in.fail("the UTC offset in " + quoted(text) + " is not a clock offset from -18:00 to +18:00");
     t.utc_offset_minutes = (sign == '-' ? -1 : 1) * (offset_hours * 60 + offset_minutes);

@@ -91,7 +91,9 @@ Raster render_plot_png(const Plot& plot) {
               TextDirection::up);
 
   for (const LegendItem& item : layout.legend) {
-    const double swatch_y = item.y + text_height() / 2 + 0.5;
+    // The centre of the text's middle pixel row (integer division on purpose).
+    const int middle_row = item.y + text_height() / 2;
+    const double swatch_y = middle_row + 0.5;
     draw_line(raster, {item.x + 0.5, swatch_y}, {item.x + kLegendSwatch - 0.5, swatch_y}, item.colour,
               kSeriesLineWidth);
     draw_text(raster, item.x + kLegendSwatch + 8, item.y, item.text, kBlack);

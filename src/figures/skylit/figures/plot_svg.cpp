@@ -189,7 +189,9 @@ std::string render_plot_svg(const Plot& plot) {
   if (layout.has_y2) svg += turned_text(layout.y2_label_x, middle_y, plot.y2_label);
 
   for (const LegendItem& item : layout.legend) {
-    const double y = item.y + text_height() / 2 + 0.5;
+    // The centre of the text's middle pixel row (integer division on purpose).
+    const int middle_row = item.y + text_height() / 2;
+    const double y = middle_row + 0.5;
     svg += "<line x1=\"" + num(item.x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(item.x + kLegendSwatch) + "\" y2=\"" +
            num(y) + "\" stroke=\"" + hex(item.colour) + "\" stroke-width=\"" + num(kSeriesLineWidth) + "\"/>\n";
     svg += text_element(item.x + kLegendSwatch + 8, item.y, item.text, 1, "start");

@@ -162,7 +162,7 @@ class GltfReader {
     const AccessorView p = view(position->second, "POSITION");
     if (p.components != 3) fail("POSITION accessor is not VEC3");
     mesh.vertices.reserve(p.count);
-    for (size_t i = 0; i < p.count; ++i) mesh.vertices.push_back({p.get(i, 0), p.get(i, 1), p.get(i, 2)});
+    for (size_t i = 0; i < p.count; ++i) mesh.vertices.emplace_back(p.get(i, 0), p.get(i, 1), p.get(i, 2));
 
     std::vector<uint32_t> indices;
     if (primitive.indices >= 0) {

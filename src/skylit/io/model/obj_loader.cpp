@@ -52,7 +52,7 @@ std::vector<Vec3> read_positions(const std::string& text, const std::string& nam
                          ": a vertex needs three finite numbers: " + std::string(p, stop).substr(0, 40));
       p = next;
     }
-    positions.push_back({xyz[0], xyz[1], xyz[2]});
+    positions.emplace_back(xyz[0], xyz[1], xyz[2]);
   }
   return positions;
 }
@@ -89,7 +89,7 @@ TriangleMesh load_obj_file(const std::filesystem::path& path) {
   const auto& floats = reader.GetAttrib().vertices;
   if (mesh.vertices.size() != floats.size() / 3) {
     mesh.vertices.clear();
-    for (size_t i = 0; i + 2 < floats.size(); i += 3) mesh.vertices.push_back({floats[i], floats[i + 1], floats[i + 2]});
+    for (size_t i = 0; i + 2 < floats.size(); i += 3) mesh.vertices.emplace_back(floats[i], floats[i + 1], floats[i + 2]);
   }
 
   const auto vertex = [&](const tinyobj::index_t& index) {

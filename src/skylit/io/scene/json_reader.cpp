@@ -119,7 +119,7 @@ std::string JsonReader::string() const {
 
 std::string JsonReader::one_of(std::initializer_list<std::string_view> words) const {
   if (value_->is_string()) {
-    const std::string s = value_->get<std::string>();
+    std::string s = value_->get<std::string>();  // not const: returned by move
     for (std::string_view w : words)
       if (w == s) return s;
   }

@@ -99,7 +99,7 @@ SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir
   } catch (const std::invalid_argument& e) {
     j.required("lamp").fail(e.what());
   }
-  return {name, Luminaire(position, std::move(photometry.distribution), aim, rotation, std::move(photometry.tilt)),
+  return {name, Luminaire(position, std::move(photometry.distribution), aim, rotation, photometry.tilt),
           spectrum};
 }
 

@@ -107,6 +107,7 @@ ComplexIor read_metal_constants(const JsonReader& j) {
     std::vector<double> out;
     if (e.size() != wavelengths.size())
       c.fail("needs as many values as wavelength_nm has (" + std::to_string(wavelengths.size()) + ")");
+    out.reserve(e.size());
     for (const JsonReader& v : e) out.push_back(v.number_in(lo, hi));
     return out;
   };

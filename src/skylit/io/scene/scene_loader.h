@@ -6,8 +6,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "skylit/scene/scene.h"
 
 namespace skylit {
@@ -15,10 +13,5 @@ namespace skylit {
 // Reads, applies `overrides` (`path=value`, see scene_overrides.h), validates.
 // Every problem a user can cause is an InputError naming the file and the place.
 Scene load_scene(const std::filesystem::path& scene_file, const std::vector<std::string>& overrides = {});
-
-// The same from a parsed document; `base_dir` resolves mesh paths, `source` names
-// the document in messages.
-Scene scene_from_json(const nlohmann::json& document, const std::string& source,
-                      const std::filesystem::path& base_dir);
 
 }  // namespace skylit
