@@ -58,6 +58,15 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
+// A path in single quotes for the shell. Built by appending: `"'" + p.string()` trips
+// GCC 12's false -Wrestrict (GCC bug 105329).
+inline std::string quoted(const std::filesystem::path& p) {
+  std::string text = "'";
+  text += p.string();
+  text += '\'';
+  return text;
+}
+
 // Runs the built program with the given arguments (already shell-quoted).
 inline CommandResult run_skylit(const std::string& arguments) {
   const std::string command = std::string("'") + SKYLIT_CLI_PATH + "' " + arguments + " 2>&1";

@@ -19,10 +19,9 @@
 namespace skylit {
 namespace {
 
+using testing::quoted;
 using testing::run_skylit;
 using testing::TempDir;
-
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
 // A `width` × 2 image of D65 greys: luminance by column (cd/m²), the same in both rows.
 XyzImage columns_of_greys(const std::vector<double>& luminances) {

@@ -14,16 +14,9 @@
 namespace skylit {
 namespace {
 
+using testing::quoted;
 using testing::run_skylit;
 using testing::TempDir;
-
-// Built by appending: `"'" + p.string()` trips GCC 12's false -Wrestrict (GCC bug 105329).
-std::string quoted(const std::filesystem::path& p) {
-  std::string text = "'";
-  text += p.string();
-  text += '\'';
-  return text;
-}
 
 std::set<std::string> files_in(const std::filesystem::path& dir) {
   std::set<std::string> names;

@@ -66,6 +66,7 @@ namespace skylit {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::quoted;
 
 const fs::path kExamples = fs::path(SKYLIT_SOURCE_DIR) / "examples";
 const fs::path kReferences = fs::path(SKYLIT_SOURCE_DIR) / "tests" / "reference_images";
@@ -207,8 +208,6 @@ std::vector<std::string> example_names() {
   return names;
 }
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-
 class ReferenceImage : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ReferenceImage, RendersAsBefore) {
@@ -263,10 +262,11 @@ TEST(ReferenceImages, EveryExampleHasOneAndEveryOneAnExample) {
   for (const std::string& name : examples)
     EXPECT_TRUE(fs::exists(kReferences / (name + ".exr")))
         << "examples/" << name << ".json has no reference image; run scripts/make-reference-images.sh";
-  for (const auto& entry : fs::directory_iterator(kReferences))
-    if (entry.path().extension() == ".exr")
-      EXPECT_TRUE(fs::exists(kExamples / (entry.path().stem().string() + ".json")))
-          << entry.path().string() << " is the reference of no example; remove it";
+  for (const auto& entry : fs::directory_iterator(kReferences)) {
+    if (entry.path().extension() != ".exr") continue;
+    EXPECT_TRUE(fs::exists(kExamples / (entry.path().stem().string() + ".json")))
+        << entry.path().string() << " is the reference of no example; remove it";
+  }
 }
 
 // The comparison itself: it passes a copy and rounding, and rejects the changes it must.
