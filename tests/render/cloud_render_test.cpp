@@ -38,7 +38,8 @@ double luminance_toward(const Renderer& renderer, const Vec3& target) {
 TEST(CloudRender, EdgeOutshinesCentreWithTheSunBehindTheCloud) {
   // The camera under the cloud's centre looks up; the sun (35°) is beyond the cloud's
   // north edge, so light scattered forward through the thin edge reaches the camera.
-  const Renderer renderer(cloud_scene(0.0));
+  const Scene scene = cloud_scene(0.0);  // the renderer keeps a reference: not a temporary
+  const Renderer renderer(scene);
   const double centre = luminance_toward(renderer, {0, 0, 1000});
   const double north_edge = luminance_toward(renderer, {0, 480, 1000});
   EXPECT_GT(north_edge, 1.5 * centre) << north_edge << " vs " << centre;
@@ -60,7 +61,8 @@ TEST(CloudRender, SunlitSideIsBrighterWithTheSunBehindTheCamera) {
 TEST(CloudRender, ShadowLandsWhereTheGeometrySays) {
   // Sun at 35° from due south: the cloud (1000 m up) shades the ground 1000/tan 35° =
   // 1428 m north of its centre, a disc of radius 500 m around (0, 1428).
-  const Renderer renderer(cloud_scene(180.0));
+  const Scene scene = cloud_scene(180.0);
+  const Renderer renderer(scene);
   auto ground = [&](double y) {
     uint64_t rays = 0;
     return luminance(renderer.radiance(Ray{{0, y, 50}, {0, 0, -1}}, rays));

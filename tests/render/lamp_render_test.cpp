@@ -61,7 +61,8 @@ TEST(LampRender, AnObjectBetweenLampAndGroundCastsAShadow) {
   scene.materials.push_back({"board", DiffuseMaterial{Spectrum(0.3f)}});
   scene.objects.push_back({"board", make_box({3, -1, 2}, {5, 1, 2.2}), 1});  // over x ≈ 4–8 m on the ground
   const Renderer renderer(scene);
-  const Renderer open(night_scene());
+  const Scene open_scene = night_scene();  // the renderer keeps a reference: not a temporary
+  const Renderer open(open_scene);
   EXPECT_LT(ground_luminance(renderer, 6.0), 1e-3 * ground_luminance(open, 6.0));   // in the shadow
   EXPECT_NEAR(ground_luminance(renderer, 12.0), ground_luminance(open, 12.0), 1e-6);  // beyond it
   EXPECT_NEAR(ground_luminance(renderer, 1.0), ground_luminance(open, 1.0), 1e-6);    // before it

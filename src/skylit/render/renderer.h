@@ -40,6 +40,7 @@ class Renderer {
  public:
   // Builds the acceleration structure and the atmosphere's tables for the scene.
   explicit Renderer(const Scene& scene);
+  Renderer(Scene&&) = delete;  // keeps a reference to the scene: it must outlive the renderer
 
   const SkyModel& sky() const { return sky_; }
   const SkyLight& sky_light() const { return *sky_light_; }
