@@ -43,13 +43,13 @@ TEST(Preset, EveryPresetLoadsByName) {
 }
 
 TEST(Preset, ValuesAreTheDocumentedOnes) {
-  const auto& aluminium = std::get<CookTorranceMaterial>(read_one("\"aluminium\""));
+  const auto aluminium = std::get<CookTorranceMaterial>(read_one("\"aluminium\""));
   EXPECT_DOUBLE_EQ(aluminium.roughness(), 0.15);
   EXPECT_TRUE(aluminium.ior().is_conductor());
-  const auto& tile = std::get<CookTorranceMaterial>(read_one("\"tile\""));
+  const auto tile = std::get<CookTorranceMaterial>(read_one("\"tile\""));
   EXPECT_DOUBLE_EQ(tile.roughness(), 0.2);
   EXPECT_FLOAT_EQ(tile.ior().n[10], 1.5f);
-  const auto& glass = std::get<GlassMaterial>(read_one("\"glass\""));
+  const auto glass = std::get<GlassMaterial>(read_one("\"glass\""));
   EXPECT_TRUE(glass.is_mirror());
   EXPECT_DOUBLE_EQ(glass.thickness_m(), 0.006);
   EXPECT_FLOAT_EQ(glass.interior_reflectance()[20], 0.05f);
@@ -79,17 +79,17 @@ TEST(Preset, TileHasASmallSpecularPart) {
 }
 
 TEST(Preset, OverridesReplaceTheGivenValues) {
-  const auto& al = std::get<CookTorranceMaterial>(read_one(R"({"preset": "aluminium", "roughness": 0.1})"));
+  const auto al = std::get<CookTorranceMaterial>(read_one(R"({"preset": "aluminium", "roughness": 0.1})"));
   EXPECT_DOUBLE_EQ(al.roughness(), 0.1);
   EXPECT_TRUE(al.ior().is_conductor());
   // Giving an index replaces the preset's metal.
-  const auto& coated = std::get<CookTorranceMaterial>(read_one(R"({"preset": "aluminium", "ior": 1.6})"));
+  const auto coated = std::get<CookTorranceMaterial>(read_one(R"({"preset": "aluminium", "ior": 1.6})"));
   EXPECT_FALSE(coated.ior().is_conductor());
   EXPECT_FLOAT_EQ(coated.ior().n[0], 1.6f);
-  const auto& glass = std::get<GlassMaterial>(read_one(R"({"preset": "glass", "interior_reflectance": 0.1})"));
+  const auto glass = std::get<GlassMaterial>(read_one(R"({"preset": "glass", "interior_reflectance": 0.1})"));
   EXPECT_FLOAT_EQ(glass.interior_reflectance()[3], 0.1f);
   EXPECT_DOUBLE_EQ(glass.thickness_m(), 0.006);
-  const auto& concrete = std::get<DiffuseMaterial>(read_one(R"({"preset": "concrete", "reflectance": 0.25})"));
+  const auto concrete = std::get<DiffuseMaterial>(read_one(R"({"preset": "concrete", "reflectance": 0.25})"));
   EXPECT_FLOAT_EQ(concrete.reflectance[3], 0.25f);
 }
 
@@ -120,29 +120,29 @@ TEST(Preset, BadOverridesNameTheirPath) {
 }
 
 TEST(MaterialReader, CookTorranceTakesAMetalAnIorOrADielectric) {
-  const auto& al = std::get<CookTorranceMaterial>(read_one(R"({"type": "cook_torrance", "roughness": 0.2, "metal": "aluminium"})"));
+  const auto al = std::get<CookTorranceMaterial>(read_one(R"({"type": "cook_torrance", "roughness": 0.2, "metal": "aluminium"})"));
   EXPECT_TRUE(al.ior().is_conductor());
-  const auto& custom = std::get<CookTorranceMaterial>(read_one(
+  const auto custom = std::get<CookTorranceMaterial>(read_one(
       R"({"type": "cook_torrance", "roughness": 0.2, "metal": {"wavelength_nm": [400, 700], "n": [1, 2], "k": 7}})"));
   EXPECT_NEAR(custom.ior().n[0], 1.0, 0.02);   // held below 400 nm
   EXPECT_NEAR(custom.ior().n[15], 1.45, 1e-3);  // 530–540 nm: linear between, 1 + 135/300
   EXPECT_FLOAT_EQ(custom.ior().k[39], 7.0f);
-  const auto& constant = std::get<CookTorranceMaterial>(
+  const auto constant = std::get<CookTorranceMaterial>(
       read_one(R"({"type": "cook_torrance", "roughness": 0.2, "metal": {"n": 1.2, "k": 7}})"));
   EXPECT_FLOAT_EQ(constant.ior().k[5], 7.0f);
-  const auto& paint = std::get<CookTorranceMaterial>(read_one(
+  const auto paint = std::get<CookTorranceMaterial>(read_one(
       R"({"type": "cook_torrance", "roughness": 0.3, "ior": 1.5, "diffuse_reflectance": [0.8, 0.1, 0.1]})"));
   EXPECT_TRUE(paint.has_diffuse());
-  const auto& glassy = std::get<CookTorranceMaterial>(
+  const auto glassy = std::get<CookTorranceMaterial>(
       read_one(R"({"type": "cook_torrance", "roughness": 0.05, "dielectric": "glass"})"));
   EXPECT_NEAR(glassy.ior().n[17], 1.516, 0.002);
 }
 
 TEST(MaterialReader, LayeredAndGlassHaveDefaults) {
-  const auto& layered = std::get<CookTorranceMaterial>(read_one(R"({"type": "layered", "reflectance": 0.5})"));
+  const auto layered = std::get<CookTorranceMaterial>(read_one(R"({"type": "layered", "reflectance": 0.5})"));
   EXPECT_FLOAT_EQ(layered.ior().n[0], 1.5f);
   EXPECT_DOUBLE_EQ(layered.roughness(), 0.2);
-  const auto& glass = std::get<GlassMaterial>(read_one(R"({"type": "glass"})"));
+  const auto glass = std::get<GlassMaterial>(read_one(R"({"type": "glass"})"));
   EXPECT_TRUE(glass.is_mirror());
   EXPECT_DOUBLE_EQ(glass.thickness_m(), 0.006);
   EXPECT_FLOAT_EQ(glass.interior_reflectance()[0], 0.05f);
