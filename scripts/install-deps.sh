@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages skylit needs to build and test, if any is missing.
 # As root it runs apt-get; otherwise it prints the exact command to run and stops.
+# With --clang it also installs Clang 14 with its sanitizer runtimes and libFuzzer
+# (libclang-rt-14-dev, only recommended by clang-14), for scripts/test-sanitizers.sh
+# and scripts/fuzz.sh.
 set -euo pipefail
 
 packages=(
@@ -9,6 +12,9 @@ packages=(
   nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev libcli11-dev
   libgtest-dev libbenchmark-dev
 )
+if [ "${1:-}" = "--clang" ]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

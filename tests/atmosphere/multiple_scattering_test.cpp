@@ -35,7 +35,8 @@
 //     cannot represent: its total is off by −21 % … +28 % depending on direction, its
 //     orders ≥ 2 by −49 % … +82 % (650 nm, 45° opposite the sun at 60°: +28 %; 450 nm,
 //     10° up opposite a sun at 4–10°: −21 %); the irradiance on the horizontal plane
-//     by +0.1/+4.5 % at sun 60°, −5.5/0.0 % at 30° and −12 % at 4–10° (450/650 nm);
+//     by +3.5/+7.1 % at sun 60°, −2.5/+2.3 % at 30° and −6 … −11 % at 4–10° (450/650 nm;
+//     remeasured after e165070, the other numbers here are from before it);
 //   * with the sun 4° below the horizon the model's sky is 4–78 % too bright (its orders
 //     ≥ 2 by 17–127 %; the first order agrees within its noise of 4–28 %), as much
 //     against the path tracer's isotropic higher orders (13–99 %): not the phase
@@ -285,8 +286,13 @@ class MonteCarloSky {
           physical[static_cast<size_t>(s) * kSlots + order] += weight * lit;
           if (order >= 2) isotropic[static_cast<size_t>(s)] += weight_iso * lit;
         }
-        // Cosine-weighted: BRDF·cos/pdf = albedo.
-        w = around(n, std::sqrt(random.uniform()), 2.0 * kPi * random.uniform());
+        // Cosine-weighted: BRDF·cos/pdf = albedo. The two numbers are drawn in separate
+        // statements: as two arguments of one call their order was the compiler's (GCC
+        // took them right to left, Clang left to right), and so were the paths and the
+        // result. Azimuth first, as GCC did, so the numbers quoted above still hold.
+        const double u_phi = random.uniform();
+        const double u_cos = random.uniform();
+        w = around(n, std::sqrt(u_cos), 2.0 * kPi * u_phi);
         weight *= albedo;
         weight_iso *= albedo;
       } else {
@@ -477,16 +483,21 @@ TEST(MultipleScattering, FullModelMatchesMonteCarloOnTheHorizontalPlaneAndAtTheZ
   // this file: −21 % … +28 % in single directions), but roughly conserve it, so the
   // irradiance on the horizontal plane, and the zenith (far from the aureole, at
   // mid-range scattering angles), stay close for a high sun. Measured at sun 60°:
-  // horizontal plane +0.1 % (450 nm) and +4.5 % (650 nm), zenith +2.4 % and +3.8 %;
-  // at sun 30°: horizontal plane −5.5 % and 0.0 %. Tolerances: 5 % at 60°, 7 % at 30°
-  // (the plane only: the zenith at 650 nm is +16 % there), each plus 4σ of the Monte
+  // horizontal plane +3.5 % (450 nm) and +7.1 % (650 nm), zenith +5.1 % and +5.6 %;
+  // at sun 30°: horizontal plane −2.5 % and +2.3 % (the zenith at 650 nm is +20 %).
+  // (Before f_ms took in the ground's reflection of multiply scattered light, commit
+  // e165070, the model was about 3 % lower: +0.1/+4.5 %, +2.4/+3.8 % and −5.5/0.0 %,
+  // against which a 5 % bound at 60° was set. It left +7.1 % a hair under 5 % + 4σ,
+  // so which equally valid set of paths the compiler's argument order picked, see
+  // trace(), decided the result: Clang's gave +7.55 % against 6.94 %.)
+  // Tolerances: 8 % at 60°, 7 % at 30° (the plane only), each plus 4σ of the Monte
   // Carlo part (σ = 0.4–0.7 %).
   const MonteCarloResults& mc = monte_carlo();
   const size_t zenith = 0, plane = kViews.size() - 1;
   for (int b = 0; b < 2; ++b) {
     for (size_t v : {zenith, plane}) {
       const TotalDifference d = total_difference(mc.views[b][v], 0, false);
-      EXPECT_LT(std::abs(d.relative), 0.05 + 4.0 * d.standard_error) << describe(b, v, 0);
+      EXPECT_LT(std::abs(d.relative), 0.08 + 4.0 * d.standard_error) << describe(b, v, 0);
     }
     const TotalDifference d = total_difference(mc.views[b][plane], 1, false);
     EXPECT_LT(std::abs(d.relative), 0.07 + 4.0 * d.standard_error) << describe(b, plane, 1);

@@ -51,6 +51,10 @@ TEST(SceneLights, MistakesNameTheFileAndPlace) {
   TempDir dir;
   dir.write("bad.ies", "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 50\n0 abc\n0\n1 1\n");
   dir.write("down.csv", "wavelength_nm,power\n500,1\n400,1\n");
+  // Rows of different lengths: a later row once added a column, so the table's
+  // wavelength and power columns differed in length (a heap overflow when read).
+  dir.write("ragged.csv", "wavelength_nm,power\n400\n500,1\n");
+  dir.write("short.csv", "wavelength_nm,power\n400,1\n500\n");
   struct Case {
     std::string lights, expected;
   };
@@ -74,6 +78,10 @@ TEST(SceneLights, MistakesNameTheFileAndPlace) {
        "lights[0].aim"},
       {R"([{"position": [0, 0, 5], "shape": "isotropic", "candela": 1, "lamp": "table", "spectrum_file": "down.csv"}])",
        "down.csv:3: wavelengths must be finite and strictly increasing"},
+      {R"([{"position": [0, 0, 5], "shape": "isotropic", "candela": 1, "lamp": "table", "spectrum_file": "ragged.csv"}])",
+       "ragged.csv:3: expected 1 columns, found 2"},
+      {R"([{"position": [0, 0, 5], "shape": "isotropic", "candela": 1, "lamp": "table", "spectrum_file": "short.csv"}])",
+       "short.csv:3: expected 2 columns, found 1"},
       {R"([{"position": [0, 0, 5], "shape": "isotropic", "candela": 1, "lamp": "led", "colour": 1}])",
        "lights[0].colour: unknown key"},
   };

@@ -375,7 +375,10 @@ TEST(FogSunIntegral, ContinuousThroughTheSpecialCases) {
     }
   };
   for (double h0 : kScaleHeights)
-    for (const auto& [s1, s2] : kSegments) {
+    for (const auto& segment : kSegments) {
+      // Plain variables, not structured bindings: the lambdas below capture them, which
+      // C++20 allows for bindings but Clang before 16 does not implement.
+      const double s1 = segment.first, s2 = segment.second;
       const FogLayer layer(settings_for({0.59, h0, 0.0, 60.0, 0.02}));
       for (double z_sun : {0.05, 0.5, 1.0}) {
         check([&](double d) { return fog_sun_weight(layer, 30.0, d, z_sun, s1, s2, 550.0); }, "z_v → 0");

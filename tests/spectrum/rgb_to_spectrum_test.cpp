@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -57,7 +56,6 @@ TEST(RgbToSpectrum, RoundTripWithinOneDeltaE2000OnSrgbGrid) {
   // Hanika's space reaches the whole sRGB gamut, so a converged fit is far below it.
   double worst = 0.0;
   Rgb worst_rgb{};
-  const auto start = std::chrono::steady_clock::now();
   const std::vector<Rgb> grid = srgb_test_grid();
   for (const Rgb& rgb : grid) {
     const SigmoidPolynomial fit = fit_reflectance_to_linear_srgb(rgb);
@@ -65,16 +63,11 @@ TEST(RgbToSpectrum, RoundTripWithinOneDeltaE2000OnSrgbGrid) {
     EXPECT_LE(delta_e, 1.0) << rgb[0] << " " << rgb[1] << " " << rgb[2];
     if (delta_e > worst) worst = delta_e, worst_rgb = rgb;
   }
-  const double ms_per_colour =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
-      static_cast<double>(grid.size());
   std::cout << "[ round trip ] worst ΔE2000 " << worst << " at linear sRGB (" << worst_rgb[0] << ", "
-            << worst_rgb[1] << ", " << worst_rgb[2] << "); " << ms_per_colour << " ms per colour\n";
+            << worst_rgb[1] << ", " << worst_rgb[2] << ")\n";
   RecordProperty("worst_delta_e_2000", std::to_string(worst));
-  RecordProperty("ms_per_colour", std::to_string(ms_per_colour));
-  // Materials are fitted at scene load: a few ms per colour is the budget (this
-  // machine needs a small fraction of it; the bound is loose so a slow CI passes).
-  EXPECT_LT(ms_per_colour, 5.0);
+  // Speed (materials are fitted at scene load) is the benchmarks' to measure, not a
+  // test's: wall-clock bounds fail on loaded or instrumented (sanitizer) machines.
 }
 
 TEST(RgbToSpectrum, CornersOfTheCubeAreReached) {

@@ -42,6 +42,12 @@ std::vector<std::vector<double>> parse_csv_columns(std::string_view text, std::s
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line_number == 1 || line.empty()) continue;  // header row, blank lines
+    // The first data row sets the number of columns; every later row must have as many.
+    const size_t fields = 1 + static_cast<size_t>(std::count(line.begin(), line.end(), ','));
+    if (!columns.empty() && fields != columns.size())
+      throw InputError(std::string(source) + ":" + std::to_string(line_number) + ": expected " +
+                       std::to_string(columns.size()) + " columns, found " + std::to_string(fields));
+    if (columns.empty()) columns.resize(fields);
     size_t column = 0, field_start = 0;
     while (field_start <= line.size()) {
       size_t field_end = line.find(',', field_start);
@@ -52,14 +58,10 @@ std::vector<std::vector<double>> parse_csv_columns(std::string_view text, std::s
       if (ec != std::errc() || end != field.data() + field.size())
         throw InputError(std::string(source) + ":" + std::to_string(line_number) +
                          ": expected a number, found '" + std::string(field) + "'");
-      if (columns.size() <= column) columns.emplace_back();
       columns[column].push_back(value);
       ++column;
       field_start = field_end + 1;
     }
-    if (column != columns.size())
-      throw InputError(std::string(source) + ":" + std::to_string(line_number) + ": expected " +
-                       std::to_string(columns.size()) + " columns, found " + std::to_string(column));
   }
   return columns;
 }

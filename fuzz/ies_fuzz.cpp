@@ -1,0 +1,8 @@
+// IES LM-63 photometric files (lights/ies_reader.h), from bytes.
+#include "fuzz_support.h"
+#include "skylit/lights/ies_reader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(skylit::fuzz::text_of(data, size));
+  return skylit::fuzz::accept_input_errors([&] { skylit::parse_ies(text, "fuzz.ies"); });
+}

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# CI, after scripts/test.sh: the whole test suite built with Clang's AddressSanitizer
+# and UndefinedBehaviorSanitizer (scripts/build-asan.sh, into build-asan/). Fails on a
+# failing test or on any sanitizer report, also from a process a test starts (the
+# skylit program), since every report is written to build-asan/sanitizer-logs/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$SECONDS
+scripts/build-asan.sh
+echo "test-sanitizers: build took $((SECONDS - start)) s" >&2
+
+logs=$PWD/build-asan/sanitizer-logs
+rm -rf "$logs" && mkdir -p "$logs"
+# Embree and TBB are not instrumented; nothing here needs to be turned off for them
+# (no false positives seen). Leak checking stays on.
+export ASAN_OPTIONS="log_path=$logs/asan:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1"
+export UBSAN_OPTIONS="log_path=$logs/ubsan:print_stacktrace=1:halt_on_error=1"
+
+# The test program itself in two shards, not CTest's one process per test: the
+# atmosphere tables that many tests share are then built once per shard rather than
+# once per test, which under the sanitizers is most of the time.
+status=0
+run_start=$SECONDS
+cd build-asan
+for shard in 0 1; do
+  GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=$shard bin/skylit_tests --gtest_brief=1 >"tests-shard$shard.log" 2>&1 &
+  pids[$shard]=$!
+done
+for shard in 0 1; do
+  if ! wait "${pids[$shard]}"; then
+    echo "test-sanitizers: shard $shard failed:" >&2
+    cat "tests-shard$shard.log" >&2
+    status=1
+  fi
+done
+cd ..
+echo "test-sanitizers: tests took $((SECONDS - run_start)) s" >&2
+if compgen -G "$logs/*" >/dev/null; then
+  echo "test-sanitizers: sanitizer reports:" >&2
+  cat "$logs"/* >&2
+  status=1
+fi
+exit $status
