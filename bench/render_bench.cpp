@@ -57,8 +57,8 @@ void frames_of(benchmark::State& state, const skylit::Scene& scene, int threads 
     skylit::XyzImage image = renderer.render(options);
     benchmark::DoNotOptimize(image.xyz.data());
   }
-  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(renderer.rays_traced() - rays_before),
-                                                    benchmark::Counter::kIsRate);
+  state.counters["rays_per_s"] =
+      benchmark::Counter(static_cast<double>(renderer.rays_traced() - rays_before), benchmark::Counter::kIsRate);
   state.counters["peak_MiB"] = peak_memory_mib();
 }
 
@@ -80,16 +80,16 @@ BENCHMARK(BM_Fig7Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealT
 
 // The paper's Fig. 8a (fog, arg 0) and 8c (beams, arg 1) at 1280×720.
 void BM_Fig8Frame(benchmark::State& state) {
-  const std::filesystem::path file = std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" /
-                                     (state.range(0) == 0 ? "fig8a.json" : "fig8c.json");
+  const std::filesystem::path file =
+      std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" / (state.range(0) == 0 ? "fig8a.json" : "fig8c.json");
   frames_of(state, skylit::load_scene(file));
 }
 BENCHMARK(BM_Fig8Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The paper's Fig. 10a (sun in front of the camera, arg 0) and 10b (sun behind, arg 1).
 void BM_Fig10Frame(benchmark::State& state) {
-  const std::filesystem::path file = std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" /
-                                     (state.range(0) == 0 ? "fig10a.json" : "fig10b.json");
+  const std::filesystem::path file =
+      std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" / (state.range(0) == 0 ? "fig10a.json" : "fig10b.json");
   frames_of(state, skylit::load_scene(file));
 }
 BENCHMARK(BM_Fig10Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -38,7 +38,10 @@ inline const std::filesystem::path& work_dir() {
     std::string pattern = (std::filesystem::temp_directory_path() / "skylit-fuzz-XXXXXX").string();
     if (!mkdtemp(pattern.data())) abort();
     auto* made = new std::filesystem::path(pattern);
-    std::atexit([] { std::error_code ignored; std::filesystem::remove_all(work_dir(), ignored); });
+    std::atexit([] {
+      std::error_code ignored;
+      std::filesystem::remove_all(work_dir(), ignored);
+    });
     return made;
   }();
   return *dir;

@@ -92,7 +92,8 @@ inline std::string small_scene_json(int width = 48, int height = 32) {
     {"type": "plane", "material": "white", "size_m": 200},
     {"type": "box", "material": "red", "center": [0, 0, 3], "size": [4, 4, 6], "rotation_z_deg": 30}
   ],
-  "render": {"width": )" + std::to_string(width) + R"(, "height": )" + std::to_string(height) + R"(}
+  "render": {"width": )" +
+         std::to_string(width) + R"(, "height": )" + std::to_string(height) + R"(}
 })";
 }
 

@@ -36,7 +36,9 @@ void check_output_folder(const std::string& out) {
     throw InputError(out + ": the folder " + dir.string() + " does not exist");
 }
 
-std::string size_text(const XyzImage& image) { return std::to_string(image.width) + "x" + std::to_string(image.height); }
+std::string size_text(const XyzImage& image) {
+  return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
 
 void require_same_size(const XyzImage& image, const std::string& file, const XyzImage& a, const std::string& a_file) {
   if (image.width != a.width || image.height != a.height)
@@ -44,7 +46,8 @@ void require_same_size(const XyzImage& image, const std::string& file, const Xyz
                      "; images to compare must be the same size");
 }
 
-std::optional<XyzImage> read_optional(const std::optional<std::string>& file, const XyzImage& a, const std::string& a_file) {
+std::optional<XyzImage> read_optional(const std::optional<std::string>& file, const XyzImage& a,
+                                      const std::string& a_file) {
   if (!file) return std::nullopt;
   XyzImage image = read_image(*file);
   require_same_size(image, *file, a, a_file);
@@ -111,17 +114,20 @@ CommandRunner add_compare_command(CLI::App& app) {
   compare->add_option("a", args->a, "Image A, the denominator of B/A (.exr or .pfm, as skylit writes them)")
       ->required();
   compare->add_option("b", args->b, "Image B, the same size (.exr or .pfm); ratios are B/A")->required();
-  compare->add_option("--regions", args->regions_file,
-                      "JSON file of named rectangles: {\"regions\": [{\"name\": \"wall\", \"rect\": [x0, y0, x1, y1]}]} "
-                      "in pixels (half-open), or \"rect_fraction\" in fractions of width and height");
+  compare->add_option(
+      "--regions", args->regions_file,
+      "JSON file of named rectangles: {\"regions\": [{\"name\": \"wall\", \"rect\": [x0, y0, x1, y1]}]} "
+      "in pixels (half-open), or \"rect_fraction\" in fractions of width and height");
   compare->add_option("--mask", args->mask,
                       "PNG the images' size: each distinct non-black colour is a region named by its hex colour");
-  compare->add_option("--standard-error-a", args->standard_error_a,
-                      "Per-pixel standard error of A's luminance (skylit render --standard-error); omitted: A has no noise");
+  compare->add_option(
+      "--standard-error-a", args->standard_error_a,
+      "Per-pixel standard error of A's luminance (skylit render --standard-error); omitted: A has no noise");
   compare->add_option("--standard-error-b", args->standard_error_b,
                       "Per-pixel standard error of B's luminance; omitted: B has no noise");
-  compare->add_option("-o,--output", args->ratio_map,
-                      "Write a false-colour map of B/A per pixel (.png; log scale from 1/2 blue to 2 red, with a legend)");
+  compare->add_option(
+      "-o,--output", args->ratio_map,
+      "Write a false-colour map of B/A per pixel (.png; log scale from 1/2 blue to 2 red, with a legend)");
   compare->add_option("--json", args->json, "Also write the results as JSON to this file");
   return [compare, args] { return compare->parsed() ? run_compare(*args) : -1; };
 }

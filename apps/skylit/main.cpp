@@ -15,12 +15,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "skylit 0.1.0");
   const std::vector<skylit::cli::CommandRunner> commands = {
-      skylit::cli::add_render_command(app),
-      skylit::cli::add_sun_command(app),
-      skylit::cli::add_sky_command(app),
-      skylit::cli::add_spectrum_command(app),
-      skylit::cli::add_sweep_command(app),
-      skylit::cli::add_compare_command(app),
+      skylit::cli::add_render_command(app), skylit::cli::add_sun_command(app),
+      skylit::cli::add_sky_command(app),    skylit::cli::add_spectrum_command(app),
+      skylit::cli::add_sweep_command(app),  skylit::cli::add_compare_command(app),
   };
   try {
     app.parse(argc, argv);

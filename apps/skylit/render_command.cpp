@@ -8,10 +8,10 @@
 
 #include "commands.h"
 #include "progress_bar.h"
+#include "skylit/core/error.h"
 #include "skylit/io/image/image.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/renderer.h"
-#include "skylit/core/error.h"
 
 namespace skylit::cli {
 
@@ -38,7 +38,8 @@ int run_render(const RenderArguments& args) {
   }
   const Scene scene = load_scene(args.scene_file, args.overrides);
   if (!args.standard_error_outputs.empty() && scene.render.integrator != Integrator::path)
-    throw InputError(args.scene_file + ": --standard-error needs render.integrator \"path\" (the bands method has no noise)");
+    throw InputError(args.scene_file +
+                     ": --standard-error needs render.integrator \"path\" (the bands method has no noise)");
   const Renderer renderer(scene);
   ProgressBar progress(!args.quiet && isatty(STDERR_FILENO) != 0);
   RenderOptions options;
@@ -58,11 +59,12 @@ CommandRunner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArguments>();
   CLI::App* render = app.add_subcommand("render", "Render a scene file into one or more images.");
   render->add_option("scene", args->scene_file, "Scene file (JSON; see docs/scene-format.md)")->required();
-  render->add_option("-o,--output", args->outputs,
-                     "Output image; repeat for several. By extension: .exr and .pfm hold linear RGB "
-                     "(sRGB primaries) scaled so 0.2126R+0.7152G+0.0722B is luminance in cd/m² "
-                     "(EXR adds a Y channel in cd/m²); .hdr is Radiance RGBE (luminance = 179 × "
-                     "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image")
+  render
+      ->add_option("-o,--output", args->outputs,
+                   "Output image; repeat for several. By extension: .exr and .pfm hold linear RGB "
+                   "(sRGB primaries) scaled so 0.2126R+0.7152G+0.0722B is luminance in cd/m² "
+                   "(EXR adds a Y channel in cd/m²); .hdr is Radiance RGBE (luminance = 179 × "
+                   "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image")
       ->required();
   render->add_option("--standard-error", args->standard_error_outputs,
                      "With render.integrator \"path\": also write each pixel's standard error of the mean "

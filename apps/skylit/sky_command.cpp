@@ -51,7 +51,8 @@ int run_sky(const SkyArguments& args) {
 
 CommandRunner add_sky_command(CLI::App& app) {
   auto args = std::make_shared<SkyArguments>();
-  CLI::App* sky = app.add_subcommand("sky", "Render the sky alone in absolute units (luminance in cd/m², as for render).");
+  CLI::App* sky =
+      app.add_subcommand("sky", "Render the sky alone in absolute units (luminance in cd/m², as for render).");
   add_atmosphere_options(sky, args->atmosphere);
   sky->add_option("--projection", args->projection,
                   "equirect: 2N×N, azimuth 0° (north) at the left edge, clockwise, altitude +90° at the top to −90° "

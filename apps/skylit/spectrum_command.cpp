@@ -41,10 +41,10 @@ void write_spectrum_plot(const std::vector<SolarSpectrumSample>& samples, const 
 }
 
 int run_spectrum(const SpectrumArguments& args) {
-  const std::vector<SolarSpectrumSample> samples = solar_spectrum(
-      atmosphere_settings(args.atmosphere),
-      direction_from_altitude_azimuth(args.atmosphere.sun_altitude_deg, args.atmosphere.sun_azimuth_deg),
-      args.atmosphere.observer_altitude_m);
+  const std::vector<SolarSpectrumSample> samples =
+      solar_spectrum(atmosphere_settings(args.atmosphere),
+                     direction_from_altitude_azimuth(args.atmosphere.sun_altitude_deg, args.atmosphere.sun_azimuth_deg),
+                     args.atmosphere.observer_altitude_m);
   if (!args.plot.empty()) write_spectrum_plot(samples, args);
   if (args.csv) {
     std::printf("wavelength_nm,direct_normal_W_m2_nm,diffuse_horizontal_W_m2_nm,zenith_radiance_W_m2_sr_nm\n");

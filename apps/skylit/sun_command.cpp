@@ -8,9 +8,9 @@
 #include <string>
 
 #include "commands.h"
+#include "skylit/core/error.h"
 #include "skylit/sun/delta_t.h"
 #include "skylit/sun/solar_position.h"
-#include "skylit/core/error.h"
 
 namespace skylit::cli {
 

@@ -15,12 +15,12 @@
 
 #include "commands.h"
 #include "progress_bar.h"
+#include "skylit/core/error.h"
 #include "skylit/figures/contact_sheet.h"
+#include "skylit/figures/sweep.h"
 #include "skylit/io/image/image.h"
 #include "skylit/io/scene/scene_loader.h"
-#include "skylit/figures/sweep.h"
 #include "skylit/render/renderer.h"
-#include "skylit/core/error.h"
 
 namespace skylit::cli {
 

@@ -60,7 +60,8 @@ TEST(CompareCommand, RegionRatiosAndStandardErrorsAsComputedByHand) {
     {"name": "left half", "rect": [0, 0, 2, 2]},
     {"name": "right half", "rect_fraction": [0.5, 0, 1, 1]}]})");
   const auto json_path = r.dir.path() / "out.json";
-  const auto result = run_skylit("compare " + r.inputs() + " --regions " + quoted(regions) + " --json " + quoted(json_path));
+  const auto result =
+      run_skylit("compare " + r.inputs() + " --regions " + quoted(regions) + " --json " + quoted(json_path));
   ASSERT_EQ(result.exit_status, 0) << result.output;
   const auto json = nlohmann::json::parse(testing::read_file(json_path));
   EXPECT_EQ(json["width"], 4);
@@ -129,8 +130,8 @@ TEST(CompareCommand, RatioMapShowsNeutralWhereEqualAndRedWhereTwiceAsBright) {
   write_image(columns_of_greys({10, 10, 10, 0}), dir.path() / "a.exr");
   write_image(columns_of_greys({10, 20, 5, 0}), dir.path() / "b.exr");
   const auto map_path = dir.path() / "ratio.png";
-  const auto result = run_skylit("compare " + quoted(dir.path() / "a.exr") + " " + quoted(dir.path() / "b.exr") + " -o " +
-                                 quoted(map_path));
+  const auto result = run_skylit("compare " + quoted(dir.path() / "a.exr") + " " + quoted(dir.path() / "b.exr") +
+                                 " -o " + quoted(map_path));
   ASSERT_EQ(result.exit_status, 0) << result.output;
   const Raster map = test::read_png_raster(map_path);
   EXPECT_EQ(map.at(0, 1), kCoolWarmNeutral);

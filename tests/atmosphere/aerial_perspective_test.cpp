@@ -64,7 +64,8 @@ TEST(AerialPerspective, NothingAtZeroDistance) {
         EXPECT_EQ(zero.in_scattered[k], 0.0f);
         EXPECT_EQ(zero.transmittance[k], 1.0f);
         EXPECT_GT(centimetre.transmittance[k], 0.999f);
-        EXPECT_LT(centimetre.in_scattered[k], 0.02f * hundred.in_scattered[k]) << elevation << " " << azimuth << " bin " << k;
+        EXPECT_LT(centimetre.in_scattered[k], 0.02f * hundred.in_scattered[k])
+            << elevation << " " << azimuth << " bin " << k;
       }
     }
 }
@@ -194,7 +195,8 @@ TEST(AerialPerspective, HorizontalViewsFarAwayMatchTheIntegrator) {
     const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
     const Vec3 view = world_direction(0.0, azimuth);
     EXPECT_LT(table_error(0.0, azimuth, 20e3).transmittance, 0.04) << azimuth;
-    const double t60 = luminance(sky.aerial_perspective(view, 60e3).transmittance.spectrum()) / luminance(Spectrum(1.0f));
+    const double t60 =
+        luminance(sky.aerial_perspective(view, 60e3).transmittance.spectrum()) / luminance(Spectrum(1.0f));
     EXPECT_LT(t60, 0.05) << azimuth;
     EXPECT_NEAR(luminance(sky.aerial_perspective(view, AerialPerspectiveTable::kMaxDistanceM).in_scattered),
                 luminance(sky.sky_radiance(view)), 0.04 * luminance(sky.sky_radiance(view)));

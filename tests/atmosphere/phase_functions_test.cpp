@@ -48,7 +48,8 @@ struct Case {
 
 std::vector<Case> cases() {
   std::vector<Case> out;
-  for (double gamma : {0.0, 0.0140}) out.push_back({"Rayleigh", [=](double c) { return rayleigh_phase(c, gamma); }, 0.0});
+  for (double gamma : {0.0, 0.0140})
+    out.push_back({"Rayleigh", [=](double c) { return rayleigh_phase(c, gamma); }, 0.0});
   for (double g : {0.0, 0.5, 0.85, 0.99})
     out.push_back({"Henyey-Greenstein", [=](double c) { return henyey_greenstein_phase(c, g); }, g});
   // Cornette–Shanks: the parameter g is not the mean cosine, which is 3g(4 + g²)/(5(2 + g²))

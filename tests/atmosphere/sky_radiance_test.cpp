@@ -95,10 +95,10 @@ Comparison table_against_integrator(double sun, double observer_height_m, const 
   const Atmosphere& atmosphere = default_atmosphere();
   const SkyModel& sky = default_sky(sun, observer_height_m);
   return worst_over(probes, sun, [&](const Probe& p) {
-    const Radiance direct(
-        test_reference::integrated_radiance(atmosphere.integrator(), atmosphere.ground_radius() + observer_height_m,
-                                            sun, p.elevation_deg, p.azimuth_from_sun_deg, 400) *
-        atmosphere.extraterrestrial_irradiance().spectrum());
+    const Radiance direct(test_reference::integrated_radiance(atmosphere.integrator(),
+                                                              atmosphere.ground_radius() + observer_height_m, sun,
+                                                              p.elevation_deg, p.azimuth_from_sun_deg, 400) *
+                          atmosphere.extraterrestrial_irradiance().spectrum());
     return worst_relative(sky.sky_radiance(world_direction(p.elevation_deg, p.azimuth_from_sun_deg)), direct);
   });
 }

@@ -49,7 +49,9 @@ TEST(Transmittance, ColumnDensitiesMatchBruteForceOnSlantPaths) {
   const AtmosphereMedium medium(AtmosphereSettings{}, SpectralBands::render_bins());
   // Vertical, slant, horizontal (the horizon: the longest path), and a ray from 10 km
   // going slightly down, past its lowest point, and up again.
-  struct Case { double height, mu; };
+  struct Case {
+    double height, mu;
+  };
   for (const Case c : {Case{0, 1.0}, Case{0, 0.5}, Case{0, 0.1}, Case{0, 0.0}, Case{1000, 0.0}, Case{10e3, -0.02}}) {
     const double r = kEarth + c.height;
     ASSERT_FALSE(shell::hits_ground(r, c.mu, kEarth));

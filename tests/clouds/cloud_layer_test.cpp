@@ -6,9 +6,9 @@
 #include <random>
 #include <vector>
 
+#include "cloud_test_support.h"
 #include "skylit/clouds/cloud.h"
 #include "skylit/clouds/cloud_layer.h"
-#include "cloud_test_support.h"
 
 namespace skylit {
 namespace {
@@ -27,7 +27,8 @@ TEST(CloudShadow, LandsWhereTheProjectedEllipseSays) {
         const double dx = m.x - s.center_x, dy = m.y - s.center_y;
         const double u = dx * std::cos(s.rotation) + dy * std::sin(s.rotation);
         const double v = -dx * std::sin(s.rotation) + dy * std::cos(s.rotation);
-        const double r = std::sqrt((u / s.semi_axis_a) * (u / s.semi_axis_a) + (v / s.semi_axis_b) * (v / s.semi_axis_b));
+        const double r =
+            std::sqrt((u / s.semi_axis_a) * (u / s.semi_axis_a) + (v / s.semi_axis_b) * (v / s.semi_axis_b));
         const double tr = layer.sun_transmittance(ground, to_sun);
         ASSERT_TRUE(std::isfinite(tr));
         if (r < 0.9) {

@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
+#include "cloud_test_support.h"
 #include "skylit/clouds/cloud.h"
 #include "skylit/clouds/cloud_layer.h"
-#include "cloud_test_support.h"
 
 namespace skylit {
 namespace {

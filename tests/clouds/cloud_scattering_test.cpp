@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cloud_test_support.h"
 #include "skylit/clouds/cloud.h"
 #include "skylit/clouds/cloud_layer.h"
-#include "cloud_test_support.h"
 
 namespace skylit {
 namespace {
@@ -36,32 +36,32 @@ TEST(CloudRadiance, EdgeBrighterThanCentreWithSunBehindCloud) {
   s.semi_axis_b = 1000;
   s.max_thickness = 400;
   for (bool grid : {false, true}) {
-  SCOPED_TRACE(grid ? "sun grid" : "marched");
-  Cloud c(s);
-  const Vec3 eye{0, 0, 0};
-  const Vec3 to_sun = normalize(Vec3{0, 500, 1500});  // the sun right behind the cloud's centre
-  const CloudLighting light = flat_light(to_sun);
-  if (grid) c.prepare_sun(to_sun);
-  const Spectrum sky(0.05f);
-  auto radiance_toward = [&](double u, double v) {
-    const Vec3 d = normalize(local_point(s, u, v, s.altitude) - eye);
-    return c.radiance(eye, d, 0, kInf, sky, light);
-  };
-  const float centre = total(radiance_toward(0, 0));
-  for (double r : {0.99, 0.995, 0.998}) {  // T = 56, 40, 25 m: optical depths 1–3
-    for (double sign : {-1.0, 1.0}) {
-      const float edge_x = total(radiance_toward(sign * r * s.semi_axis_a, 0));
-      std::printf("%s r %.3f: edge/centre %.1f\n", grid ? "grid" : "march", r, edge_x / centre);
-      EXPECT_GT(edge_x, 2.0f * centre) << r;
-      // With the sky behind blacked out, the scattered sunlight alone still does it.
-      const Vec3 d = normalize(local_point(s, sign * r * s.semi_axis_a, 0, s.altitude) - eye);
-      const Vec3 dc = normalize(local_point(s, 0, 0, s.altitude) - eye);
-      EXPECT_GT(total(c.scatter(eye, d, 0, kInf, light).in_scattered),
-                total(c.scatter(eye, dc, 0, kInf, light).in_scattered));
+    SCOPED_TRACE(grid ? "sun grid" : "marched");
+    Cloud c(s);
+    const Vec3 eye{0, 0, 0};
+    const Vec3 to_sun = normalize(Vec3{0, 500, 1500});  // the sun right behind the cloud's centre
+    const CloudLighting light = flat_light(to_sun);
+    if (grid) c.prepare_sun(to_sun);
+    const Spectrum sky(0.05f);
+    auto radiance_toward = [&](double u, double v) {
+      const Vec3 d = normalize(local_point(s, u, v, s.altitude) - eye);
+      return c.radiance(eye, d, 0, kInf, sky, light);
+    };
+    const float centre = total(radiance_toward(0, 0));
+    for (double r : {0.99, 0.995, 0.998}) {  // T = 56, 40, 25 m: optical depths 1–3
+      for (double sign : {-1.0, 1.0}) {
+        const float edge_x = total(radiance_toward(sign * r * s.semi_axis_a, 0));
+        std::printf("%s r %.3f: edge/centre %.1f\n", grid ? "grid" : "march", r, edge_x / centre);
+        EXPECT_GT(edge_x, 2.0f * centre) << r;
+        // With the sky behind blacked out, the scattered sunlight alone still does it.
+        const Vec3 d = normalize(local_point(s, sign * r * s.semi_axis_a, 0, s.altitude) - eye);
+        const Vec3 dc = normalize(local_point(s, 0, 0, s.altitude) - eye);
+        EXPECT_GT(total(c.scatter(eye, d, 0, kInf, light).in_scattered),
+                  total(c.scatter(eye, dc, 0, kInf, light).in_scattered));
+      }
     }
-  }
-  // The thick centre is darker than the clear sky next to it would be with the sun in it.
-  EXPECT_LT(c.scatter(eye, normalize(local_point(s, 0, 0, s.altitude) - eye), 0, kInf, light).transmittance, 1e-6);
+    // The thick centre is darker than the clear sky next to it would be with the sun in it.
+    EXPECT_LT(c.scatter(eye, normalize(local_point(s, 0, 0, s.altitude) - eye), 0, kInf, light).transmittance, 1e-6);
   }
 }
 
@@ -75,26 +75,26 @@ TEST(CloudRadiance, SunlitSideBrighterWithSunBehindViewer) {
   s.rotation = 0.3;
   s.max_thickness = 500;
   for (bool grid : {false, true}) {
-  SCOPED_TRACE(grid ? "sun grid" : "marched");
-  Cloud c(s);
-  const Vec3 eye{0, 0, 0};
-  const Spectrum sky(0.05f);
-  // The sun behind the viewer (to the south, viewer looks north), low.
-  for (double sun_alt : {15.0, 30.0, 50.0}) {
-    const Vec3 to_sun = direction_from_altitude_azimuth(sun_alt, 180);
-    const CloudLighting light = flat_light(to_sun);
-    if (grid) c.prepare_sun(to_sun);
-    const Vec3 h = normalize(Vec3{to_sun.x, to_sun.y, 0});  // horizontal toward the sun's azimuth
-    for (double off : {300.0, 600.0}) {
-      const Vec3 centre{s.center_x, s.center_y, s.altitude};
-      const Vec3 near = centre + h * off, far = centre - h * off;
-      const Spectrum lit = c.radiance(eye, normalize(near - eye), 0, kInf, sky, light);
-      const Spectrum shaded = c.radiance(eye, normalize(far - eye), 0, kInf, sky, light);
-      std::printf("%s sun alt %.0f off %.0f: lit/shaded %.2f\n", grid ? "grid" : "march", sun_alt, off,
-                  total(lit) / total(shaded));
-      EXPECT_GT(total(lit), 1.2f * total(shaded)) << sun_alt << ' ' << off;
+    SCOPED_TRACE(grid ? "sun grid" : "marched");
+    Cloud c(s);
+    const Vec3 eye{0, 0, 0};
+    const Spectrum sky(0.05f);
+    // The sun behind the viewer (to the south, viewer looks north), low.
+    for (double sun_alt : {15.0, 30.0, 50.0}) {
+      const Vec3 to_sun = direction_from_altitude_azimuth(sun_alt, 180);
+      const CloudLighting light = flat_light(to_sun);
+      if (grid) c.prepare_sun(to_sun);
+      const Vec3 h = normalize(Vec3{to_sun.x, to_sun.y, 0});  // horizontal toward the sun's azimuth
+      for (double off : {300.0, 600.0}) {
+        const Vec3 centre{s.center_x, s.center_y, s.altitude};
+        const Vec3 near = centre + h * off, far = centre - h * off;
+        const Spectrum lit = c.radiance(eye, normalize(near - eye), 0, kInf, sky, light);
+        const Spectrum shaded = c.radiance(eye, normalize(far - eye), 0, kInf, sky, light);
+        std::printf("%s sun alt %.0f off %.0f: lit/shaded %.2f\n", grid ? "grid" : "march", sun_alt, off,
+                    total(lit) / total(shaded));
+        EXPECT_GT(total(lit), 1.2f * total(shaded)) << sun_alt << ' ' << off;
+      }
     }
-  }
   }
 }
 

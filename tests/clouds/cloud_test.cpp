@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "cloud_test_support.h"
 #include "skylit/clouds/cloud.h"
 #include "skylit/clouds/cloud_layer.h"
-#include "cloud_test_support.h"
 
 namespace skylit {
 namespace {

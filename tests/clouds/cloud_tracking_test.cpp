@@ -47,9 +47,8 @@ TEST(CloudTracking, SlabTransmittanceAndCollisionsFollowBeerLambert) {
     const double exact = std::exp(-0.005 * 400 / d.z);
     const Mean t = mean_of(20000, [&](CounterRandom& r) { return estimate_cloud_transmittance(layer, o, d, 1e7, r); });
     EXPECT_NEAR(t.value, exact, 3 * t.standard_error + 1e-9) << elevation_deg;
-    const Mean passed = mean_of(20000, [&](CounterRandom& r) {
-      return sample_cloud_collision(layer, o, d, 1e7, r).collided ? 0.0 : 1.0;
-    });
+    const Mean passed = mean_of(
+        20000, [&](CounterRandom& r) { return sample_cloud_collision(layer, o, d, 1e7, r).collided ? 0.0 : 1.0; });
     EXPECT_NEAR(passed.value, exact, 3 * passed.standard_error) << elevation_deg;
     // Where collisions fall: the mean height above the slab's base of a truncated
     // exponential of rate σ/sin h over the slab's 400 m.

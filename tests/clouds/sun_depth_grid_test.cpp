@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
+#include "cloud_test_support.h"
 #include "skylit/clouds/cloud.h"
 #include "skylit/clouds/cloud_layer.h"
-#include "cloud_test_support.h"
 
 namespace skylit {
 namespace {
@@ -44,8 +44,8 @@ TEST(CloudSunGrid, InterpolatedDepthMatchesMarching) {
       max_dtau = std::max(max_dtau, d);
       max_dtrans = std::max(max_dtrans, std::abs(std::exp(-interp) - std::exp(-marched)));
     }
-    std::printf("sun elev %4.0f: grid built in %.1f ms; |dt'| mean %.3f max %.3f; max |d e^-t'| %.3f\n", elev,
-                build_ms, sum_dtau / n, max_dtau, max_dtrans);
+    std::printf("sun elev %4.0f: grid built in %.1f ms; |dt'| mean %.3f max %.3f; max |d e^-t'| %.3f\n", elev, build_ms,
+                sum_dtau / n, max_dtau, max_dtrans);
     // Tolerances from the measured errors (docs/clouds.md) with ~1.5x margin.
     EXPECT_LT(sum_dtau / n, elev >= 40 ? 0.1 : 0.5) << elev;
   }
@@ -60,8 +60,8 @@ TEST(CloudSunGrid, ScatterWithGridMatchesMarching) {
     std::vector<Vec3> dirs;
     for (int i = 0; i < 24; ++i)
       for (int j = 0; j < 24; ++j)
-        dirs.push_back(normalize(local_point(s, (i - 11.5) / 12.5 * s.semi_axis_a, (j - 11.5) / 12.5 * s.semi_axis_b,
-                                             s.altitude) - eye));
+        dirs.push_back(normalize(
+            local_point(s, (i - 11.5) / 12.5 * s.semi_axis_a, (j - 11.5) / 12.5 * s.semi_axis_b, s.altitude) - eye));
     c.clear_sun();
     std::vector<float> marched;
     for (const Vec3& d : dirs) marched.push_back(total(c.scatter(eye, d, 0, kInf, light).in_scattered));

@@ -50,7 +50,7 @@ TEST(RegionComparison, OneStandardErrorImageMeansTheOtherRenderHasNoNoise) {
   const RegionComparison r = compare_region(whole_image_region(2, 1), a, b, {nullptr, &se_b});
   EXPECT_NEAR(*r.mean_a_standard_error_cd_m2, 0.0, 1e-15);
   EXPECT_NEAR(*r.mean_b_standard_error_cd_m2, 0.25, 1e-7);  // sqrt(0.09 + 0.16) / 2
-  EXPECT_NEAR(*r.ratio_standard_error, 0.025, 1e-8);         // 0.25 / 10
+  EXPECT_NEAR(*r.ratio_standard_error, 0.025, 1e-8);        // 0.25 / 10
   const RegionComparison none = compare_region(whole_image_region(2, 1), a, b);
   EXPECT_FALSE(none.ratio_standard_error.has_value());
   EXPECT_FALSE(none.mean_a_standard_error_cd_m2.has_value());

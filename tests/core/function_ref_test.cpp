@@ -11,7 +11,10 @@ double apply_twice(FunctionRef<double(double)> f, double x) { return f(f(x)); }
 
 TEST(FunctionRef, CallsMutableAndConstCallablesInPlace) {
   int calls = 0;
-  auto counting = [&calls](double x) { ++calls; return x + 1; };
+  auto counting = [&calls](double x) {
+    ++calls;
+    return x + 1;
+  };
   EXPECT_EQ(apply_twice(counting, 1.0), 3.0);
   EXPECT_EQ(calls, 2);
 

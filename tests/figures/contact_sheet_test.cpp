@@ -11,10 +11,10 @@
 
 #include "../io/image_test_util.h"
 #include "../io/png_read_util.h"
+#include "skylit/core/error.h"
 #include "skylit/figures/bitmap_font.h"
 #include "skylit/figures/contact_sheet.h"
 #include "skylit/io/image/tone_map.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {
@@ -179,8 +179,7 @@ TEST(ContactSheet, MissingCellsAreGrey) {
   const ContactSheetLayout layout = contact_sheet_layout(sheet);
   for (auto [row, column] : {std::pair{0, 1}, std::pair{1, 1}})
     for (int y = 0; y < 4; ++y)
-      for (int x = 0; x < 5; ++x)
-        EXPECT_EQ(r.at(layout.cell_x[column] + x, layout.cell_y[row] + y), kSheetEmptyCell);
+      for (int x = 0; x < 5; ++x) EXPECT_EQ(r.at(layout.cell_x[column] + x, layout.cell_y[row] + y), kSheetEmptyCell);
   EXPECT_NE(r.at(layout.cell_x[0], layout.cell_y[1]), kSheetEmptyCell);
   // Only empty cells: still a sheet.
   ContactSheet empty;

@@ -12,9 +12,9 @@
 
 #include "../io/image_test_util.h"
 #include "../io/png_read_util.h"
+#include "skylit/core/error.h"
 #include "skylit/figures/plot.h"
 #include "skylit/figures/plot_layout.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {
@@ -22,7 +22,8 @@ namespace {
 void expect_ticks(double lo, double hi, const std::vector<double>& expected) {
   const std::vector<double> ticks = nice_ticks(lo, hi);
   ASSERT_EQ(ticks.size(), expected.size()) << lo << "–" << hi;
-  for (std::size_t i = 0; i < ticks.size(); ++i) EXPECT_NEAR(ticks[i], expected[i], 1e-12 * (1 + std::abs(expected[i])));
+  for (std::size_t i = 0; i < ticks.size(); ++i)
+    EXPECT_NEAR(ticks[i], expected[i], 1e-12 * (1 + std::abs(expected[i])));
 }
 
 TEST(PlotTicks, AreNiceNumbersWithinTheRange) {

@@ -11,9 +11,9 @@
 
 #include "../io/image_test_util.h"
 #include "../io/png_read_util.h"
+#include "skylit/core/error.h"
 #include "skylit/figures/bitmap_font.h"
 #include "skylit/figures/raster.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {
@@ -116,9 +116,11 @@ TEST(TextRaster, NonAsciiTextIsSubstitutedNotACrash) {
   EXPECT_EQ(font_characters("é"), U"\u25A1");  // not in the font: the box
   EXPECT_EQ(font_characters("漢"), U"\u25A1");
   // Malformed UTF-8: each bad byte a box, and the text after it intact.
-  EXPECT_EQ(font_characters("\xFF" "a"), U"\u25A1a");
-  EXPECT_EQ(font_characters("\xC3"), U"\u25A1");                     // truncated
-  EXPECT_EQ(font_characters("\xC0\xAF"), U"\u25A1\u25A1");           // overlong '/'
+  EXPECT_EQ(font_characters("\xFF"
+                            "a"),
+            U"\u25A1a");
+  EXPECT_EQ(font_characters("\xC3"), U"\u25A1");                      // truncated
+  EXPECT_EQ(font_characters("\xC0\xAF"), U"\u25A1\u25A1");            // overlong '/'
   EXPECT_EQ(font_characters("\xED\xA0\x80"), U"\u25A1\u25A1\u25A1");  // a surrogate
   Raster r(200, 20);
   EXPECT_NO_THROW(draw_text(r, 0, 0, "µ² λ é \xFF\xFE 漢", kInk));

@@ -7,9 +7,9 @@
 #include <random>
 #include <vector>
 
+#include "shadow_test_support.h"
 #include "skylit/geometry/primitives.h"
 #include "skylit/geometry/ray_tracer.h"
-#include "shadow_test_support.h"
 
 namespace skylit {
 namespace {

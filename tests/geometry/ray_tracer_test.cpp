@@ -43,8 +43,8 @@ TEST(RayTracer, HitsBoxAtExpectedDistanceAndNormal) {
   EXPECT_NEAR(hit->t, 10.0, 1e-5);
   EXPECT_NEAR(hit->geometric_normal.z, 1.0, 1e-7);
   const auto& tri = box.triangles[hit->triangle];
-  const Vec3 p = (1 - hit->u - hit->v) * box.vertices[tri[0]] + hit->u * box.vertices[tri[1]] +
-                 hit->v * box.vertices[tri[2]];
+  const Vec3 p =
+      (1 - hit->u - hit->v) * box.vertices[tri[0]] + hit->u * box.vertices[tri[1]] + hit->v * box.vertices[tri[2]];
   EXPECT_NEAR(p.x, 3.3, 1e-5);
   EXPECT_NEAR(p.y, 0.2, 1e-5);
   EXPECT_NEAR(p.z, 1.0, 1e-5);
@@ -71,11 +71,11 @@ TEST(RayTracer, OcclusionOnlyWithinTheSegment) {
   tracer.commit();
   EXPECT_TRUE(tracer.occluded({{0, 0, 0}, {1, 0, 0}}));
   EXPECT_TRUE(tracer.occluded({{0, 0, 0}, {1, 0, 0}, 0, 2.1}));
-  EXPECT_FALSE(tracer.occluded({{0, 0, 0}, {1, 0, 0}, 0, 1.9}));     // stops short
-  EXPECT_FALSE(tracer.occluded({{0, 0, 0}, {1, 0, 0}, 4.1, 100}));   // starts past it
-  EXPECT_FALSE(tracer.occluded({{0, 0, 0}, {-1, 0, 0}}));            // points away
-  EXPECT_FALSE(tracer.occluded({{0, 0, 2}, {1, 0, 0}}));             // passes above
-  EXPECT_TRUE(tracer.occluded({{3, 0, 5}, {0, 0, -1}, 0, 4.5}));     // down onto the roof
+  EXPECT_FALSE(tracer.occluded({{0, 0, 0}, {1, 0, 0}, 0, 1.9}));    // stops short
+  EXPECT_FALSE(tracer.occluded({{0, 0, 0}, {1, 0, 0}, 4.1, 100}));  // starts past it
+  EXPECT_FALSE(tracer.occluded({{0, 0, 0}, {-1, 0, 0}}));           // points away
+  EXPECT_FALSE(tracer.occluded({{0, 0, 2}, {1, 0, 0}}));            // passes above
+  EXPECT_TRUE(tracer.occluded({{3, 0, 5}, {0, 0, -1}, 0, 4.5}));    // down onto the roof
 }
 
 TEST(RayTracer, MeshIdsFollowCallOrderIncludingEmptyMeshes) {

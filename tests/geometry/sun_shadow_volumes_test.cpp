@@ -15,10 +15,10 @@
 #include <thread>
 #include <vector>
 
+#include "shadow_test_support.h"
 #include "skylit/geometry/primitives.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/transform.h"
-#include "shadow_test_support.h"
 
 namespace skylit {
 namespace {
@@ -303,7 +303,8 @@ TEST(ShadowVolumes, OpenQuadWallCastsShadowWhicheverWayItIsWound) {
 // rays above it are untouched, the part of a ray below it is dark.
 TEST(ShadowVolumes, GroundPlaneShadowsOnlyBelowItself) {
   const Vec3 w = direction_from_altitude_azimuth(40, 200);
-  for (const TriangleMesh& ground : {make_ground_plane({0, 0, 0}, 1000), reversed(make_ground_plane({0, 0, 0}, 1000))}) {
+  for (const TriangleMesh& ground :
+       {make_ground_plane({0, 0, 0}, 1000), reversed(make_ground_plane({0, 0, 0}, 1000))}) {
     const SunShadowVolumes volumes({ground}, w);
     const auto above = volumes.sunlit_intervals({{-100, 0, 2}, {1, 0, 0}}, 0, 200);
     ASSERT_EQ(above.size(), 1u);
@@ -389,11 +390,11 @@ TEST(ShadowVolumes, ClosedMeshesCastWithTheirSunFacingHalf) {
 TEST(ShadowVolumes, SharedEdgesAndVerticesLeaveNoCracks) {
   // Sun at the zenith over a subdivided cube: rays lying exactly in the planes swept
   // by shared edges, and through shared vertices.
-  const TriangleMesh cube = transformed(subdivided_cube(8),
-                                        Transform::translation({4, 4, 6}) * Transform::scale({4, 4, 4}));
+  const TriangleMesh cube =
+      transformed(subdivided_cube(8), Transform::translation({4, 4, 6}) * Transform::scale({4, 4, 4}));
   {
     const SunShadowVolumes volumes({cube}, {0, 0, 1});
-    EXPECT_EQ(volumes.volume_count(), 128u);  // the roof; walls are edge-on, floor faces away
+    EXPECT_EQ(volumes.volume_count(), 128u);      // the roof; walls are edge-on, floor faces away
     for (double y : {0.0, 1.0, 3.0, 4.0, 8.0}) {  // grid lines of the roof, including its edges
       const auto lit = volumes.sunlit_intervals({{-5, y, 1}, {1, 0, 0}}, 0, 18);
       ASSERT_EQ(lit.size(), 2u) << "y = " << y;
@@ -407,9 +408,9 @@ TEST(ShadowVolumes, SharedEdgesAndVerticesLeaveNoCracks) {
     EXPECT_NEAR(diag[1].begin, 10, kTol);
   }
   // Turned cube, oblique sun, random rays across its shadow.
-  const TriangleMesh turned = transformed(subdivided_cube(6), Transform::translation({0, 0, 8}) *
-                                                                   Transform::rotation_xyz_deg({17, 29, 41}) *
-                                                                   Transform::scale({3, 3, 3}));
+  const TriangleMesh turned =
+      transformed(subdivided_cube(6), Transform::translation({0, 0, 8}) * Transform::rotation_xyz_deg({17, 29, 41}) *
+                                          Transform::scale({3, 3, 3}));
   const Vec3 w = direction_from_altitude_azimuth(37, 151);
   const SunShadowVolumes volumes({turned}, w);
   std::mt19937 rng(11);

@@ -59,8 +59,8 @@ TEST(ImageExr, WritesAbsoluteLinearSrgbAndLuminanceAsFloat) {
   // Linear sRGB, absolute (cd/m² weights): a dim grey, a sky blue, sunlit foliage, a
   // colour outside the sRGB gamut (negative R must survive: EXR is linear), black, and
   // the sun's disc at ~1.6e9 cd/m², far above half float's 65504.
-  const std::vector<Rgb> colours{{0.01, 0.01, 0.01},   {2000, 3500, 7000}, {30, 60, 12},
-                                 {-5, 40, 10},         {0, 0, 0},          {1.7e9, 1.6e9, 1.4e9}};
+  const std::vector<Rgb> colours{{0.01, 0.01, 0.01}, {2000, 3500, 7000}, {30, 60, 12},
+                                 {-5, 40, 10},       {0, 0, 0},          {1.7e9, 1.6e9, 1.4e9}};
   // 20 rows span two of ZIP's 16-line chunks, the second one partial.
   XyzImage image(int(colours.size()), 20);
   for (int y = 0; y < image.height; ++y)

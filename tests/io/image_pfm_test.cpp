@@ -40,8 +40,7 @@ TEST(ImagePfm, HeaderLayoutAndBottomToTopRows) {
     for (int x = 0; x < 3; ++x)
       for (int c = 0; c < 3; ++c) {
         const std::size_t at = header.size() + 4 * (3 * (3 * stored_row + x) + c);
-        const double scale = std::max({std::abs(expected[x][0]), std::abs(expected[x][1]),
-                                       std::abs(expected[x][2])});
+        const double scale = std::max({std::abs(expected[x][0]), std::abs(expected[x][1]), std::abs(expected[x][2])});
         EXPECT_NEAR(little_endian_float(bytes, at), expected[x][c], 2e-6 * scale)
             << "stored row " << stored_row << " x " << x << " channel " << c;
       }

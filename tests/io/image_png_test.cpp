@@ -1,8 +1,8 @@
 // PNG output read back with libpng (simplified read API) and its chunks listed by hand:
 // automatic exposure puts a uniform grey at sRGB 118 (0.18 encoded), a given EV maps
 // luminance by 1/(1.2·2^EV) and the documented curve, and the file is deterministic.
-#include <png.h>
 #include <gtest/gtest.h>
+#include <png.h>
 
 #include "png_read_util.h"
 
@@ -67,8 +67,7 @@ TEST(ImagePng, GivenExposureFollowsTheFormula) {
   ASSERT_EQ(png.rgb.size(), 3 * exposed.size());
   for (int x = 0; x < image.width; ++x) {
     const double expected = expected_code_value(exposed[x] * 1228.8, ev);
-    for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(png.rgb[3 * x + c], expected, 0.51) << "exposed " << exposed[x];
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(png.rgb[3 * x + c], expected, 0.51) << "exposed " << exposed[x];
   }
   EXPECT_EQ(png.rgb[3 * 2], 118);  // 0.18 below the knee is untouched by the curve
   EXPECT_LT(png.rgb[3 * 7], 255);  // twice saturation is still below white...

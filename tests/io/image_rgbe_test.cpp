@@ -43,8 +43,7 @@ HdrFile decode_hdr(const std::vector<uint8_t>& bytes) {
   for (int y = 0; y < out.height; ++y) {
     auto* row = &out.rgbe[std::size_t(y) * out.width];
     const bool may_encode = out.width >= 8 && out.width <= 0x7fff;
-    if (may_encode && pos + 2 < bytes.size() && bytes[pos] == 2 && bytes[pos + 1] == 2 &&
-        !(bytes[pos + 2] & 0x80)) {
+    if (may_encode && pos + 2 < bytes.size() && bytes[pos] == 2 && bytes[pos + 1] == 2 && !(bytes[pos + 2] & 0x80)) {
       ++out.encoded_rows;
       pos += 2;
       const int length = next() << 8;
@@ -77,15 +76,12 @@ Rgb colr_color(const std::array<uint8_t, 4>& p) {
   return {(p[0] + 0.5) * f, (p[1] + 0.5) * f, (p[2] + 0.5) * f};
 }
 
-double radiance_luminance(const Rgb& rgb) {
-  return 179.0 * (0.265 * rgb[0] + 0.670 * rgb[1] + 0.065 * rgb[2]);
-}
+double radiance_luminance(const Rgb& rgb) { return 179.0 * (0.265 * rgb[0] + 0.670 * rgb[1] + 0.065 * rgb[2]); }
 
 // A 40 × 3 image (long enough for run-length rows) with runs and non-runs: a block of
 // one grey, then assorted colours, then a luminance ramp over ten decades.
 XyzImage varied_image() {
-  const std::vector<Rgb> colours{{0.2, 0.4, 0.8}, {1.0, 0.8, 0.6}, {0.1, 0.3, 0.05},
-                                 {0.5, 0.5, 0.5}, {0.7, 0.6, 0.2}};
+  const std::vector<Rgb> colours{{0.2, 0.4, 0.8}, {1.0, 0.8, 0.6}, {0.1, 0.3, 0.05}, {0.5, 0.5, 0.5}, {0.7, 0.6, 0.2}};
   XyzImage image(40, 3);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -183,8 +179,7 @@ TEST(ImageRgbe, UniformRowsCompressToRuns) {
   // Per row: 4 marker bytes + 4 components × 3 runs (127 + 127 + 46) × 2 bytes = 28.
   const std::size_t header_size = bytes.size() - 2 * 28;
   const std::string resolution = "-Y 2 +X 300\n";
-  EXPECT_EQ(std::string(bytes.begin() + header_size - resolution.size(), bytes.begin() + header_size),
-            resolution);
+  EXPECT_EQ(std::string(bytes.begin() + header_size - resolution.size(), bytes.begin() + header_size), resolution);
   for (const auto& p : hdr.rgbe) EXPECT_EQ(p, hdr.rgbe[0]);
 }
 

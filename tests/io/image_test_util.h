@@ -20,8 +20,7 @@ namespace skylit::test {
 class ScratchFolder {
  public:
   explicit ScratchFolder(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
-              ("skylit-io-test-" + std::to_string(::getpid())) / name) {
+      : path_(std::filesystem::temp_directory_path() / ("skylit-io-test-" + std::to_string(::getpid())) / name) {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -47,8 +46,7 @@ inline std::vector<uint8_t> read_bytes(const std::filesystem::path& path) {
 // Names of everything in `dir`, sorted (hidden temporaries included).
 inline std::vector<std::string> listing(const std::filesystem::path& dir) {
   std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(dir))
-    names.push_back(entry.path().filename().string());
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }

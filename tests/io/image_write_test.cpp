@@ -3,18 +3,18 @@
 // target left on success, and the same bytes for the same image. Also XyzImage itself.
 #include <gtest/gtest.h>
 
-#include "../test_support.h"
 #include <sys/stat.h>
 #include <unistd.h>
+#include "../test_support.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "image_test_util.h"
+#include "skylit/core/error.h"
 #include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {
@@ -104,8 +104,7 @@ TEST(ImageWrite, BadImagesAndExposureAreRefusedBeforeAnyFileExists) {
   XyzImage wrong_size(2, 2);
   wrong_size.xyz.pop_back();
   EXPECT_THROW(write_image(wrong_size, dir / "wrong.exr"), std::invalid_argument);
-  EXPECT_THROW(write_image(test::grey_image(2, 2, 1), dir / "ev.png", DisplayOptions{INFINITY}),
-               InputError);
+  EXPECT_THROW(write_image(test::grey_image(2, 2, 1), dir / "ev.png", DisplayOptions{INFINITY}), InputError);
   EXPECT_TRUE(test::listing(dir.path()).empty());
 }
 
@@ -128,7 +127,7 @@ TEST(ImageAtomicFile, UncommittedLeavesTheOldFileAndNoTemporary) {
     AtomicFile file(dir / "out.png");
     EXPECT_TRUE(std::filesystem::exists(file.temporary()));
     EXPECT_EQ(file.temporary().parent_path(), dir.path());  // same folder: atomic rename
-  }  // e.g. an exception while encoding
+  }                                                         // e.g. an exception while encoding
   EXPECT_EQ(test::listing(dir.path()), std::vector<std::string>{"out.png"});
   const std::vector<uint8_t> old = test::read_bytes(dir / "out.png");
   EXPECT_EQ(std::string(old.begin(), old.end()), "old");

@@ -90,7 +90,8 @@ std::string triangle_buffer(float first_x = 0.0f) {
 std::string triangle_gltf(const std::string& buffer_json, const std::string& nodes,
                           const std::string& extra_primitive = "", size_t position_count = 3) {
   return R"({"asset": {"version": "2.0"},
-  "buffers": [)" + buffer_json + R"(],
+  "buffers": [)" +
+         buffer_json + R"(],
   "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
                   {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
   "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" +
@@ -98,12 +99,13 @@ std::string triangle_gltf(const std::string& buffer_json, const std::string& nod
                 {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1})" +
          extra_primitive + R"(]}],
-  )" + nodes + "}";
+  )" + nodes +
+         "}";
 }
 
 std::string embedded(const std::string& bytes) {
-  return R"({"byteLength": )" + std::to_string(bytes.size()) +
-         R"(, "uri": "data:application/octet-stream;base64,)" + base64(bytes) + R"("})";
+  return R"({"byteLength": )" + std::to_string(bytes.size()) + R"(, "uri": "data:application/octet-stream;base64,)" +
+         base64(bytes) + R"("})";
 }
 
 const std::string kTranslatedNode =
@@ -153,8 +155,9 @@ TEST_F(MeshIo, ObjBadIndexOrHugeCoordinateIsInputError) {
 TEST_F(MeshIo, ObjKeepsDoublePrecisionSiteCoordinates) {
   // Survey coordinates far from the origin, to be moved back by the scene's
   // transform: float would round 4200000.125 to 4200000.0.
-  const fs::path p = write("site.obj", "v 500123.25 4200000.125 12.5\r\nv +500124.25 4200000.125 12.5 1.0\r\n"
-                                       "v 500123.25 4200001.125 1.25e1\r\nf 1 2 3\r\n");
+  const fs::path p = write("site.obj",
+                           "v 500123.25 4200000.125 12.5\r\nv +500124.25 4200000.125 12.5 1.0\r\n"
+                           "v 500123.25 4200001.125 1.25e1\r\nf 1 2 3\r\n");
   const TriangleMesh m = load_mesh_file(p, UpAxis::z);
   ASSERT_EQ(m.vertices.size(), 3u);
   EXPECT_EQ(m.vertices[0], Vec3(500123.25, 4200000.125, 12.5));
@@ -198,8 +201,8 @@ TEST_F(MeshIo, GltfHierarchyComposesParentThenChild) {
   // then rotate about Y by 90°: x → -z, so (0,0,-2). The other order would give
   // (1,0,0).
   const double s = std::sqrt(0.5);
-  const std::string nodes = R"("nodes": [{"children": [1], "scale": [2, 2, 2], "rotation": [0, )" +
-                            std::to_string(s) + ", 0, " + std::to_string(s) + R"(]},
+  const std::string nodes = R"("nodes": [{"children": [1], "scale": [2, 2, 2], "rotation": [0, )" + std::to_string(s) +
+                            ", 0, " + std::to_string(s) + R"(]},
     {"mesh": 0, "matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 1,0,0,1]}], "scenes": [{"nodes": [0]}])";
   const fs::path p = write("tree.gltf", triangle_gltf(embedded(triangle_buffer()), nodes));
   const TriangleMesh m = load_mesh_file(p, UpAxis::z);
@@ -221,7 +224,8 @@ TEST_F(MeshIo, GltfSkipsNonTrianglePrimitives) {
   EXPECT_EQ(load_mesh_file(p, UpAxis::y).triangles.size(), 1u);
 
   const std::string only_lines = R"({"asset": {"version": "2.0"},
-    "buffers": [)" + embedded(triangle_buffer()) + R"(],
+    "buffers": [)" + embedded(triangle_buffer()) +
+                                 R"(],
     "bufferViews": [{"buffer": 0, "byteLength": 36}],
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 0}]}],
@@ -252,7 +256,8 @@ TEST_F(MeshIo, GltfQuantizedPositionsAreScaledByTheNode) {
   for (uint16_t v : {0, 0, 0, 0, 4, 0, 0, 0, 0, 4, 0, 0}) put(b, v);
   const std::string json = R"({"asset": {"version": "2.0"},
     "extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],
-    "buffers": [)" + embedded(b) + R"(],
+    "buffers": [)" + embedded(b) +
+                           R"(],
     "bufferViews": [{"buffer": 0, "byteLength": 24, "byteStride": 8}],
     "accessors": [{"bufferView": 0, "componentType": 5123, "count": 3, "type": "VEC3"}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
@@ -292,7 +297,9 @@ TEST_F(MeshIo, MissingFileIsInputErrorNamingIt) {
 TEST_F(MeshIo, GarbageFilesAreInputErrorsNamingThem) {
   expect_input_error(write("garbage.gltf", "{ this is not json"));
   expect_input_error(write("garbage.glb", std::string("glTF\x02\0\0\0\xff\xff", 10)));
-  expect_input_error(write("garbage.obj", std::string("\x7f" "ELF\x01\x02 binary junk\n")), "no triangles");
+  expect_input_error(write("garbage.obj", std::string("\x7f"
+                                                      "ELF\x01\x02 binary junk\n")),
+                     "no triangles");
   expect_input_error(write("model.stl", "solid x\nendsolid x\n"), "extension");
 }
 

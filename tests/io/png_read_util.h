@@ -2,8 +2,8 @@
 // contact sheets, rasters): the pixels as 8-bit RGB, rows top to bottom.
 #pragma once
 
-#include <png.h>
 #include <gtest/gtest.h>
+#include <png.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -25,8 +25,7 @@ inline Raster read_png_raster(const std::filesystem::path& path) {
   out.width = int(image.width);
   out.height = int(image.height);
   out.rgb.resize(PNG_IMAGE_SIZE(image));
-  if (!png_image_finish_read(&image, nullptr, out.rgb.data(), 0, nullptr))
-    ADD_FAILURE() << "libpng: " << image.message;
+  if (!png_image_finish_read(&image, nullptr, out.rgb.data(), 0, nullptr)) ADD_FAILURE() << "libpng: " << image.message;
   return out;
 }
 

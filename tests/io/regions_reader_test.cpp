@@ -42,19 +42,22 @@ TEST(RegionsFile, MistakesNameTheFileAndThePlace) {
     return input_error_of([&] { read_regions_file(file, 4, 3); });
   };
   const std::string f = (dir.path() / "regions.json").string();
-  EXPECT_EQ(error_of(R"({"regions": [{"name": "a", "rect": [0, 0, 1, 1]}, {"name": "b", "rect": [0, 0, 5, 1]}]})"),
-            f + ": regions[1].rect: [0, 0, 5, 1] reaches outside the 4x3 images (x0, x1 from 0 to 4, y0, y1 from 0 to 3)");
+  EXPECT_EQ(
+      error_of(R"({"regions": [{"name": "a", "rect": [0, 0, 1, 1]}, {"name": "b", "rect": [0, 0, 5, 1]}]})"),
+      f + ": regions[1].rect: [0, 0, 5, 1] reaches outside the 4x3 images (x0, x1 from 0 to 4, y0, y1 from 0 to 3)");
   EXPECT_EQ(error_of(R"({"regions": [{"name": "a", "rect": [2, 0, 2, 1]}]})"),
             f + ": regions[0].rect: [2, 0, 2, 1] is empty; expected x0 < x1 and y0 < y1 (half-open pixel ranges)");
-  EXPECT_NE(error_of(R"({"regions": [{"name": "a", "rect": [0, 0, 1.5, 1]}]})").find("regions[0].rect[2]: expected an integer"),
+  EXPECT_NE(error_of(R"({"regions": [{"name": "a", "rect": [0, 0, 1.5, 1]}]})")
+                .find("regions[0].rect[2]: expected an integer"),
             std::string::npos);
   EXPECT_NE(error_of(R"({"regions": [{"name": "a", "rect": [0, 0, 1, 1]}, {"name": "a", "rect": [0, 0, 1, 1]}]})")
                 .find("regions[1].name: the name \"a\" is used twice"),
             std::string::npos);
   EXPECT_NE(error_of(R"({"regions": [{"name": "a"}]})").find("regions[0]: expected exactly one of 'rect'"),
             std::string::npos);
-  EXPECT_NE(error_of(R"({"regions": [{"name": "a", "rectangle": [0, 0, 1, 1]}]})").find("regions[0].rectangle: unknown key"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(R"({"regions": [{"name": "a", "rectangle": [0, 0, 1, 1]}]})").find("regions[0].rectangle: unknown key"),
+      std::string::npos);
   EXPECT_NE(error_of(R"({"regions": [{"name": "a", "rect_fraction": [0, 0, 1.5, 1]}]})")
                 .find("regions[0].rect_fraction[2]: expected a number from 0 to 1"),
             std::string::npos);

@@ -4,9 +4,9 @@
 
 #include "../test_support.h"
 #include "skylit/atmosphere/optical_properties.h"
-#include "skylit/sun/solar_position.h"
-#include "skylit/io/scene/scene_loader.h"
 #include "skylit/core/error.h"
+#include "skylit/io/scene/scene_loader.h"
+#include "skylit/sun/solar_position.h"
 
 namespace skylit {
 namespace {
@@ -25,8 +25,10 @@ std::string load_error(const std::string& text) {
 
 TEST(SceneAtmosphere, SiteAndTimePlaceTheSun) {
   testing::TempDir dir;
-  const Scene scene = load_scene(dir.write("scene.json", scene_with(
-      R"("site": {"latitude_deg": 34.39, "longitude_deg": 132.46, "elevation_m": 30}, "time": "2026-06-21T07:00:00+09:00",)")));
+  const Scene scene = load_scene(dir.write(
+      "scene.json",
+      scene_with(
+          R"("site": {"latitude_deg": 34.39, "longitude_deg": 132.46, "elevation_m": 30}, "time": "2026-06-21T07:00:00+09:00",)")));
   SiteLocation site{34.39, 132.46, 30};
   const SolarPosition expected = solar_position(site, parse_offset_date_time("2026-06-21T07:00:00+09:00", "test"));
   EXPECT_DOUBLE_EQ(scene.sun.altitude_deg, expected.altitude_deg);
@@ -42,8 +44,10 @@ TEST(SceneAtmosphere, SiteAndTimePlaceTheSun) {
 
 TEST(SceneAtmosphere, AtmosphereSettingsAreRead) {
   testing::TempDir dir;
-  const Scene scene = load_scene(dir.write("scene.json", testing::small_scene_json() .replace(1, 0,
-      R"( "atmosphere": {"model": "paper", "aod_550": 0.3, "angstrom_exponent": 1.0, "ozone_du": 250,
+  const Scene scene = load_scene(dir.write(
+      "scene.json", testing::small_scene_json().replace(
+                        1, 0,
+                        R"( "atmosphere": {"model": "paper", "aod_550": 0.3, "angstrom_exponent": 1.0, "ozone_du": 250,
           "ground_albedo": 0.3, "aerosol_phase": "henyey_greenstein", "asymmetry": 0.7},)")));
   EXPECT_EQ(scene.atmosphere.model, AtmosphereModel::paper);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.aod_550, 0.3);
@@ -55,8 +59,8 @@ TEST(SceneAtmosphere, AtmosphereSettingsAreRead) {
 
 TEST(SceneAtmosphere, VisibilityBecomesAnOpticalDepth) {
   testing::TempDir dir;
-  const Scene scene = load_scene(dir.write("scene.json",
-      testing::small_scene_json().replace(1, 0, R"( "atmosphere": {"visibility_km": 10},)")));
+  const Scene scene = load_scene(
+      dir.write("scene.json", testing::small_scene_json().replace(1, 0, R"( "atmosphere": {"visibility_km": 10},)")));
   // Koschmieder: 3.912/10 km = 3.912e-4 m⁻¹ at the ground, less Rayleigh (1.2e-5), over 1.2 km.
   EXPECT_NEAR(scene.atmosphere.aerosol.aod_550, (3.912e-4 - 0.0971 / 7994) * 1200, 0.002);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.aod_550, aod_550_from_visibility(10, 1200));
@@ -65,18 +69,24 @@ TEST(SceneAtmosphere, VisibilityBecomesAnOpticalDepth) {
 TEST(SceneAtmosphere, MistakesAreNamed) {
   EXPECT_NE(load_error(scene_with(R"("time": "2026-06-21T07:00:00Z",)")).find("time: a time needs a site"),
             std::string::npos);
-  EXPECT_NE(load_error(scene_with(R"("sun": {"altitude_deg": 4, "azimuth_deg": 90}, "site": {"latitude_deg": 0, "longitude_deg": 0}, "time": "2026-06-21T07:00:00Z",)"))
-                .find("sun: give either the sun's position or a site and a time"),
-            std::string::npos);
-  const std::string no_offset = load_error(scene_with(R"("site": {"latitude_deg": 0, "longitude_deg": 0}, "time": "2026-06-21T07:00:00",)"));
+  EXPECT_NE(
+      load_error(
+          scene_with(
+              R"("sun": {"altitude_deg": 4, "azimuth_deg": 90}, "site": {"latitude_deg": 0, "longitude_deg": 0}, "time": "2026-06-21T07:00:00Z",)"))
+          .find("sun: give either the sun's position or a site and a time"),
+      std::string::npos);
+  const std::string no_offset =
+      load_error(scene_with(R"("site": {"latitude_deg": 0, "longitude_deg": 0}, "time": "2026-06-21T07:00:00",)"));
   EXPECT_NE(no_offset.find("scene.json: time"), std::string::npos) << no_offset;
   EXPECT_NE(no_offset.find("UTC offset"), std::string::npos) << no_offset;
-  EXPECT_NE(load_error(scene_with(R"("site": {"latitude_deg": 95, "longitude_deg": 0}, "time": "2026-06-21T07:00:00Z",)"))
-                .find("site.latitude_deg: expected a number from -90 to 90"),
-            std::string::npos);
-  EXPECT_NE(load_error(testing::small_scene_json().replace(1, 0, R"( "atmosphere": {"aod_550": 0.2, "visibility_km": 5},)"))
-                .find("atmosphere: give one of aod_550, visibility_km, linke_turbidity"),
-            std::string::npos);
+  EXPECT_NE(
+      load_error(scene_with(R"("site": {"latitude_deg": 95, "longitude_deg": 0}, "time": "2026-06-21T07:00:00Z",)"))
+          .find("site.latitude_deg: expected a number from -90 to 90"),
+      std::string::npos);
+  EXPECT_NE(
+      load_error(testing::small_scene_json().replace(1, 0, R"( "atmosphere": {"aod_550": 0.2, "visibility_km": 5},)"))
+          .find("atmosphere: give one of aod_550, visibility_km, linke_turbidity"),
+      std::string::npos);
   EXPECT_NE(load_error(testing::small_scene_json().replace(1, 0, R"( "atmosphere": {"model": "klassen"},)"))
                 .find("atmosphere.model: expected one of: full, paper"),
             std::string::npos);

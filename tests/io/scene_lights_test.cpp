@@ -5,9 +5,9 @@
 #include <string>
 
 #include "../test_support.h"
+#include "skylit/core/error.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/spectrum/cie.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {
@@ -25,14 +25,12 @@ std::string load_error(const TempDir& dir, const std::string& text) {
   return testing::input_error_of([&] { load_scene(dir.write("scene.json", text)); });
 }
 
-const char* kIsotropicIes =
-    "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 50\n0 90\n0\n500 500\n";
+const char* kIsotropicIes = "IESNA:LM-63-2002\nTILT=NONE\n1 -1 1 2 1 1 2 0 0 0\n1 1 50\n0 90\n0\n500 500\n";
 
 TEST(SceneLights, ReadsFilesShapesLumensAndSpectra) {
   TempDir dir;
   dir.write("iso.ies", kIsotropicIes);
-  const Scene scene = load_scene(dir.write(
-      "scene.json", with_lights(R"([
+  const Scene scene = load_scene(dir.write("scene.json", with_lights(R"([
         {"name": "a", "position": [1, 2, 6], "ies": "iso.ies", "lamp": "high_pressure_sodium"},
         {"position": [0, 0, 1], "aim": [0, -1, 0], "shape": "spot", "candela": 20000, "inner_deg": 5,
          "outer_deg": 12, "lamp": "halogen"},
@@ -64,14 +62,16 @@ TEST(SceneLights, MistakesNameTheFileAndPlace) {
        "exactly one of"},
       {R"([{"position": [0, 0, 5], "ies": "missing.ies", "lamp": "led"}])", "missing.ies:1: cannot open the IES file"},
       {R"([{"position": [0, 0, 5], "ies": "bad.ies", "lamp": "led"}])", "bad.ies:5:"},
-      {R"([{"position": [0, 0, 5], "shape": "isotropic", "candela": 1, "lamp": "sodium"}])", "lights[0].lamp: expected a lamp type"},
+      {R"([{"position": [0, 0, 5], "shape": "isotropic", "candela": 1, "lamp": "sodium"}])",
+       "lights[0].lamp: expected a lamp type"},
       {R"([{"position": [0, 0, 5], "shape": "isotropic", "candela": 1, "lamp": "led", "temperature_k": 2000}])",
        "lights[0].temperature_k"},
       {R"([{"position": [0, 0, 5], "shape": "isotropic", "candela": 1, "lamp": "halogen", "temperature_k": 3000}])",
        "only an led or a blackbody"},
       {R"([{"position": [0, 0, 5], "shape": "spot", "candela": 1, "inner_deg": 20, "outer_deg": 10, "lamp": "led"}])",
        "outer_deg must not be below inner_deg"},
-      {R"([{"position": [0, 0, 5], "ies": "x.ies", "inner_deg": 5, "lamp": "led"}])", "only a spot shape has cone angles"},
+      {R"([{"position": [0, 0, 5], "ies": "x.ies", "inner_deg": 5, "lamp": "led"}])",
+       "only a spot shape has cone angles"},
       {R"([{"position": [0, 0, 5], "aim": [0, 0, 0], "shape": "isotropic", "candela": 1, "lamp": "led"}])",
        "lights[0].aim"},
       {R"([{"position": [0, 0, 5], "aim": [1e200, 1e200, 1e200], "shape": "isotropic", "candela": 1, "lamp": "led"}])",

@@ -72,7 +72,8 @@ TEST(SceneLoader, WrongTypeNamesPathAndExpectation) {
 }
 
 TEST(SceneLoader, OutOfRangeValueIsRejected) {
-  const std::string msg = load_error(replace(testing::small_scene_json(), "\"altitude_deg\": 40", "\"altitude_deg\": 95"));
+  const std::string msg =
+      load_error(replace(testing::small_scene_json(), "\"altitude_deg\": 40", "\"altitude_deg\": 95"));
   EXPECT_NE(msg.find("sun.altitude_deg: expected a number from -90 to 90"), std::string::npos) << msg;
 }
 
@@ -84,34 +85,39 @@ TEST(SceneLoader, MissingRequiredPartIsNamed) {
 }
 
 TEST(SceneLoader, UnknownMaterialListsTheKnownOnes) {
-  const std::string msg = load_error(replace(testing::small_scene_json(), "\"material\": \"red\"", "\"material\": \"bricks\""));
-  EXPECT_NE(msg.find("objects[1].material: unknown material 'bricks'; known materials: red, white"),
-            std::string::npos) << msg;
+  const std::string msg =
+      load_error(replace(testing::small_scene_json(), "\"material\": \"red\"", "\"material\": \"bricks\""));
+  EXPECT_NE(msg.find("objects[1].material: unknown material 'bricks'; known materials: red, white"), std::string::npos)
+      << msg;
 }
 
 TEST(SceneLoader, MissingMeshFileNamesItsPath) {
-  const std::string msg = load_error(replace(testing::small_scene_json(), "{\"type\": \"plane\", \"material\": \"white\", \"size_m\": 200}",
-                                             "{\"type\": \"mesh\", \"material\": \"white\", \"file\": \"no_such_tower.obj\"}"));
+  const std::string msg =
+      load_error(replace(testing::small_scene_json(), "{\"type\": \"plane\", \"material\": \"white\", \"size_m\": 200}",
+                         "{\"type\": \"mesh\", \"material\": \"white\", \"file\": \"no_such_tower.obj\"}"));
   EXPECT_NE(msg.find("no_such_tower.obj"), std::string::npos) << msg;
 }
 
 TEST(SceneLoader, BadReflectanceIsRejected) {
-  const std::string msg = load_error(replace(testing::small_scene_json(), "\"reflectance\": 0.8", "\"reflectance\": 1.5"));
+  const std::string msg =
+      load_error(replace(testing::small_scene_json(), "\"reflectance\": 0.8", "\"reflectance\": 1.5"));
   EXPECT_NE(msg.find("materials.white.reflectance: expected a number from 0 to 1"), std::string::npos) << msg;
-  const std::string msg2 = load_error(replace(testing::small_scene_json(), "\"reflectance\": 0.8", "\"reflectance\": \"#12345\""));
+  const std::string msg2 =
+      load_error(replace(testing::small_scene_json(), "\"reflectance\": 0.8", "\"reflectance\": \"#12345\""));
   EXPECT_NE(msg2.find("expected a colour '#rrggbb'"), std::string::npos) << msg2;
 }
 
 TEST(SceneLoader, DegenerateCameraIsRejected) {
-  const std::string msg = load_error(replace(testing::small_scene_json(), "[0, 0, 3], \"vertical", "[0, -20, 2], \"vertical"));
+  const std::string msg =
+      load_error(replace(testing::small_scene_json(), "[0, 0, 3], \"vertical", "[0, -20, 2], \"vertical"));
   EXPECT_NE(msg.find("camera.look_at: look_at must differ from position"), std::string::npos) << msg;
 }
 
 TEST(SceneLoader, OverridesChangeValuesBeforeValidation) {
   TempDir dir;
   const auto file = dir.write("scene.json", testing::small_scene_json());
-  const Scene scene = load_scene(file, {"sun.altitude_deg=4", "render.width=640", "objects.1.material=white",
-                                        "render.exposure_ev=2.5"});
+  const Scene scene = load_scene(
+      file, {"sun.altitude_deg=4", "render.width=640", "objects.1.material=white", "render.exposure_ev=2.5"});
   EXPECT_DOUBLE_EQ(scene.sun.altitude_deg, 4);
   EXPECT_EQ(scene.render.width, 640);
   EXPECT_EQ(scene.materials[scene.objects[1].material_index].name, "white");
@@ -119,13 +125,15 @@ TEST(SceneLoader, OverridesChangeValuesBeforeValidation) {
 }
 
 TEST(SceneLoader, BadOverridesAreErrors) {
-  EXPECT_NE(load_error(testing::small_scene_json(), {"sun.altitude_deg"}).find("--set sun.altitude_deg: expected path=value"),
-            std::string::npos);
+  EXPECT_NE(
+      load_error(testing::small_scene_json(), {"sun.altitude_deg"}).find("--set sun.altitude_deg: expected path=value"),
+      std::string::npos);
   EXPECT_NE(load_error(testing::small_scene_json(), {"objects.7.material=white"}).find("not an index of an array of 2"),
             std::string::npos);
   // An override is validated like the file's own values.
-  EXPECT_NE(load_error(testing::small_scene_json(), {"sun.altitude_deg=high"}).find("sun.altitude_deg: expected a number"),
-            std::string::npos);
+  EXPECT_NE(
+      load_error(testing::small_scene_json(), {"sun.altitude_deg=high"}).find("sun.altitude_deg: expected a number"),
+      std::string::npos);
   EXPECT_NE(load_error(testing::small_scene_json(), {"sun.elevation=3"}).find("sun.elevation: unknown key"),
             std::string::npos);
 }

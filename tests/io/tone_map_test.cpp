@@ -24,8 +24,8 @@ TEST(ImageToneMap, LogAverageLuminanceSkipsNonFiniteAndCountsNegativeAsZero) {
   XyzImage image(4, 1);
   image.set(0, 0, {0, 1, 0});
   image.set(1, 0, {0, 100, 0});
-  image.set(2, 0, {NAN, 5, 0});    // skipped
-  image.set(3, 0, {0, -50, 0});    // counts as black: log δ
+  image.set(2, 0, {NAN, 5, 0});  // skipped
+  image.set(3, 0, {0, -50, 0});  // counts as black: log δ
   const double d = kLogAverageDelta;
   const double expected = std::exp((std::log(1 + d) + std::log(100 + d) + std::log(d)) / 3);
   EXPECT_NEAR(log_average_luminance(image), expected, 1e-12 * expected);

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "skylit/core/error.h"
 #include "../test_support.h"
+#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {
@@ -22,16 +22,22 @@ using skylit::testing::TempDir;
 // A complete file: header lines 1–26, one lamp set, direct ratios, the angles and
 // the given planes of intensities (cd/klm).
 std::string ldt(int isym, const std::vector<double>& c_angles, const std::vector<double>& gammas,
-                const std::vector<std::vector<double>>& planes, double lamp_lumens = 1000, const std::string& lorl = "100") {
+                const std::vector<std::vector<double>>& planes, double lamp_lumens = 1000,
+                const std::string& lorl = "100") {
   std::ostringstream o;
-  o << "Skylit test company\n1\n" << isym << "\n" << c_angles.size() << "\n"
-    << (c_angles.size() > 1 ? c_angles[1] - c_angles[0] : 0) << "\n" << gammas.size() << "\n"
+  o << "Skylit test company\n1\n"
+    << isym << "\n"
+    << c_angles.size() << "\n"
+    << (c_angles.size() > 1 ? c_angles[1] - c_angles[0] : 0) << "\n"
+    << gammas.size() << "\n"
     << (gammas[1] - gammas[0]) << "\n"
     << "report 1\nTest luminaire\nLUM-1\ntest.ldt\n2026-11-22 skylit\n"
     << "300\n0\n100\n250\n0\n50\n50\n50\n50\n"  // lines 13–21
-    << "100\n" << lorl << "\n1.0\n0\n"          // DFF, LORL, CFLI, tilt
-    << "1\n"                                     // one lamp set
-    << "1\nLED 4000K\n" << lamp_lumens << "\n4000K\n80\n25\n";
+    << "100\n"
+    << lorl << "\n1.0\n0\n"  // DFF, LORL, CFLI, tilt
+    << "1\n"                 // one lamp set
+    << "1\nLED 4000K\n"
+    << lamp_lumens << "\n4000K\n80\n25\n";
   for (int k = 0; k < 10; ++k) o << "0.5\n";
   for (double c : c_angles) o << c << "\n";
   for (double g : gammas) o << g << "\n";
@@ -78,15 +84,17 @@ TEST(EulumdatReader, ReadsEachSymmetry) {
     EXPECT_DOUBLE_EQ(d.candela(270, 10), 300);
   }
   {  // Isym 2: C0–C180.
-    const auto d = parse_eulumdat(ldt(2, kFourC, kGammas, {constant(7, 100), constant(7, 200), constant(7, 300)}), "b.ldt")
-                       .distribution;
+    const auto d =
+        parse_eulumdat(ldt(2, kFourC, kGammas, {constant(7, 100), constant(7, 200), constant(7, 300)}), "b.ldt")
+            .distribution;
     EXPECT_EQ(d.symmetry(), CSymmetry::kBilateral0_180);
     EXPECT_DOUBLE_EQ(d.candela(270, 10), 200);
     EXPECT_DOUBLE_EQ(d.candela(225, 10), 250);
   }
   {  // Isym 3: planes Mc1 = 3Mc/4+1 … Mc1+Mc/2, i.e. C270, C0, C90.
-    const auto d = parse_eulumdat(ldt(3, kFourC, kGammas, {constant(7, 30), constant(7, 20), constant(7, 10)}), "b90.ldt")
-                       .distribution;
+    const auto d =
+        parse_eulumdat(ldt(3, kFourC, kGammas, {constant(7, 30), constant(7, 20), constant(7, 10)}), "b90.ldt")
+            .distribution;
     EXPECT_EQ(d.symmetry(), CSymmetry::kBilateral90_270);
     EXPECT_DOUBLE_EQ(d.candela(270, 10), 30);
     EXPECT_DOUBLE_EQ(d.candela(0, 10), 20);
@@ -95,9 +103,10 @@ TEST(EulumdatReader, ReadsEachSymmetry) {
     EXPECT_DOUBLE_EQ(d.candela(135, 10), 15);  // mirror of C45
   }
   {  // Isym 0: all planes; wraps from C270 to C360.
-    const auto d = parse_eulumdat(
-                       ldt(0, kFourC, kGammas, {constant(7, 1), constant(7, 2), constant(7, 3), constant(7, 4)}, 2000), "n.ldt")
-                       .distribution;
+    const auto d =
+        parse_eulumdat(ldt(0, kFourC, kGammas, {constant(7, 1), constant(7, 2), constant(7, 3), constant(7, 4)}, 2000),
+                       "n.ldt")
+            .distribution;
     EXPECT_EQ(d.symmetry(), CSymmetry::kNone);
     EXPECT_DOUBLE_EQ(d.candela(315, 10), 5);  // 2.5 cd/klm × 2 klm
   }
@@ -135,7 +144,8 @@ TEST(EulumdatReader, MalformedFilesNameFileAndLine) {
   }
   {
     const std::string t = ldt(4, {0, 120, 240}, kGammas, {constant(7, 1), constant(7, 1)});
-    EXPECT_NE(message_of(t).find("lum.ldt:4: Mc = 3 does not suit symmetry Isym 4"), std::string::npos) << message_of(t);
+    EXPECT_NE(message_of(t).find("lum.ldt:4: Mc = 3 does not suit symmetry Isym 4"), std::string::npos)
+        << message_of(t);
   }
   {
     const std::string t = ldt(4, {0, 45, 180, 270}, kGammas, {constant(7, 1), constant(7, 1)});
@@ -159,9 +169,15 @@ TEST(EulumdatReader, RandomByteMutationsNeverCrash) {
     for (int e = 0; e < edits; ++e) {
       const std::size_t pos = rng() % t.size();
       switch (rng() % 3) {
-        case 0: t[pos] = static_cast<char>(rng() % 256); break;
-        case 1: t.erase(pos, 1 + rng() % 8); break;
-        default: t.insert(pos, 1, "0123456789\n-.,e"[rng() % 15]); break;
+        case 0:
+          t[pos] = static_cast<char>(rng() % 256);
+          break;
+        case 1:
+          t.erase(pos, 1 + rng() % 8);
+          break;
+        default:
+          t.insert(pos, 1, "0123456789\n-.,e"[rng() % 15]);
+          break;
       }
     }
     try {

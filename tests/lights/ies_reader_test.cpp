@@ -8,9 +8,9 @@
 #include <random>
 #include <string>
 
-#include "skylit/core/vec3.h"
-#include "skylit/core/error.h"
 #include "../test_support.h"
+#include "skylit/core/error.h"
+#include "skylit/core/vec3.h"
 
 namespace skylit {
 namespace {
@@ -35,7 +35,8 @@ const char* kIsotropic2002 =
 
 // One file per symmetry: γ 0, 90; values constant in γ so C interpolation shows.
 std::string type_c_file(const std::string& header, const std::string& h_angles, int n_h, const std::string& candela) {
-  return header + "TILT=NONE\n1 -1 1 2 " + std::to_string(n_h) + " 1 2 0 0 0\n1 1 50\n0 90\n" + h_angles + "\n" + candela + "\n";
+  return header + "TILT=NONE\n1 -1 1 2 " + std::to_string(n_h) + " 1 2 0 0 0\n1 1 50\n0 90\n" + h_angles + "\n" +
+         candela + "\n";
 }
 
 std::string message_of(const std::string& text, const std::string& name = "lamp.ies") {
@@ -76,9 +77,9 @@ TEST(IesReader, Reads1995QuadrantFileWithTiltIncludeAndMultipliers) {
   EXPECT_DOUBLE_EQ(d.candela(0, 0), 200);
   EXPECT_DOUBLE_EQ(d.candela(90, 0), 600);
   EXPECT_DOUBLE_EQ(d.candela(22.5, 0), 300);
-  EXPECT_DOUBLE_EQ(d.candela(135, 0), 400);   // mirror of 45
-  EXPECT_DOUBLE_EQ(d.candela(270, 45), 500);  // mirror of 90
-  EXPECT_DOUBLE_EQ(d.candela(337.5, 0), 300); // mirror of 22.5
+  EXPECT_DOUBLE_EQ(d.candela(135, 0), 400);    // mirror of 45
+  EXPECT_DOUBLE_EQ(d.candela(270, 45), 500);   // mirror of 90
+  EXPECT_DOUBLE_EQ(d.candela(337.5, 0), 300);  // mirror of 22.5
 }
 
 TEST(IesReader, ReadsEachTypeCSymmetry) {
@@ -164,15 +165,19 @@ TEST(IesReader, MalformedFilesNameFileAndLine) {
   {
     std::string t = good;
     t.replace(t.find("TILT=NONE"), 9, "TILT=lamp.tlt");
-    EXPECT_NE(message_of(t).find("lamp.ies:5: TILT=lamp.tlt: a separate tilt file is not supported"), std::string::npos);
+    EXPECT_NE(message_of(t).find("lamp.ies:5: TILT=lamp.tlt: a separate tilt file is not supported"),
+              std::string::npos);
   }
   EXPECT_NE(message_of("IESNA:LM-63-2002\n[TEST] x\n").find("lamp.ies:2: expected a TILT= line"), std::string::npos);
-  EXPECT_NE(message_of("IESNA:LM-63-2019\nTILT=NONE\n").find("lamp.ies:1: unknown format identifier"), std::string::npos);
+  EXPECT_NE(message_of("IESNA:LM-63-2019\nTILT=NONE\n").find("lamp.ies:1: unknown format identifier"),
+            std::string::npos);
   EXPECT_NE(message_of(type_c_file("IESNA:LM-63-2002\n", "0 45", 2, "1 1 1 1")).find("lamp.ies:6: horizontal angles"),
             std::string::npos);
-  EXPECT_NE(message_of(type_c_file("IESNA:LM-63-2002\n", "0 90 45", 3, "1 1 1 1 1 1")).find("lamp.ies:6: horizontal angles must increase"),
+  EXPECT_NE(message_of(type_c_file("IESNA:LM-63-2002\n", "0 90 45", 3, "1 1 1 1 1 1"))
+                .find("lamp.ies:6: horizontal angles must increase"),
             std::string::npos);
-  EXPECT_NE(message_of(type_c_file("IESNA:LM-63-2002\n", "0 90", 2, "1 1 1 -1")).find("lamp.ies:7: candela values must not be negative"),
+  EXPECT_NE(message_of(type_c_file("IESNA:LM-63-2002\n", "0 90", 2, "1 1 1 -1"))
+                .find("lamp.ies:7: candela values must not be negative"),
             std::string::npos);
   // A missing file.
   TempDir dir;
@@ -185,7 +190,7 @@ TEST(IesReader, MalformedFilesNameFileAndLine) {
 }
 
 TEST(IesReader, RandomByteMutationsNeverCrash) {
-  const std::string good = std::string(kIsotropic2002) ;
+  const std::string good = std::string(kIsotropic2002);
   std::mt19937 rng(12345);
   int errors = 0, parsed = 0;
   const char alphabet[] = "0123456789.,- \n\t-eE+xTILT=[]\r\0\xff";
@@ -195,9 +200,15 @@ TEST(IesReader, RandomByteMutationsNeverCrash) {
     for (int e = 0; e < edits; ++e) {
       const std::size_t pos = rng() % t.size();
       switch (rng() % 3) {
-        case 0: t[pos] = alphabet[rng() % (sizeof alphabet - 1)]; break;
-        case 1: t.erase(pos, 1 + rng() % 8); break;
-        default: t.insert(pos, 1, static_cast<char>(rng() % 256)); break;
+        case 0:
+          t[pos] = alphabet[rng() % (sizeof alphabet - 1)];
+          break;
+        case 1:
+          t.erase(pos, 1 + rng() % 8);
+          break;
+        default:
+          t.insert(pos, 1, static_cast<char>(rng() % 256));
+          break;
       }
     }
     try {

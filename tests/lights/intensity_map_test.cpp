@@ -1,8 +1,8 @@
 // The octahedral intensity map (lights/intensity_map.h) against the exact look-up.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 

@@ -50,15 +50,16 @@ TEST(LuminairePhotometry, TableInterpolatesBilinearlyAndIsZeroBeyondGamma) {
   const auto d = IntensityDistribution::table(CSymmetry::kQuadrant, {0, 90}, {0, 90}, {100, 50, 300, 150});
   EXPECT_DOUBLE_EQ(d.candela(0, 0), 100);
   EXPECT_DOUBLE_EQ(d.candela(45, 45), 0.5 * (75 + 225));
-  EXPECT_DOUBLE_EQ(d.candela(270, 0), 300);   // mirrored
-  EXPECT_DOUBLE_EQ(d.candela(-90, 0), 300);   // negative C wraps
-  EXPECT_EQ(d.candela(0, 91), 0);             // beyond the measured range
+  EXPECT_DOUBLE_EQ(d.candela(270, 0), 300);  // mirrored
+  EXPECT_DOUBLE_EQ(d.candela(-90, 0), 300);  // negative C wraps
+  EXPECT_EQ(d.candela(0, 91), 0);            // beyond the measured range
   EXPECT_DOUBLE_EQ(d.peak_candela(), 300);
   EXPECT_DOUBLE_EQ(d.scaled(2).candela(45, 45), 300);
 }
 
 TEST(LuminairePhotometry, TableRejectsInconsistentInput) {
-  EXPECT_THROW(IntensityDistribution::table(CSymmetry::kQuadrant, {0, 45}, {0, 90}, {1, 1, 1, 1}), std::invalid_argument);
+  EXPECT_THROW(IntensityDistribution::table(CSymmetry::kQuadrant, {0, 45}, {0, 90}, {1, 1, 1, 1}),
+               std::invalid_argument);
   EXPECT_THROW(IntensityDistribution::table(CSymmetry::kAxial, {0}, {0, 90}, {1}), std::invalid_argument);
   EXPECT_THROW(IntensityDistribution::table(CSymmetry::kAxial, {0}, {90, 0}, {1, 1}), std::invalid_argument);
   EXPECT_THROW(IntensityDistribution::table(CSymmetry::kAxial, {0}, {0, 90}, {1, -1}), std::invalid_argument);

@@ -31,8 +31,8 @@ double classic_conductor(double cos_i, double n, double k) {
 }
 
 TEST(Fresnel, NormalIncidenceIsTheClosedForm) {
-  for (const auto eta : {std::complex<double>(1.5, 0), std::complex<double>(1.0, 6.6),
-                         std::complex<double>(0.5, 2.0), std::complex<double>(2.7, 8.4)}) {
+  for (const auto eta : {std::complex<double>(1.5, 0), std::complex<double>(1.0, 6.6), std::complex<double>(0.5, 2.0),
+                         std::complex<double>(2.7, 8.4)}) {
     const double n = eta.real(), k = eta.imag();
     const double expected = ((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k);
     EXPECT_NEAR(fresnel_reflectance(1.0, eta), expected, 1e-12) << eta;
@@ -64,8 +64,8 @@ TEST(Fresnel, BrewsterAngleHasNoParallelReflectance) {
 }
 
 TEST(Fresnel, TotalInternalReflectionBeyondTheCriticalAngle) {
-  const double eta = 1 / 1.5;                 // from glass into air
-  const double critical = std::asin(eta);     // 41.8°
+  const double eta = 1 / 1.5;              // from glass into air
+  const double critical = std::asin(eta);  // 41.8°
   EXPECT_NEAR(fresnel_reflectance(std::cos(critical + 0.01), eta), 1.0, 1e-12);
   EXPECT_NEAR(fresnel_reflectance(std::cos(radians(70)), eta), 1.0, 1e-12);
   EXPECT_LT(fresnel_reflectance(std::cos(critical - 0.05), eta), 0.5);

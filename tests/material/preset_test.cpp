@@ -6,12 +6,12 @@
 
 #include <string>
 
+#include "skylit/core/error.h"
 #include "skylit/io/scene/scene_parts.h"
 #include "skylit/material/presets.h"
 #include "skylit/material/reflection.h"
 #include "skylit/spectrum/cie.h"
 #include "skylit/spectrum/color_space.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {
@@ -21,7 +21,9 @@ std::vector<NamedMaterial> read(const std::string& materials_json) {
   return read_materials(JsonReader(json, "scene.json", "materials"));
 }
 
-Material read_one(const std::string& material_json) { return read("{\"walls\": " + material_json + "}").at(0).material; }
+Material read_one(const std::string& material_json) {
+  return read("{\"walls\": " + material_json + "}").at(0).material;
+}
 
 // The message of the InputError that reading `material_json` as materials.walls throws.
 std::string error_of(const std::string& material_json) {
@@ -121,18 +123,19 @@ TEST(Preset, BadOverridesNameTheirPath) {
 }
 
 TEST(MaterialReader, CookTorranceTakesAMetalAnIorOrADielectric) {
-  const auto al = std::get<CookTorranceMaterial>(read_one(R"({"type": "cook_torrance", "roughness": 0.2, "metal": "aluminium"})"));
+  const auto al =
+      std::get<CookTorranceMaterial>(read_one(R"({"type": "cook_torrance", "roughness": 0.2, "metal": "aluminium"})"));
   EXPECT_TRUE(al.ior().is_conductor());
   const auto custom = std::get<CookTorranceMaterial>(read_one(
       R"({"type": "cook_torrance", "roughness": 0.2, "metal": {"wavelength_nm": [400, 700], "n": [1, 2], "k": 7}})"));
-  EXPECT_NEAR(custom.ior().n[0], 1.0, 0.02);   // held below 400 nm
+  EXPECT_NEAR(custom.ior().n[0], 1.0, 0.02);    // held below 400 nm
   EXPECT_NEAR(custom.ior().n[15], 1.45, 1e-3);  // 530–540 nm: linear between, 1 + 135/300
   EXPECT_FLOAT_EQ(custom.ior().k[39], 7.0f);
   const auto constant = std::get<CookTorranceMaterial>(
       read_one(R"({"type": "cook_torrance", "roughness": 0.2, "metal": {"n": 1.2, "k": 7}})"));
   EXPECT_FLOAT_EQ(constant.ior().k[5], 7.0f);
-  const auto paint = std::get<CookTorranceMaterial>(read_one(
-      R"({"type": "cook_torrance", "roughness": 0.3, "ior": 1.5, "diffuse_reflectance": [0.8, 0.1, 0.1]})"));
+  const auto paint = std::get<CookTorranceMaterial>(
+      read_one(R"({"type": "cook_torrance", "roughness": 0.3, "ior": 1.5, "diffuse_reflectance": [0.8, 0.1, 0.1]})"));
   EXPECT_TRUE(paint.has_diffuse());
   const auto glassy = std::get<CookTorranceMaterial>(
       read_one(R"({"type": "cook_torrance", "roughness": 0.05, "dielectric": "glass"})"));
@@ -151,18 +154,23 @@ TEST(MaterialReader, LayeredAndGlassHaveDefaults) {
 }
 
 TEST(MaterialReader, MistakesNameTheirPath) {
-  EXPECT_EQ(error_of(R"({"type": "cook_torrance", "roughness": 0.2})"),
-            "scene.json: materials.walls: missing the interface's refractive index: give one of metal, ior, dielectric");
+  EXPECT_EQ(
+      error_of(R"({"type": "cook_torrance", "roughness": 0.2})"),
+      "scene.json: materials.walls: missing the interface's refractive index: give one of metal, ior, dielectric");
   EXPECT_EQ(error_of(R"({"type": "cook_torrance", "roughness": 0.2, "metal": "aluminium", "ior": 1.5})"),
             "scene.json: materials.walls: give only one of metal, ior, dielectric");
   EXPECT_EQ(error_of(R"({"type": "cook_torrance", "roughness": 0.2, "metal": "steel"})"),
             "scene.json: materials.walls.metal: expected one of: aluminium, found \"steel\"");
   EXPECT_EQ(error_of(R"({"type": "cook_torrance", "metal": "aluminium"})"),
             "scene.json: materials.walls: missing required key 'roughness'");
-  EXPECT_EQ(error_of(R"({"type": "cook_torrance", "roughness": 0.2, "metal": {"wavelength_nm": [400, 700], "n": [1], "k": 7}})"),
-            "scene.json: materials.walls.metal.n: needs as many values as wavelength_nm has (2)");
-  EXPECT_EQ(error_of(R"({"type": "cook_torrance", "roughness": 0.2, "metal": {"wavelength_nm": [700, 400], "n": 1, "k": [7, 6]}})"),
-            "scene.json: materials.walls.metal.wavelength_nm[1]: wavelengths must increase");
+  EXPECT_EQ(
+      error_of(
+          R"({"type": "cook_torrance", "roughness": 0.2, "metal": {"wavelength_nm": [400, 700], "n": [1], "k": 7}})"),
+      "scene.json: materials.walls.metal.n: needs as many values as wavelength_nm has (2)");
+  EXPECT_EQ(
+      error_of(
+          R"({"type": "cook_torrance", "roughness": 0.2, "metal": {"wavelength_nm": [700, 400], "n": 1, "k": [7, 6]}})"),
+      "scene.json: materials.walls.metal.wavelength_nm[1]: wavelengths must increase");
   EXPECT_EQ(error_of(R"({"type": "glass", "thickness_mm": -1})"),
             "scene.json: materials.walls.thickness_mm: expected a number from 0 to 100, found -1");
   EXPECT_EQ(error_of(R"({"type": "glass", "dielectric": "quartz"})"),
@@ -170,8 +178,9 @@ TEST(MaterialReader, MistakesNameTheirPath) {
   EXPECT_EQ(error_of(R"({"type": "layered", "reflectance": 0.5, "metal": "aluminium"})"),
             "scene.json: materials.walls.metal: unknown key; expected one of: type, reflectance, roughness, ior, "
             "dielectric");
-  EXPECT_EQ(error_of(R"({"type": "plastic"})"),
-            "scene.json: materials.walls.type: expected one of: diffuse, cook_torrance, layered, glass, found \"plastic\"");
+  EXPECT_EQ(
+      error_of(R"({"type": "plastic"})"),
+      "scene.json: materials.walls.type: expected one of: diffuse, cook_torrance, layered, glass, found \"plastic\"");
 }
 
 }  // namespace

@@ -132,7 +132,8 @@ TEST(ReflectionSampling, MeanWeightIsTheDirectionalAlbedo) {
         for (int pi = 0; pi < kPhi; ++pi) {
           const double theta = (ti + 0.5) * (kPi / 2) / kTheta, phi = (pi + 0.5) * 2 * kPi / kPhi;
           const Vec3 l{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-          albedo += reflection_cos(c.material, kNormal, l, v).per_sr[20] * std::sin(theta) * (kPi / 2 / kTheta) * (2 * kPi / kPhi);
+          albedo += reflection_cos(c.material, kNormal, l, v).per_sr[20] * std::sin(theta) * (kPi / 2 / kTheta) *
+                    (2 * kPi / kPhi);
         }
       EXPECT_NEAR(mean, albedo, 3 * sigma + 3e-3 * albedo + 1e-9) << c.name << ", view cos " << v.z;
       const std::optional<Reflectance> mirror = mirror_reflectance(c.material, kNormal, v);

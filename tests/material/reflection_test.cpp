@@ -77,7 +77,8 @@ TEST(Material, SpecularWeightIsTheBinMeanOfSpecularReflection) {
 TEST(Material, SpecularReflectionIsBrdfTimesCosine) {
   const Material m = CookTorranceMaterial(constant_ior(1.5), 0.2, Spectrum(0.5f));
   const Vec3 l = from_spherical(0.7, 0.2), v = from_spherical(0.5, 3.0);
-  EXPECT_NEAR(specular_reflection(m, kNormal, l, v).per_sr[3], specular_brdf(m, kNormal, l, v)[3] * std::cos(0.7), 1e-6);
+  EXPECT_NEAR(specular_reflection(m, kNormal, l, v).per_sr[3], specular_brdf(m, kNormal, l, v)[3] * std::cos(0.7),
+              1e-6);
   EXPECT_TRUE(specular_reflection(m, kNormal, {0.3, 0, -0.9539}, v).per_sr.is_black());
 }
 
@@ -106,7 +107,8 @@ TEST(Material, LayeredUnderRoughCoatReflectsAtMostWhatItReceives) {
     for (const double view_deg : {0.0, 30.0, 45.0, 60.0, 80.0}) {
       const double spec = specular_albedo(layered, radians(view_deg))[0];
       const double diff = diffuse_albedo(layered, std::cos(radians(view_deg)))[0];
-      std::printf("m = %.1f, view %2.0f deg: specular %.4f + diffuse %.4f = %.4f\n", m, view_deg, spec, diff, spec + diff);
+      std::printf("m = %.1f, view %2.0f deg: specular %.4f + diffuse %.4f = %.4f\n", m, view_deg, spec, diff,
+                  spec + diff);
       EXPECT_LE(spec + diff, 1.005) << m << " " << view_deg;
       EXPECT_GT(spec + diff, 0.75) << m << " " << view_deg;
     }

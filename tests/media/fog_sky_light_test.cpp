@@ -65,7 +65,8 @@ Spectrum fixed_step(const FogSkyLight& light, const Vec3& p, const Vec3& d, doub
     const Spectrum j = light.at(z);
     const Spectrum t = fog.transmittance(fog.column(p.z, d.z, 0.0, s));
     for (int i = 0; i < kSpectralBins; ++i)
-      sum[static_cast<size_t>(i)] += weight * fog.density(z) * fog.unit_density_extinction_bins()[static_cast<size_t>(i)] * j[i] * t[i];
+      sum[static_cast<size_t>(i)] +=
+          weight * fog.density(z) * fog.unit_density_extinction_bins()[static_cast<size_t>(i)] * j[i] * t[i];
   }
   Spectrum out;
   for (int i = 0; i < kSpectralBins; ++i)
@@ -75,7 +76,8 @@ Spectrum fixed_step(const FogSkyLight& light, const Vec3& p, const Vec3& d, doub
 
 double worst_relative(const Spectrum& got, const Spectrum& want) {
   double worst = 0;
-  for (int i = 0; i < kSpectralBins; ++i) worst = std::max(worst, double(std::abs(got[i] - want[i]) / std::abs(want[i])));
+  for (int i = 0; i < kSpectralBins; ++i)
+    worst = std::max(worst, double(std::abs(got[i] - want[i]) / std::abs(want[i])));
   return worst;
 }
 
@@ -86,10 +88,11 @@ TEST(FogSkyLight, VanishingFogGivesTheSkysIntegral) {
   const FogSkyLight light(fog, test_sky());
   const std::array<double, kSpectralBins> direct = direct_j(fog, 30.0);
   double worst = 0;
-  for (double z : {-5.0, 0.0, 13.0, 30.0, 59.0, 60.0, 200.0}) worst = std::max(worst, worst_relative(light.at(z), direct));
+  for (double z : {-5.0, 0.0, 13.0, 30.0, 59.0, 60.0, 200.0})
+    worst = std::max(worst, worst_relative(light.at(z), direct));
   worst = std::max(worst, worst_relative(light.unattenuated(), direct));
-  std::cout << "[FogSkyLight] vanishing fog: J vs direct quadrature of the sky (600x2 x 128), worst bin "
-            << worst << ", mean J " << bin_mean(light.unattenuated()) << " W m-2 nm-1\n";
+  std::cout << "[FogSkyLight] vanishing fog: J vs direct quadrature of the sky (600x2 x 128), worst bin " << worst
+            << ", mean J " << bin_mean(light.unattenuated()) << " W m-2 nm-1\n";
   EXPECT_LT(worst, 0.01);
 }
 
@@ -101,7 +104,8 @@ TEST(FogSkyLight, TableMatchesDirectQuadratureInDenseFog) {
     const FogLayer fog(s);
     const FogSkyLight light(fog, test_sky());
     double worst = 0;
-    for (double z : {0.0, 2.0, 10.0, 25.0, 45.0, 60.0}) worst = std::max(worst, worst_relative(light.at(z), direct_j(fog, z)));
+    for (double z : {0.0, 2.0, 10.0, 25.0, 45.0, 60.0})
+      worst = std::max(worst, worst_relative(light.at(z), direct_j(fog, z)));
     std::cout << "[FogSkyLight] h0 = " << h0 << ": J table vs direct quadrature, worst bin " << worst << "\n";
     EXPECT_LT(worst, 0.02) << h0;
   }
@@ -124,8 +128,8 @@ TEST(FogSkyLight, LightDecreasesIntoDenseFog) {
   // the unattenuated value.
   const double j1 = bin_mean(light.at(1.0)), j0 = bin_mean(light.at(0.0));
   std::cout << "[FogSkyLight] dense fog (0.1 m-1 at the ground, h0 = 10 m): J/J_above at 60, 10, 5, 1, 0 m = "
-            << bin_mean(light.at(60)) / above << ", " << bin_mean(light.at(10)) / above << ", " << previous / above << ", "
-            << j1 / above << ", " << j0 / above << "\n";
+            << bin_mean(light.at(60)) / above << ", " << bin_mean(light.at(10)) / above << ", " << previous / above
+            << ", " << j1 / above << ", " << j0 / above << "\n";
   EXPECT_LT(previous, 0.5 * above);
   EXPECT_GT(j0, j1);
   EXPECT_LT(j0, above);
@@ -213,7 +217,8 @@ TEST(FogSkyLight, NoNanForExtremeInputs) {
           ASSERT_GE(light.at(z)[i], 0.0f);
         }
       for (const Vec3& p : {Vec3{0, 0, -1e300}, Vec3{0, 0, 0}, Vec3{0, 0, 30}, Vec3{0, 0, 1e300}})
-        for (const Vec3& d : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{1, 0, 1e-300}, Vec3{1, 0, -1e-12}, Vec3{0, 0, 0}})
+        for (const Vec3& d :
+             {Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{1, 0, 1e-300}, Vec3{1, 0, -1e-12}, Vec3{0, 0, 0}})
           for (double s2 : {0.0, 1e-9, 1e3, 1e300, inf}) {
             int steps = 0;
             const Spectrum r = light.in_scattered(p, d, 0.0, s2, &steps);

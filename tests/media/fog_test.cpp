@@ -12,12 +12,12 @@
 #include <utility>
 #include <vector>
 
+#include "../reference_quadrature.h"
+#include "skylit/core/error.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/fog_phase.h"
 #include "skylit/media/fog_settings.h"
 #include "skylit/media/fog_sun_integral.h"
-#include "skylit/core/error.h"
-#include "../reference_quadrature.h"
 
 namespace skylit {
 namespace {
@@ -45,7 +45,8 @@ struct ReferenceFog {
     cuts.push_back(hi);
     std::sort(cuts.begin(), cuts.end());
     double sum = 0.0;
-    for (size_t i = 0; i + 1 < cuts.size(); ++i) sum += grade ? graded(f, cuts[i], cuts[i + 1], rel_tol) : integrate(f, cuts[i], cuts[i + 1], rel_tol);
+    for (size_t i = 0; i + 1 < cuts.size(); ++i)
+      sum += grade ? graded(f, cuts[i], cuts[i + 1], rel_tol) : integrate(f, cuts[i], cuts[i + 1], rel_tol);
     return sum;
   }
 
@@ -106,9 +107,7 @@ double relative_error(double got, double want) {
 // Results below this are "nothing" for both (e^(−700)); compared absolutely.
 constexpr double kNegligible = 1e-300;
 
-bool close(double got, double want, double rel) {
-  return std::abs(got - want) <= rel * std::abs(want) + kNegligible;
-}
+bool close(double got, double want, double rel) { return std::abs(got - want) <= rel * std::abs(want) + kNegligible; }
 
 const std::vector<double> kScaleHeights = {10.0, 50.0, -15.0, -40.0};
 const std::vector<double> kDensities = {0.037, 0.59};
@@ -130,7 +129,8 @@ TEST(FogLayer, DensityIsEq2InsideTheLayerAndZeroOutside) {
   const FogLayer layer(s);
   EXPECT_EQ(layer.density(4.999), 0.0);
   EXPECT_EQ(layer.density(60.001), 0.0);
-  for (double z : {5.0, 20.0, 45.0, 60.0}) EXPECT_NEAR(layer.density(z), 0.037 * std::exp(z / 15.0), 1e-15 * layer.density(z));
+  for (double z : {5.0, 20.0, 45.0, 60.0})
+    EXPECT_NEAR(layer.density(z), 0.037 * std::exp(z / 15.0), 1e-15 * layer.density(z));
   s.scale_height_m = kInf;  // homogeneous
   EXPECT_DOUBLE_EQ(FogLayer(s).density(30.0), 0.037);
 }
@@ -175,8 +175,8 @@ TEST(FogLayer, ColumnMatchesQuadrature) {
           for (const auto& [s1, s2] : kSegments) {
             const double got = layer.column(z_p, z_v, s1, s2), want = ref.column(z_p, z_v, s1, s2);
             worst = std::max(worst, want > 0 ? relative_error(got, want) : 0.0);
-            EXPECT_TRUE(close(got, want, 1e-10)) << "h0 " << h0 << " z_p " << z_p << " z_v " << z_v << " [" << s1 << ", " << s2
-                                                 << "]: " << got << " vs " << want;
+            EXPECT_TRUE(close(got, want, 1e-10)) << "h0 " << h0 << " z_p " << z_p << " z_v " << z_v << " [" << s1
+                                                 << ", " << s2 << "]: " << got << " vs " << want;
           }
     }
   std::printf("[fog] view-ray column vs quadrature: worst relative error %.2e\n", worst);
@@ -204,7 +204,8 @@ TEST(FogLayer, SunColumnMatchesQuadratureAndIsFiniteWhenDenserUpward) {
           const double got = layer.sun_column(z, z_sun), want = ref.sun_column(z, z_sun);
           EXPECT_TRUE(std::isfinite(got));
           worst = std::max(worst, want > 0 ? relative_error(got, want) : 0.0);
-          EXPECT_TRUE(close(got, want, 1e-10)) << "h0 " << h0 << " z " << z << " z_L " << z_sun << ": " << got << " vs " << want;
+          EXPECT_TRUE(close(got, want, 1e-10))
+              << "h0 " << h0 << " z " << z << " z_L " << z_sun << ": " << got << " vs " << want;
         }
     }
   std::printf("[fog] sun column vs quadrature: worst relative error %.2e\n", worst);
@@ -219,7 +220,8 @@ TEST(FogLayer, SunColumnIsEq19WhenTheTopIsFarAbove) {
   const FogLayer layer(s);
   for (double z : {0.0, 7.0, 30.0})
     for (double z_sun : {0.05, 0.5, 1.0})
-      EXPECT_NEAR(layer.sun_column(z, z_sun), 0.59 * 10.0 / z_sun * std::exp(-z / 10.0), 1e-13 * layer.sun_column(z, z_sun));
+      EXPECT_NEAR(layer.sun_column(z, z_sun), 0.59 * 10.0 / z_sun * std::exp(-z / 10.0),
+                  1e-13 * layer.sun_column(z, z_sun));
 }
 
 TEST(FogLayer, NoSunlightFromBelowTheHorizon) {
@@ -325,13 +327,14 @@ TEST(FogSunIntegral, ClosedFormMatchesQuadratureOverTheGrid) {
                     worst_value = want;
                   }
                 }
-                EXPECT_TRUE(close(got, want, 1e-4)) << "h0 " << h0 << " ρ0 " << rho0 << " layer [" << bottom << ", " << top
-                                                    << "] z_p " << z_p << " z_v " << z_v << " z_L " << z_sun << " [" << s1
-                                                    << ", " << s2 << "]: " << got << " vs " << want;
+                EXPECT_TRUE(close(got, want, 1e-4))
+                    << "h0 " << h0 << " ρ0 " << rho0 << " layer [" << bottom << ", " << top << "] z_p " << z_p
+                    << " z_v " << z_v << " z_L " << z_sun << " [" << s1 << ", " << s2 << "]: " << got << " vs " << want;
               }
       }
-  std::printf("[fog] sun in-scatter vs quadrature: %d cases (%d non-zero), worst relative error %.2e (at a value %.1e)\n",
-              compared, nonzero, worst, worst_value);
+  std::printf(
+      "[fog] sun in-scatter vs quadrature: %d cases (%d non-zero), worst relative error %.2e (at a value %.1e)\n",
+      compared, nonzero, worst, worst_value);
   EXPECT_LT(worst, 1e-8);
 }
 
@@ -350,7 +353,8 @@ TEST(FogSunIntegral, ViewParallelToTheSunMatchesQuadrature) {
               const double got = fog_sun_weight(layer, z_p, z_v, z_sun, s1, s2, 550.0);
               const double want = ref.sun_weight(z_p, z_v, z_sun, s1, s2);
               if (want > kNegligible) worst = std::max(worst, relative_error(got, want));
-              EXPECT_TRUE(close(got, want, 1e-4)) << "h0 " << h0 << " z_L " << z_sun << " δ " << delta << " z_p " << z_p;
+              EXPECT_TRUE(close(got, want, 1e-4))
+                  << "h0 " << h0 << " z_L " << z_sun << " δ " << delta << " z_p " << z_p;
             }
     }
   std::printf("[fog] sun in-scatter, view ∥ sun, vs quadrature: worst relative error %.2e\n", worst);
@@ -387,10 +391,14 @@ TEST(FogSunIntegral, ContinuousThroughTheSpecialCases) {
     }
   for (double z_v : {0.0, 0.1, -0.3, 0.5})
     for (double z_sun : {0.05, 0.5})
-      check([&](double eta) {
-        return fog_sun_weight(FogLayer(settings_for({0.59, 1.0 / eta, 0.0, 60.0, 0.02})), 30.0, z_v, z_sun, 0.0, 300.0, 550.0);
-      }, "1/h0 → 0");
-  std::printf("[fog] largest jump across a special case: %.2e relative (%.2e where w > 1e-20)\n", worst, worst_ordinary);
+      check(
+          [&](double eta) {
+            return fog_sun_weight(FogLayer(settings_for({0.59, 1.0 / eta, 0.0, 60.0, 0.02})), 30.0, z_v, z_sun, 0.0,
+                                  300.0, 550.0);
+          },
+          "1/h0 → 0");
+  std::printf("[fog] largest jump across a special case: %.2e relative (%.2e where w > 1e-20)\n", worst,
+              worst_ordinary);
 }
 
 TEST(FogSunIntegral, HomogeneousLayerMatchesHandDerivedClosedForms) {
@@ -432,7 +440,8 @@ TEST(FogSunIntegral, ReproducesTheAppendixForAnUnboundedLayer) {
       EXPECT_NEAR(fog_sun_weight(layer, z_p, 0.0, z_sun, s1, s2, 550.0), eq23, 1e-12 * eq23);
       // Eq. 25: z_v = z_L.
       const double z_v = z_sun;
-      const double eq25 = alpha * std::exp(-alpha * h0 / z_v) * h0 / z_v * (std::exp(-z_v * s1 / h0) - std::exp(-z_v * s2 / h0));
+      const double eq25 =
+          alpha * std::exp(-alpha * h0 / z_v) * h0 / z_v * (std::exp(-z_v * s1 / h0) - std::exp(-z_v * s2 / h0));
       EXPECT_NEAR(fog_sun_weight(layer, z_p, z_v, z_sun, s1, s2, 550.0), eq25, 1e-12 * eq25);
       // Eq. 28: the general case, with u = e^(−z_v s/h0) (Eq. 26).
       for (double zv : {0.1, -0.1, 0.7}) {
@@ -449,7 +458,8 @@ TEST(FogSunIntegral, ReproducesTheAppendixForAnUnboundedLayer) {
 
 TEST(FogSunIntegral, NothingWithoutSunOrFog) {
   const FogLayer layer{FogSettings{}};
-  for (double z_sun : {0.0, -1e-300, -0.2, -1.0}) EXPECT_EQ(fog_sun_weight(layer, 10.0, 0.1, z_sun, 0.0, 500.0, 550.0), 0.0);
+  for (double z_sun : {0.0, -1e-300, -0.2, -1.0})
+    EXPECT_EQ(fog_sun_weight(layer, 10.0, 0.1, z_sun, 0.0, 500.0, 550.0), 0.0);
   EXPECT_EQ(fog_sun_weight(layer, 120.0, 0.0, 0.5, 0.0, 500.0, 550.0), 0.0);  // level ray above the layer
   EXPECT_EQ(fog_sun_weight(layer, 120.0, 0.2, 0.5, 0.0, 500.0, 550.0), 0.0);  // rising away from it
   EXPECT_EQ(fog_sun_weight(layer, 10.0, 0.1, 0.5, 30.0, 30.0, 550.0), 0.0);   // empty segment
@@ -492,9 +502,9 @@ TEST(FogSunIntegral, FiniteForExtremeInputs) {
                   ++checked;
                   if (!std::isfinite(w) || w < 0.0 || w > 1.0 + 1e-12) {
                     if (++bad < 10)
-                      ADD_FAILURE() << "weight " << w << " for ρ0 " << rho0 << " h0 " << h0 << " layer [" << bottom << ", " << top
-                                    << "] z_p " << z_p << " z_v " << z_v << " z_L " << z_sun << " [" << s1 << ", " << s2
-                                    << "] σ " << sigma;
+                      ADD_FAILURE() << "weight " << w << " for ρ0 " << rho0 << " h0 " << h0 << " layer [" << bottom
+                                    << ", " << top << "] z_p " << z_p << " z_v " << z_v << " z_L " << z_sun << " ["
+                                    << s1 << ", " << s2 << "] σ " << sigma;
                   }
                 }
               }
@@ -518,7 +528,8 @@ TEST(FogSunIntegral, SpectrumIsAlbedoPhaseIrradianceAndWeightPerBin) {
   const Spectrum got = fog_sun_inscatter(layer, eye, view, sun, 3.0, 400.0, irradiance);
   const double phase = layer.phase(dot(view, sun));
   for (int i = 0; i < kSpectralBins; ++i) {
-    const double want = 0.9 * phase * irradiance[i] * fog_sun_weight(layer, eye.z, view.z, sun.z, 3.0, 400.0, kGrid.center_nm(i));
+    const double want =
+        0.9 * phase * irradiance[i] * fog_sun_weight(layer, eye.z, view.z, sun.z, 3.0, 400.0, kGrid.center_nm(i));
     EXPECT_NEAR(got[i], want, 1e-6 * want) << i;
   }
   EXPECT_GT(got[0], 0.0f);

@@ -93,14 +93,16 @@ TEST(LampInScatter, SpotLampWithDropletPhaseMatchesQuadratureOfDefinition) {
   const FogLayer layer(settings);
   const Luminaire lamp({0, 0, 0.7}, IntensityDistribution::spot(20000.0, 8.0, 15.0), {1, 0, 0});
   const LampInScatter glow(layer, lamp, kUnit);
-  for (const Ray& ray : {Ray{{20, -15, 1.5}, normalize(Vec3{0, 1, 0})}, Ray{{30, -10, 1.2}, normalize(Vec3{-0.3, 1, 0.05})},
-                         Ray{{-5, 1, 1.5}, normalize(Vec3{1, 0.02, -0.01})}}) {
+  for (const Ray& ray :
+       {Ray{{20, -15, 1.5}, normalize(Vec3{0, 1, 0})}, Ray{{30, -10, 1.2}, normalize(Vec3{-0.3, 1, 0.05})},
+        Ray{{-5, 1, 1.5}, normalize(Vec3{1, 0.02, -0.01})}}) {
     auto integrand = [&](double s) {
       const Vec3 p = ray.origin + s * ray.direction;
       const Vec3 to_p = p - lamp.position();
       const double r2 = dot(to_p, to_p);
       const double cos_theta = -dot(to_p, ray.direction) / std::sqrt(r2);
-      const double column = layer.column(ray.origin.z, ray.direction.z, 0, s) + layer.column_between(lamp.position(), p);
+      const double column =
+          layer.column(ray.origin.z, ray.direction.z, 0, s) + layer.column_between(lamp.position(), p);
       return layer.density(p.z) * 0.02 * lamp.intensity(to_p) / r2 * layer.phase(cos_theta) * std::exp(-0.02 * column);
     };
     double expected = 0;

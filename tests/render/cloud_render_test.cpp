@@ -61,13 +61,11 @@ TEST(CloudRender, ShadowLandsWhereTheGeometrySays) {
   // 1428 m north of its centre, a disc of radius 500 m around (0, 1428).
   const Scene scene = cloud_scene(180.0);
   const Renderer renderer(scene);
-  auto ground = [&](double y) {
-    return luminance(renderer.radiance(Ray{{0, y, 50}, {0, 0, -1}}));
-  };
+  auto ground = [&](double y) { return luminance(renderer.radiance(Ray{{0, y, 50}, {0, 0, -1}})); };
   const double shade = 1000 / std::tan(radians(35.0));
   EXPECT_LT(ground(shade), 0.5 * ground(shade - 800));  // in the shadow vs in the sun
   EXPECT_LT(ground(shade), 0.5 * ground(shade + 800));
-  EXPECT_GT(ground(-200), 0.9 * ground(shade + 800));    // under the cloud itself: sunlit
+  EXPECT_GT(ground(-200), 0.9 * ground(shade + 800));  // under the cloud itself: sunlit
 }
 
 TEST(CloudRender, DistantCloudFadesIntoHazeThroughTheAirBeforeIt) {

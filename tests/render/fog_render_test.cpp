@@ -79,15 +79,18 @@ TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
   const FogMedium shaded(*scene.fog, with_block, sky, origin), open(*scene.fog, without, sky, origin);
   const Ray ray{origin, normalize(Vec3{1, 0, 0})};  // eastward, behind the block
   const double length = 160;
-  const Spectrum difference = (open.along(ray, length).in_scattered - shaded.along(ray, length).in_scattered).spectrum();
+  const Spectrum difference =
+      (open.along(ray, length).in_scattered - shaded.along(ray, length).in_scattered).spectrum();
   const SunShadowVolumes shadows(with_block, to_sun);
   double shadowed = length;
   for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length)) shadowed -= lit.end - lit.begin;
   ASSERT_GT(shadowed, 5.0);  // the geometry does put part of the ray in shadow
   // The light lost is the sun's in-scatter over the shadowed part, from the closed form.
-  Spectrum expected = fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, 0, length, sky.direct_sun(60.0).spectrum());
+  Spectrum expected =
+      fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, 0, length, sky.direct_sun(60.0).spectrum());
   for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length))
-    expected -= fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, lit.begin, lit.end, sky.direct_sun(60.0).spectrum());
+    expected -= fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, lit.begin, lit.end,
+                                  sky.direct_sun(60.0).spectrum());
   for (int k = 0; k < kSpectralBins; k += 7) EXPECT_NEAR(difference[k], expected[k], 1e-4 * expected[k] + 1e-9);
   EXPECT_GT(luminance(difference), 0.0);
 }

@@ -28,8 +28,8 @@ Scene night_scene() {
   scene.materials.push_back({"ground", DiffuseMaterial{Spectrum(static_cast<float>(kReflectance))}});
   scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 2000), 0});
   LampSpectrumSettings led;
-  scene.lights.push_back({"lamp", Luminaire({0, 0, 5}, IntensityDistribution::isotropic(1000.0)),
-                          lamp_spectrum_per_candela(led)});
+  scene.lights.push_back(
+      {"lamp", Luminaire({0, 0, 5}, IntensityDistribution::isotropic(1000.0)), lamp_spectrum_per_candela(led)});
   scene.render = RenderSettings{16, 16, std::nullopt, 1};
   return scene;
 }
@@ -62,7 +62,7 @@ TEST(LampRender, AnObjectBetweenLampAndGroundCastsAShadow) {
   const Renderer renderer(scene);
   const Scene open_scene = night_scene();
   const Renderer open(open_scene);
-  EXPECT_LT(ground_luminance(renderer, 6.0), 1e-3 * ground_luminance(open, 6.0));   // in the shadow
+  EXPECT_LT(ground_luminance(renderer, 6.0), 1e-3 * ground_luminance(open, 6.0));     // in the shadow
   EXPECT_NEAR(ground_luminance(renderer, 12.0), ground_luminance(open, 12.0), 1e-6);  // beyond it
   EXPECT_NEAR(ground_luminance(renderer, 1.0), ground_luminance(open, 1.0), 1e-6);    // before it
 }
@@ -119,8 +119,8 @@ TEST(LampRender, UntestedFaintLampsAddAtMostTheirShare) {
   double faint_lux = 0;
   for (int i = 0; i < 8; ++i) {
     const Vec3 p{40.0 + i, 0, 5};
-    scene.lights.push_back({"faint", Luminaire(p, IntensityDistribution::isotropic(1300.0)),
-                            scene.lights[0].spectrum_per_candela});
+    scene.lights.push_back(
+        {"faint", Luminaire(p, IntensityDistribution::isotropic(1300.0)), scene.lights[0].spectrum_per_candela});
     faint_lux += 1300.0 * 5 / std::pow(length(p), 3);
   }
   ASSERT_GT(faint_lux, 0.015 * 40.0);  // the faint lamps matter beyond the share
@@ -142,11 +142,9 @@ TEST(LampRender, HiddenLampMakesNoHighlightOnGlossyGround) {
   // viewer, highlight included).
   Scene scene = night_scene();
   scene.materials[0] = {"ground", CookTorranceMaterial(constant_ior(1.5), 0.05, Spectrum(0.1f))};
-  const Vec3 eye{-20, 0, 2};  // looking at the ground point (0, 0, 0)
+  const Vec3 eye{-20, 0, 2};         // looking at the ground point (0, 0, 0)
   const Vec3 mirror_lamp{60, 0, 6};  // where the view's mirror direction points
-  const double without = [&] {
-    return luminance(Renderer(scene).radiance(Ray{eye, normalize(-eye)}));
-  }();
+  const double without = [&] { return luminance(Renderer(scene).radiance(Ray{eye, normalize(-eye)})); }();
   scene.lights.push_back({"hidden", Luminaire(mirror_lamp, IntensityDistribution::isotropic(1000.0)),
                           scene.lights[0].spectrum_per_candela});
   scene.materials.push_back({"wall", DiffuseMaterial{Spectrum(0.3f)}});

@@ -41,7 +41,8 @@ TEST(PathFog, SlabUnderUniformSkyMatchesAddingDoubling) {
     const Scene scene = slab_scene(tau);
     const PreparedScene prepared(scene);
     const PathIntegrator path(prepared, TestEnvironment{Spectrum(1.0f), Spectrum(0.0f)});
-    const testing::AddingDoubling reference(24, tau, 1.0, [](double c) { return henyey_greenstein_phase(c, kAsymmetry); });
+    const testing::AddingDoubling reference(24, tau, 1.0,
+                                            [](double c) { return henyey_greenstein_phase(c, kAsymmetry); });
     // The reference itself: the fluxes out of the top and the bottom add up to the flux
     // in (the slab does not absorb), 2 Σ w μ (R + T) = 1.
     double flux_out = 0;

@@ -86,8 +86,7 @@ TEST(PathIntegrator, OpenLambertianGroundReflectsRhoEOverPi) {
   const Vec3 eye = scene.camera.position, target{2, 3, 0};
   const Ray ray{eye, normalize(target - eye)};
   const MediumStretch air = sky.aerial_perspective(ray.direction, length(target - eye));
-  const double expected =
-      luminance(air.seen_through(Radiance((e_sky + e_sun) * static_cast<float>(rho / kPi))));
+  const double expected = luminance(air.seen_through(Radiance((e_sky + e_sun) * static_cast<float>(rho / kPi))));
   const Estimate e = estimate(path, ray, 4000, [](const Radiance& r) { return luminance(r); });
   EXPECT_NEAR(e.mean, expected, 3 * e.standard_error + 1e-3 * expected);
   EXPECT_LT(e.standard_error, 0.01 * expected);
@@ -100,16 +99,18 @@ TEST(PathIntegrator, LampOnGroundAgreesWithClosedFormAndFastMethod) {
   Scene scene = open_ground(0.5);
   scene.sun = Sun{-40, 180};
   LampSpectrumSettings led;
-  scene.lights.push_back({"lamp", Luminaire({0, 0, 5}, IntensityDistribution::isotropic(1000.0)),
-                          lamp_spectrum_per_candela(led)});
+  scene.lights.push_back(
+      {"lamp", Luminaire({0, 0, 5}, IntensityDistribution::isotropic(1000.0)), lamp_spectrum_per_candela(led)});
   const Renderer fast(scene);
   const PathIntegrator path(fast.prepared());
   const Vec3 eye{3, -1, 1.5}, target{3, 0, 0};
   const Ray ray{eye, normalize(target - eye)};
   const double d2 = 9 + 25, cos_theta = 5 / std::sqrt(d2);
-  const double transmittance = luminance(fast.sky().aerial_perspective(ray.direction, length(target - eye)).transmittance.spectrum()) /
-                               luminance(Spectrum(1.0f));
-  const double closed = 0.5 / kPi * 1000 * cos_theta / d2 * luminance(scene.lights[0].spectrum_per_candela) * transmittance;
+  const double transmittance =
+      luminance(fast.sky().aerial_perspective(ray.direction, length(target - eye)).transmittance.spectrum()) /
+      luminance(Spectrum(1.0f));
+  const double closed =
+      0.5 / kPi * 1000 * cos_theta / d2 * luminance(scene.lights[0].spectrum_per_candela) * transmittance;
   const Estimate e = estimate(path, ray, 2000, [](const Radiance& r) { return luminance(r); });
   EXPECT_NEAR(e.mean, closed, 3 * e.standard_error + 2e-3 * closed);
   EXPECT_NEAR(luminance(fast.radiance(ray)), e.mean, 3 * e.standard_error + 3e-3 * closed);

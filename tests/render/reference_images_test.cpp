@@ -108,17 +108,17 @@ Image read_exr(const fs::path& path) {
 
 // The tolerance explained at the top of this file.
 struct Tolerance {
-  double pixel_relative = 1e-3;     // (1): of |ref| + F
+  double pixel_relative = 1e-3;        // (1): of |ref| + F
   double floor_of_log_average = 1e-2;  // F as a fraction of the log-average luminance
-  double edge_relative = 5e-2;      // (2): for the few pixels allowed beyond (1)
-  double edge_fraction = 2e-3;      // (2): the share of pixels allowed beyond (1)
-  double mean_relative = 1e-3;      // (3)
+  double edge_relative = 5e-2;         // (2): for the few pixels allowed beyond (1)
+  double edge_fraction = 2e-3;         // (2): the share of pixels allowed beyond (1)
+  double mean_relative = 1e-3;         // (3)
 };
 
 struct Comparison {
   bool passed = true;
-  std::string report;        // why it failed, for the test's message; empty if it passed
-  double floor = 0;          // F, cd/m²
+  std::string report;                            // why it failed, for the test's message; empty if it passed
+  double floor = 0;                              // F, cd/m²
   std::vector<std::array<float, 3>> normalised;  // (new − ref) / (|ref| + F) per pixel
 };
 
@@ -222,9 +222,9 @@ TEST_P(ReferenceImage, RendersAsBefore) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path rendered = dir / (name + ".exr");
-  const auto r = testing::run_skylit("render " + quoted(kExamples / (name + ".json")) + " --set render.width=" +
-                                     std::to_string(reference.width) + " --set render.height=" +
-                                     std::to_string(reference.height) + " --quiet -o " + quoted(rendered));
+  const auto r = testing::run_skylit(
+      "render " + quoted(kExamples / (name + ".json")) + " --set render.width=" + std::to_string(reference.width) +
+      " --set render.height=" + std::to_string(reference.height) + " --quiet -o " + quoted(rendered));
   ASSERT_EQ(r.exit_status, 0) << r.output;
 
   const Image image = read_exr(rendered);
@@ -241,8 +241,9 @@ TEST_P(ReferenceImage, RendersAsBefore) {
   ADD_FAILURE() << "examples/" << name << ".json no longer renders as its reference " << reference_path.string()
                 << ":\n"
                 << comparison.report << "New render: " << rendered.string() << "\n"
-                << (difference.empty() ? "" : "Difference image (R, G, B = (new − ref) / (|ref| + F) of X, Y, Z): " +
-                                                  difference.string() + "\n")
+                << (difference.empty() ? ""
+                                       : "Difference image (R, G, B = (new − ref) / (|ref| + F) of X, Y, Z): " +
+                                             difference.string() + "\n")
                 << "If the change is meant to move pixels, run scripts/make-reference-images.sh and say why in "
                    "the commit message (tests/reference_images/README.md).";
 }
@@ -329,9 +330,9 @@ TEST(ReferenceImages, SunHalfADegreeHigherFails) {
   const Image reference = read_exr(kReferences / "building.exr");
   testing::TempDir dir;
   const fs::path rendered = dir.path() / "building.exr";
-  const auto r = testing::run_skylit("render " + quoted(kExamples / "building.json") + " --set render.width=" +
-                                     std::to_string(reference.width) + " --set render.height=" +
-                                     std::to_string(reference.height) +
+  const auto r = testing::run_skylit("render " + quoted(kExamples / "building.json") +
+                                     " --set render.width=" + std::to_string(reference.width) +
+                                     " --set render.height=" + std::to_string(reference.height) +
                                      " --set sun.altitude_deg=30.5 --quiet -o " + quoted(rendered));
   ASSERT_EQ(r.exit_status, 0) << r.output;
   const Comparison c = compare(reference, read_exr(rendered));

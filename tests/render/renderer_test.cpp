@@ -75,9 +75,9 @@ TEST(Renderer, BoxCastsAHardShadowWhereGeometrySays) {
                 renderer.sky().direct_sun(0.0) * static_cast<float>(std::sin(radians(45.0))));
   };
   // 0.5 %: what is left is float rounding and the sun's profile against height.
-  EXPECT_NEAR(ground_luminance(10.0), sky_only(10.0), 0.005 * sky_only(10.0));         // in the shadow
-  EXPECT_NEAR(ground_luminance(14.5), sky_only(14.5), 0.005 * sky_only(14.5));         // just inside its edge
-  EXPECT_NEAR(ground_luminance(15.5), sky_and_sun(15.5), 0.005 * sky_and_sun(15.5));   // just outside
+  EXPECT_NEAR(ground_luminance(10.0), sky_only(10.0), 0.005 * sky_only(10.0));           // in the shadow
+  EXPECT_NEAR(ground_luminance(14.5), sky_only(14.5), 0.005 * sky_only(14.5));           // just inside its edge
+  EXPECT_NEAR(ground_luminance(15.5), sky_and_sun(15.5), 0.005 * sky_and_sun(15.5));     // just outside
   EXPECT_NEAR(ground_luminance(-10.0), sky_and_sun(-10.0), 0.005 * sky_and_sun(-10.0));  // sunny side
   // Near the box the ground sees less sky than in the open.
   EXPECT_LT(illuminance(renderer.sky_light().diffuse_irradiance({0, 10, 0}, {0, 0, 1})),
@@ -88,7 +88,7 @@ TEST(Renderer, BoxCastsAHardShadowWhereGeometrySays) {
 TEST(Renderer, SkyPixelsShowTheSkyAndTheSun) {
   Scene scene = open_plane_scene(60.0, 0.5f);
   scene.camera = Camera{{0, 0, 10}, {0, 0, 20}, {0, 1, 0}, 20.0};  // looking straight up
-  scene.render = RenderSettings{1, 1, std::nullopt, 1};  // one sample, at the zenith
+  scene.render = RenderSettings{1, 1, std::nullopt, 1};            // one sample, at the zenith
   const Renderer renderer(scene);
   const XyzImage image = renderer.render();
   const Vec3 up{0, 0, 1};

@@ -15,7 +15,7 @@ void expect_direction(const std::optional<Vec3>& d, double altitude_deg, double 
 }
 
 TEST(SkyImage, EquirectRunsClockwiseFromNorthAndTopToBottom) {
-  const int n = 100;  // 200 × 100
+  const int n = 100;                                                                      // 200 × 100
   expect_direction(sky_projection_direction(SkyProjection::equirect, n, 0, 50), 0, 0);    // left edge: north
   expect_direction(sky_projection_direction(SkyProjection::equirect, n, 50, 50), 0, 90);  // a quarter: east
   expect_direction(sky_projection_direction(SkyProjection::equirect, n, 100, 25), 45, 180);
@@ -30,7 +30,7 @@ TEST(SkyImage, FisheyeHasNorthUpAndEastLeftSeenFromBelow) {
   expect_direction(sky_projection_direction(SkyProjection::fisheye, n, 0, 50), 0, 90);   // left: east
   expect_direction(sky_projection_direction(SkyProjection::fisheye, n, 100, 50), 0, 270);
   expect_direction(sky_projection_direction(SkyProjection::fisheye, n, 50, 75), 45, 180);  // halfway down: south, 45°
-  EXPECT_FALSE(sky_projection_direction(SkyProjection::fisheye, n, 2, 2).has_value());    // outside the circle
+  EXPECT_FALSE(sky_projection_direction(SkyProjection::fisheye, n, 2, 2).has_value());     // outside the circle
 }
 
 }  // namespace

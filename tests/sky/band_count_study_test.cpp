@@ -26,7 +26,8 @@ double worst_canyon_error(const SkyModel& sky, const std::vector<SkyElement>& el
         tracer.add_mesh(make_box({-w / 2 - 10, -l, 0}, {-w / 2, l, h}));
       }
       tracer.commit();
-      const SkyLight light(sky, tracer, [](const Ray&, const Hit&) { return Radiance(0.0f); }, elements);
+      const SkyLight light(
+          sky, tracer, [](const Ray&, const Hit&) { return Radiance(0.0f); }, elements);
       // Across the floor, not only on the centre line: the view factor of a point at
       // x from the centre is (sin φ₁ + sin φ₂)/2 with tan φ = (w/2 ∓ x)/h.
       for (double x : {0.0, 3.0, 7.0}) {
@@ -52,7 +53,8 @@ TEST(BandCountStudy, CanyonViewFactorErrorByCounts) {
     }
   }
   for (int count : {256, 512, 1024, 2048}) {
-    std::printf("[ band count ] fibonacci %4d  %10d  %.4f\n", count, count / 2, worst_canyon_error(sky, fibonacci_sphere(count)));
+    std::printf("[ band count ] fibonacci %4d  %10d  %.4f\n", count, count / 2,
+                worst_canyon_error(sky, fibonacci_sphere(count)));
   }
   const double chosen = worst_canyon_error(sky, fibonacci_sphere(SkyLight::kDefaultDirections));
   EXPECT_LT(chosen, 0.012);  // measured 0.0102: docs/sky-light.md

@@ -29,7 +29,8 @@ TEST(BandSources, ElementsTileTheSphereWithEqualBandsForAHorizontalSurface) {
   // surface's cosine-weighted hemisphere (within the midpoint rule's 3 % for 16
   // segments along the band and the band's width in δ).
   for (int l = 0; l < 8; ++l) {
-    EXPECT_NEAR(std::cos(bands.tilt(l) - bands.half_width(l)) - std::cos(bands.tilt(l) + bands.half_width(l)), 2.0 / 8, 1e-12);
+    EXPECT_NEAR(std::cos(bands.tilt(l) - bands.half_width(l)) - std::cos(bands.tilt(l) + bands.half_width(l)), 2.0 / 8,
+                1e-12);
     EXPECT_NEAR(horizontal[static_cast<size_t>(l)], kPi / 8, 0.03 * kPi / 8) << l;
   }
   int band, segment;
@@ -108,7 +109,8 @@ TEST(SkyLight, UnobstructedIrradianceMatchesADenseQuadratureOfTheSky) {
           const Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
           const double c = dot(n, w);
           if (c <= 0) continue;
-          dense += f.sky.sky_radiance_near_ground(w).spectrum() * static_cast<float>(c * std::sin(theta) * (kPi / kTheta) * (2 * kPi / kPhi));
+          dense += f.sky.sky_radiance_near_ground(w).spectrum() *
+                   static_cast<float>(c * std::sin(theta) * (kPi / kTheta) * (2 * kPi / kPhi));
         }
       }
       const double expected = illuminance(Irradiance(dense));

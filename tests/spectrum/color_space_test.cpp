@@ -29,8 +29,7 @@ TEST(ColorSpace, YRowGivesLuminance) {
 }
 
 TEST(ColorSpace, SrgbTransferRoundTrips) {
-  for (double v : {0.0, 0.001, 0.0031308, 0.04, 0.2, 0.5, 1.0})
-    EXPECT_NEAR(srgb_decode(srgb_encode(v)), v, 1e-12);
+  for (double v : {0.0, 0.001, 0.0031308, 0.04, 0.2, 0.5, 1.0}) EXPECT_NEAR(srgb_decode(srgb_encode(v)), v, 1e-12);
   EXPECT_NEAR(srgb_encode(0.18), 0.4613561, 1e-6);  // mid grey encodes to 118/255
 }
 

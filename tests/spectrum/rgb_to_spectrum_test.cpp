@@ -10,9 +10,9 @@
 #include <iostream>
 #include <limits>
 
+#include "skylit/core/error.h"
 #include "skylit/spectrum/cie.h"
 #include "skylit/spectrum/illuminants.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 namespace {
@@ -63,8 +63,8 @@ TEST(RgbToSpectrum, RoundTripWithinOneDeltaE2000OnSrgbGrid) {
     EXPECT_LE(delta_e, 1.0) << rgb[0] << " " << rgb[1] << " " << rgb[2];
     if (delta_e > worst) worst = delta_e, worst_rgb = rgb;
   }
-  std::cout << "[ round trip ] worst ΔE2000 " << worst << " at linear sRGB (" << worst_rgb[0] << ", "
-            << worst_rgb[1] << ", " << worst_rgb[2] << ")\n";
+  std::cout << "[ round trip ] worst ΔE2000 " << worst << " at linear sRGB (" << worst_rgb[0] << ", " << worst_rgb[1]
+            << ", " << worst_rgb[2] << ")\n";
   RecordProperty("worst_delta_e_2000", std::to_string(worst));
   // Speed (materials are fitted at scene load) is the benchmarks' to measure, not a
   // test's: wall-clock bounds fail on loaded or instrumented (sanitizer) machines.
@@ -112,9 +112,8 @@ TEST(RgbToSpectrum, GreysGiveExactFlatSpectra) {
 
 TEST(RgbToSpectrum, ClampsInputAndNeverProducesNan) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const Rgb hard_inputs[] = {{1, 0, 0},    {0, 1, 0},     {0, 0, 1},         {1, 1, 0},
-                             {0, 1, 1},    {1, 0, 1},     {1e-9, 0, 0},      {1, 1, 1 - 1e-9},
-                             {-1, 0.5, 2}, {nan, 0.5, 0}, {1e300, -1e300, 0}};
+  const Rgb hard_inputs[] = {{1, 0, 0},    {0, 1, 0},        {0, 0, 1},    {1, 1, 0},     {0, 1, 1},         {1, 0, 1},
+                             {1e-9, 0, 0}, {1, 1, 1 - 1e-9}, {-1, 0.5, 2}, {nan, 0.5, 0}, {1e300, -1e300, 0}};
   for (const Rgb& rgb : hard_inputs) {
     const SigmoidPolynomial fit = fit_reflectance_to_linear_srgb(rgb);
     const Spectrum binned = reflectance_from_linear_srgb(rgb);
@@ -139,8 +138,8 @@ TEST(RgbToSpectrum, BinnedReflectanceIsBinMeansOfThe1nmCurve) {
 TEST(RgbToSpectrum, SamplesHoldEndValuesOutsideTheirRange) {
   // Linear from 0.2 at 500 nm to 0.6 at 600 nm, held at 0.2 below and 0.6 above.
   const Spectrum s = reflectance_from_samples({{500.0, 0.2}, {600.0, 0.6}}, "scene.json: materials[0]");
-  const std::vector<double> expected = bin_averages(
-      Tabulated{{380.0, 500.0, 600.0, 780.0}, {0.2, 0.2, 0.6, 0.6}}, kGrid);
+  const std::vector<double> expected =
+      bin_averages(Tabulated{{380.0, 500.0, 600.0, 780.0}, {0.2, 0.2, 0.6, 0.6}}, kGrid);
   for (int i = 0; i < Spectrum::size(); ++i) EXPECT_NEAR(s[i], expected[static_cast<size_t>(i)], 1e-7);
   EXPECT_NEAR(s[0], 0.2, 1e-7);
   EXPECT_NEAR(s[Spectrum::size() - 1], 0.6, 1e-7);

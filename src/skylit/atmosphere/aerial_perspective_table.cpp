@@ -49,7 +49,8 @@ MediumStretch AerialPerspectiveTable::at(const RelativeDirection& direction, dou
   const int k = std::min(static_cast<int>(std::sqrt(d / kMaxDistanceM) * (kDistanceSize - 1)), kDistanceSize - 2);
   const double d0 = slice_distance(k), d1 = slice_distance(k + 1);
   const double fz = k + (d - d0) / (d1 - d0);
-  return {Transmittance(transmittance_of(optical_depth_.interpolate(fx, fy, fz))), Radiance(in_scattered_.interpolate(fx, fy, fz))};
+  return {Transmittance(transmittance_of(optical_depth_.interpolate(fx, fy, fz))),
+          Radiance(in_scattered_.interpolate(fx, fy, fz))};
 }
 
 }  // namespace skylit

@@ -50,7 +50,8 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
     : atmosphere_(atmosphere),
       to_sun_(normalize(to_sun)),
       sun_elevation_(std::asin(std::clamp(to_sun_.z, -1.0, 1.0))),
-      observer_radius_(atmosphere.ground_radius() + std::clamp(observer_height_m, 0.0, 0.9 * atmosphere.settings().top_altitude_m)),
+      observer_radius_(atmosphere.ground_radius() +
+                       std::clamp(observer_height_m, 0.0, 0.9 * atmosphere.settings().top_altitude_m)),
       sun_angular_radius_(kSunAngularRadiusAt1AuRad / atmosphere.settings().earth_sun_distance_au) {
   const double ground = atmosphere.ground_radius();
   const Spectrum& sun = atmosphere.extraterrestrial_irradiance().spectrum();
@@ -60,11 +61,14 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
     direct_sun_profile_.push_back(atmosphere.direct_sun_exact(kDirectSunProfileTopM * u * u, sun_elevation_));
   }
   sun_through_air_ = direct_sun(observer_radius_ - ground);
-  observer_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
+  observer_view_ =
+      std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
   if (observer_radius_ - ground > kGroundLayerM)
     ground_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, ground + 1.0, ground, sun_elevation_);
-  aerial_ = std::make_unique<AerialPerspectiveTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
-  ground_sky_irradiance_ = std::make_unique<SkyIrradianceTable>(ground_view_ ? *ground_view_ : *observer_view_, to_sun_);
+  aerial_ =
+      std::make_unique<AerialPerspectiveTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
+  ground_sky_irradiance_ =
+      std::make_unique<SkyIrradianceTable>(ground_view_ ? *ground_view_ : *observer_view_, to_sun_);
 }
 
 Irradiance SkyModel::direct_sun(double height_m) const {

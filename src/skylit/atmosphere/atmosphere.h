@@ -85,7 +85,7 @@ class SkyModel {
   static constexpr int kDirectSunProfileSize = 65;
   static constexpr double kDirectSunProfileTopM = 2000.0;
   std::vector<Irradiance> direct_sun_profile_;  // at heights top·(k/(size−1))²
-  Irradiance sun_through_air_;  // extraterrestrial × transmittance from the observer
+  Irradiance sun_through_air_;                  // extraterrestrial × transmittance from the observer
   std::unique_ptr<SkyViewTable> observer_view_;
   std::unique_ptr<SkyViewTable> ground_view_;  // the same table when the observer is near the ground
   std::unique_ptr<AerialPerspectiveTable> aerial_;

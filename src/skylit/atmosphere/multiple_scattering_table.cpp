@@ -41,9 +41,9 @@ double unit_from_mu_sun(double mu_sun) {
 }  // namespace
 
 MultipleScatteringTable::Factors MultipleScatteringTable::factors_at(const AtmosphereMedium& medium,
-                                                                      const TransmittanceTable& transmittance,
-                                                                      double ground_albedo, double r, double mu_sun,
-                                                                      int directions, int segments) {
+                                                                     const TransmittanceTable& transmittance,
+                                                                     double ground_albedo, double r, double mu_sun,
+                                                                     int directions, int segments) {
   const double rg = transmittance.ground_radius(), rt = transmittance.top_radius();
   const float isotropic = static_cast<float>(1.0 / kFourPi);
   const double sin_sun = std::sqrt(std::max(0.0, 1.0 - mu_sun * mu_sun));
@@ -66,8 +66,8 @@ MultipleScatteringTable::Factors MultipleScatteringTable::factors_at(const Atmos
       const double h = r_t - medium.earth_radius_m;
       const double rho_r = medium.rayleigh_density(h), rho_a = medium.aerosol_density(h);
       const Spectrum extinction = medium.extinction(rho_r, rho_a, medium.ozone_density(h));
-      const Spectrum scattering =
-          medium.rayleigh_scattering * static_cast<float>(rho_r) + medium.aerosol_scattering * static_cast<float>(rho_a);
+      const Spectrum scattering = medium.rayleigh_scattering * static_cast<float>(rho_r) +
+                                  medium.aerosol_scattering * static_cast<float>(rho_a);
       const Spectrum segment_transmittance = transmittance_of(extinction * static_cast<float>(dt));
       const Spectrum sun = transmittance.to_top(r_t, mu_s_t);
       for (int k = 0; k < kSpectralBins; ++k) {
@@ -100,13 +100,14 @@ MultipleScatteringTable::Factors MultipleScatteringTable::factors_at(const Atmos
   return {second_order * weight, transfer * weight};
 }
 
-MultipleScatteringTable::MultipleScatteringTable(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
-                                                 double ground_albedo)
+MultipleScatteringTable::MultipleScatteringTable(const AtmosphereMedium& medium,
+                                                 const TransmittanceTable& transmittance, double ground_albedo)
     : ground_radius_(transmittance.ground_radius()),
       top_radius_(transmittance.top_radius()),
       table_(kMuSunSize, kAltitudeSize) {
   tbb::parallel_for(0, kAltitudeSize, [&](int j) {
-    const double r = ground_radius_ + altitude_from_unit(static_cast<double>(j) / (kAltitudeSize - 1), top_radius_ - ground_radius_);
+    const double r =
+        ground_radius_ + altitude_from_unit(static_cast<double>(j) / (kAltitudeSize - 1), top_radius_ - ground_radius_);
     for (int i = 0; i < kMuSunSize; ++i) {
       const double mu_sun = mu_sun_from_unit(static_cast<double>(i) / (kMuSunSize - 1));
       const Factors f = factors_at(medium, transmittance, ground_albedo, r, mu_sun);

@@ -20,7 +20,8 @@ class MultipleScatteringTable {
   static constexpr int kDirections = 64;  // Hillaire's 64 directions over the sphere
   static constexpr int kSegments = 20;
 
-  MultipleScatteringTable(const AtmosphereMedium& medium, const TransmittanceTable& transmittance, double ground_albedo);
+  MultipleScatteringTable(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
+                          double ground_albedo);
 
   // Ψ_ms (sr⁻¹ per unit solar irradiance) at radius r with the sun at zenith cosine μ_s.
   Spectrum psi(double r, double mu_sun) const;

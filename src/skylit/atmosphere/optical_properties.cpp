@@ -3,15 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skylit/core/angles.h"
 #include "skylit/spectrum/illuminants.h"
 #include "skylit/spectrum/tabulated.h"
-#include "skylit/core/angles.h"
 
 namespace skylit {
 
 namespace {
 
-constexpr double kCo2PartsPerVolume = 360e-6;  // Bodhaine et al.'s reference air
+constexpr double kCo2PartsPerVolume = 360e-6;     // Bodhaine et al.'s reference air
 constexpr double kLoschmidtPerCm3 = 2.546899e19;  // N_s at 288.15 K, 1013.25 hPa (Bodhaine Eq. 2)
 constexpr double kAvogadro = 6.0221367e23;
 constexpr double kSeaLevelPressureDynPerCm2 = 1013.25e3;
@@ -65,7 +65,7 @@ SpectralBands SpectralBands::consecutive(double first_center_nm, double width_nm
 
 double king_factor_air(double wavelength_nm) {
   const double inv_um2 = 1.0 / std::pow(wavelength_nm * 1e-3, 2);
-  const double f_n2 = 1.034 + 3.17e-4 * inv_um2;                               // Bates 1984
+  const double f_n2 = 1.034 + 3.17e-4 * inv_um2;                                  // Bates 1984
   const double f_o2 = 1.096 + 1.385e-3 * inv_um2 + 1.448e-4 * inv_um2 * inv_um2;  // Bates 1984
   const double f_ar = 1.00, f_co2 = 1.15;
   const double co2_percent = kCo2PartsPerVolume * 100.0;
@@ -78,7 +78,8 @@ double rayleigh_cross_section_m2(double wavelength_nm) {
   const double lambda_cm = wavelength_nm * 1e-7;
   const double ratio = (n * n - 1.0) / (n * n + 2.0);
   const double sigma_cm2 = 24.0 * std::pow(kPi, 3) * ratio * ratio /
-                           (std::pow(lambda_cm, 4) * kLoschmidtPerCm3 * kLoschmidtPerCm3) * king_factor_air(wavelength_nm);
+                           (std::pow(lambda_cm, 4) * kLoschmidtPerCm3 * kLoschmidtPerCm3) *
+                           king_factor_air(wavelength_nm);
   return sigma_cm2 * 1e-4;
 }
 
@@ -113,15 +114,19 @@ AtmosphereMedium::AtmosphereMedium(const AtmosphereSettings& settings, const Spe
     const double lo = bands.lo_nm[static_cast<size_t>(i)], hi = bands.hi_nm[static_cast<size_t>(i)];
     // Band means: of the Rayleigh optical depth by Simpson's rule (smooth), of ozone's
     // finely structured cross section exactly from its table.
-    const double tau_r = (rayleigh_optical_depth_sea_level(lo) + 4.0 * rayleigh_optical_depth_sea_level(0.5 * (lo + hi)) +
-                          rayleigh_optical_depth_sea_level(hi)) / 6.0;
+    const double tau_r =
+        (rayleigh_optical_depth_sea_level(lo) + 4.0 * rayleigh_optical_depth_sea_level(0.5 * (lo + hi)) +
+         rayleigh_optical_depth_sea_level(hi)) /
+        6.0;
     // The scale height fixes the sea-level coefficient: τ = β₀·H (issue 3; docs/atmosphere.md).
     rayleigh_scattering[i] = static_cast<float>(tau_r / rayleigh_scale_height_m_);
     const double lambda = 0.5 * (lo + hi);
     const double aerosol_tau = aerosol.aod_550 * std::pow(lambda / 550.0, -aerosol.angstrom_exponent);
     aerosol_extinction[i] = static_cast<float>(aerosol_tau / aerosol_scale_height_m_);
-    aerosol_scattering[i] = static_cast<float>(aerosol.single_scattering_albedo * aerosol_tau / aerosol_scale_height_m_);
-    ozone_absorption[i] = static_cast<float>(ozone_ ? ozone_peak_per_m3 * ozone_cross_section_cm2().average(lo, hi) * 1e-4 : 0.0);
+    aerosol_scattering[i] =
+        static_cast<float>(aerosol.single_scattering_albedo * aerosol_tau / aerosol_scale_height_m_);
+    ozone_absorption[i] =
+        static_cast<float>(ozone_ ? ozone_peak_per_m3 * ozone_cross_section_cm2().average(lo, hi) * 1e-4 : 0.0);
   }
   const double f = king_factor_air(550.0);
   const double depolarisation = (6.0 * f - 6.0) / (3.0 + 7.0 * f);  // F = (6 + 3ρ)/(6 − 7ρ)

@@ -26,8 +26,7 @@ inline double henyey_greenstein_phase(double cos_theta, double g) {
 // Rayleigh-like term; g is its parameter (close to the mean cosine).
 inline double cornette_shanks_phase(double cos_theta, double g) {
   const double denom = 1.0 + g * g - 2.0 * g * cos_theta;
-  return 3.0 / (8.0 * kPi) * (1.0 - g * g) * (1.0 + cos_theta * cos_theta) /
-         ((2.0 + g * g) * denom * std::sqrt(denom));
+  return 3.0 / (8.0 * kPi) * (1.0 - g * g) * (1.0 + cos_theta * cos_theta) / ((2.0 + g * g) * denom * std::sqrt(denom));
 }
 
 }  // namespace skylit

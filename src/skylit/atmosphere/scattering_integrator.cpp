@@ -31,8 +31,9 @@ ScatteringIntegrator::ScatteringIntegrator(const AtmosphereMedium& medium, const
       ground_albedo_(ground_albedo) {}
 
 ScatteringIntegrator::Phases ScatteringIntegrator::phases(double nu) const {
-  const double aerosol = aerosol_.phase == AerosolPhase::cornette_shanks ? cornette_shanks_phase(nu, aerosol_.asymmetry)
-                                                                         : henyey_greenstein_phase(nu, aerosol_.asymmetry);
+  const double aerosol = aerosol_.phase == AerosolPhase::cornette_shanks
+                             ? cornette_shanks_phase(nu, aerosol_.asymmetry)
+                             : henyey_greenstein_phase(nu, aerosol_.asymmetry);
   return {static_cast<float>(rayleigh_phase(nu, medium_.rayleigh_gamma)), static_cast<float>(aerosol)};
 }
 
@@ -70,7 +71,8 @@ void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, doubl
 void ScatteringIntegrator::add_ground(double r, double mu_sun, double nu, double length, ScatteredLight& light) const {
   const double rg = transmittance_.ground_radius();
   const double mu_sun_g = std::clamp((r * mu_sun + length * nu) / rg, -1.0, 1.0);
-  Spectrum irradiance = mu_sun_g > 0 ? transmittance_.to_top(rg, mu_sun_g) * static_cast<float>(mu_sun_g) : Spectrum(0.0f);
+  Spectrum irradiance =
+      mu_sun_g > 0 ? transmittance_.to_top(rg, mu_sun_g) * static_cast<float>(mu_sun_g) : Spectrum(0.0f);
   if (ground_sky_) irradiance += ground_sky_->at(mu_sun_g);
   for (int k = 0; k < kSpectralBins; ++k)
     light.radiance[k] += light.transmittance[k] * irradiance[k] * static_cast<float>(ground_albedo_ / kPi);

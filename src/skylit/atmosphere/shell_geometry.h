@@ -30,9 +30,7 @@ inline double distance_to_ground(double r, double mu, double ground) {
 inline double radius_at(double r, double mu, double t) {
   return std::sqrt(std::max(0.0, r * r + t * t + 2.0 * r * mu * t));
 }
-inline double mu_at(double r, double mu, double t, double r_t) {
-  return std::clamp((r * mu + t) / r_t, -1.0, 1.0);
-}
+inline double mu_at(double r, double mu, double t, double r_t) { return std::clamp((r * mu + t) / r_t, -1.0, 1.0); }
 
 // Segment boundaries 0 = t₀ < … < t_n = length for integrating along a ray, crowded
 // (quadratically) toward t_low, where the ray is lowest and the air densest: t_low − t_low·u²

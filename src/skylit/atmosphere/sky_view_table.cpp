@@ -22,8 +22,8 @@ void SkyDirectionMapping::to_unit(const RelativeDirection& d, double& u_azimuth,
 
 RelativeDirection SkyDirectionMapping::from_unit(double u_azimuth, double u_elevation) const {
   const double above = 2.0 * u_elevation - 1.0;
-  const double e = above >= 0 ? horizon_ + (kHalfPi - horizon_) * above * above
-                              : horizon_ - (kHalfPi + horizon_) * above * above;
+  const double e =
+      above >= 0 ? horizon_ + (kHalfPi - horizon_) * above * above : horizon_ - (kHalfPi + horizon_) * above * above;
   return {e, u_azimuth * kPi};
 }
 

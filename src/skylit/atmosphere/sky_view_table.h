@@ -51,8 +51,9 @@ template <typename F>
 void SkyDirectionMapping::for_each_node(int size_x, int size_y, double sun_elevation_rad, F&& f) const {
   tbb::parallel_for(0, size_y, [&](int j) {
     for (int i = 0; i < size_x; ++i)
-      f(i, j, ray_cosines(from_unit(static_cast<double>(i) / (size_x - 1), static_cast<double>(j) / (size_y - 1)),
-                          sun_elevation_rad));
+      f(i, j,
+        ray_cosines(from_unit(static_cast<double>(i) / (size_x - 1), static_cast<double>(j) / (size_y - 1)),
+                    sun_elevation_rad));
   });
 }
 

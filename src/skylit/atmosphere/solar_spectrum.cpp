@@ -27,7 +27,8 @@ std::vector<SolarSpectrumSample> solar_spectrum(const AtmosphereSettings& settin
     const Spectrum diffuse = atmosphere.integrator().horizontal_irradiance(r, mu_sun, 16, 16, 48) * e0;
     const Spectrum zenith = atmosphere.integrator().along_ray(r, 1.0, mu_sun, mu_sun, 96).radiance * e0;
     for (int i = 0; i < kSpectralBins && chunk + i <= last_nm; ++i)
-      samples[static_cast<size_t>(chunk + i - first_nm)] = {static_cast<double>(chunk + i), direct[i], diffuse[i], zenith[i]};
+      samples[static_cast<size_t>(chunk + i - first_nm)] = {static_cast<double>(chunk + i), direct[i], diffuse[i],
+                                                            zenith[i]};
   });
   return samples;
 }

@@ -41,7 +41,7 @@ class TransmittanceTable {
  private:
   double ground_radius_, top_radius_;
   double horizon_distance_;  // √(top² − ground²): from the ground to the top along the horizon
-  SpectrumGrid2D table_;  // optical depth; x: μ, y: r
+  SpectrumGrid2D table_;     // optical depth; x: μ, y: r
 };
 
 }  // namespace skylit

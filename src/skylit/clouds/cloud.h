@@ -45,8 +45,7 @@ class Cloud : public CloudGeometry {
   // (d unit, from the viewer), t in [t_min, t_max] (Eq. 16 without I_behind;
   // scatter_through_cloud). t' comes from the grid if prepare_sun was called with
   // light.to_sun, else is marched.
-  CloudScattering scatter(const Vec3& o, const Vec3& d, double t_min, double t_max,
-                          const CloudLighting& light) const {
+  CloudScattering scatter(const Vec3& o, const Vec3& d, double t_min, double t_max, const CloudLighting& light) const {
     return scatter_through_cloud(*this, sun_depths_, o, d, t_min, t_max, light);
   }
   // Eq. 16 in full: I_behind · e^{−t_total} + in-scattered.

@@ -16,17 +16,17 @@
 namespace skylit {
 
 struct CloudLayerSettings {
-  double altitude = 1500;       // mid-plane, m
-  double coverage = 0.3;        // fraction of the sky's area covered, in [0, 1]
+  double altitude = 1500;  // mid-plane, m
+  double coverage = 0.3;   // fraction of the sky's area covered, in [0, 1]
   std::uint64_t seed = 1;
   double center_x = 0, center_y = 0;  // the square region covered, m
   double half_extent = 10000;
-  double min_semi_axis = 300, max_semi_axis = 1500;   // m, of the larger semi-axis
-  double min_aspect = 0.5;                            // smaller/larger semi-axis, up to 1
-  double min_thickness = 200, max_thickness = 600;    // T_max range, m
-  double extinction = kDefaultCloudExtinction;        // m⁻¹
-  int waves = 4;                                      // sine waves per axis (Gardner's series)
-  double first_amplitude = 0.3;                       // then ×1/√2 per wave
+  double min_semi_axis = 300, max_semi_axis = 1500;  // m, of the larger semi-axis
+  double min_aspect = 0.5;                           // smaller/larger semi-axis, up to 1
+  double min_thickness = 200, max_thickness = 600;   // T_max range, m
+  double extinction = kDefaultCloudExtinction;       // m⁻¹
+  int waves = 4;                                     // sine waves per axis (Gardner's series)
+  double first_amplitude = 0.3;                      // then ×1/√2 per wave
 };
 
 // A uniform double in [0, 1) from the top 53 bits of one draw.
@@ -56,7 +56,7 @@ class CloudLayer {
   bool empty() const { return clouds_.empty(); }
 
   struct Crossing {
-    std::size_t index;  // into clouds()
+    std::size_t index;       // into clouds()
     double t_enter, t_exit;  // the ray's part in the cloud's bounding volume
   };
   // Clouds whose bounding volume the ray o + t·d, t in [t_min, t_max], crosses, by t_enter.
@@ -71,8 +71,7 @@ class CloudLayer {
   // Eq. 16 along a viewing ray through all the clouds it crosses, composited front to
   // back (each cloud lit through its own shape only; overlapping bounding volumes are
   // taken one after the other).
-  CloudScattering scatter(const Vec3& o, const Vec3& d, double t_min, double t_max,
-                          const CloudLighting& light) const;
+  CloudScattering scatter(const Vec3& o, const Vec3& d, double t_min, double t_max, const CloudLighting& light) const;
 
  private:
   std::vector<Cloud> clouds_;

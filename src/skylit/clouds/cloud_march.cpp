@@ -196,7 +196,7 @@ void march_span(const MarchPart& m, int i, const MarginSample& si, int j, const 
   const double eps = m.frame.eps;
   if (m.skip && j - i >= 2 && in_i == in_j && std::min(std::abs(si.g), std::abs(sj.g)) > eps) {
     if (!in_i && margin_bound(m.cloud, m.frame, ti, si, tj, sj, true) < -eps) return;  // outside throughout
-    if (in_i && margin_bound(m.cloud, m.frame, ti, si, tj, sj, false) > eps) {        // inside throughout
+    if (in_i && margin_bound(m.cloud, m.frame, ti, si, tj, sj, false) > eps) {         // inside throughout
       if (m.whole_runs) {
         m.sink(ti, tj);
       } else {

@@ -58,8 +58,8 @@ CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunDepth
   // With no usable sun direction t' is still taken straight up (as before).
   const bool use_grid = sun_depths.prepared_for(to_sun);
   const double similarity = 1.0 - cloud_mean_cosine();  // (1 − g): van de Hulst's similarity
-  double view_depth = 0;  // t(s): from the viewer's side of the cloud to s
-  double view_transmittance = 1;  // e^{−t(s)}, kept as a product of the steps' e^{−τ}
+  double view_depth = 0;                                // t(s): from the viewer's side of the cloud to s
+  double view_transmittance = 1;                        // e^{−t(s)}, kept as a product of the steps' e^{−τ}
   // Both sources are the same spectrum at every step: sum their scalar weights (in
   // double) and scale the spectra once.
   double sun_weight = 0, ambient_weight = 0;

@@ -46,15 +46,15 @@ struct CloudWave {
 };
 
 struct CloudShape {
-  double center_x = 0, center_y = 0;  // m
-  double altitude = 1500;             // z of the mid-plane, m
-  double semi_axis_a = 1000;          // m, along the u axis
-  double semi_axis_b = 600;           // m, along the v axis
-  double rotation = 0;                // rad: angle of the u axis counter-clockwise from east (+x)
-  double max_thickness = 400;         // T_max, m
-  double falloff_exponent = 0.5;      // p in (1 − r²)^p
-  std::vector<CloudWave> waves_u;     // texture along u (Gardner's x series)
-  std::vector<CloudWave> waves_v;     // texture along v (Gardner's y series)
+  double center_x = 0, center_y = 0;            // m
+  double altitude = 1500;                       // z of the mid-plane, m
+  double semi_axis_a = 1000;                    // m, along the u axis
+  double semi_axis_b = 600;                     // m, along the v axis
+  double rotation = 0;                          // rad: angle of the u axis counter-clockwise from east (+x)
+  double max_thickness = 400;                   // T_max, m
+  double falloff_exponent = 0.5;                // p in (1 − r²)^p
+  std::vector<CloudWave> waves_u;               // texture along u (Gardner's x series)
+  std::vector<CloudWave> waves_v;               // texture along v (Gardner's y series)
   double extinction = kDefaultCloudExtinction;  // σ, m⁻¹, grey
   double albedo = 1.0;                          // ω, single-scattering albedo
 };

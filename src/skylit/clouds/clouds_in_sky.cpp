@@ -8,7 +8,8 @@ namespace skylit {
 namespace {
 
 // The clouds given one by one, then the generated layer's.
-std::vector<Cloud> all_clouds(const std::vector<CloudShape>& listed, const std::optional<CloudLayerSettings>& generated) {
+std::vector<Cloud> all_clouds(const std::vector<CloudShape>& listed,
+                              const std::optional<CloudLayerSettings>& generated) {
   std::vector<Cloud> clouds(listed.begin(), listed.end());
   if (generated) {
     const CloudLayer layer = CloudLayer::generate(*generated);
@@ -35,8 +36,9 @@ CloudsInSky::CloudsInSky(const std::vector<CloudShape>& listed, const std::optio
   // (docs/clouds.md), so that clouds stay lit by the sky after sunset.
   lighting_.to_sun = to_sun_;
   lighting_.sun = sky.direct_sun(altitude).spectrum();
-  lighting_.ambient = default_cloud_ambient(lighting_.sun, to_sun_) +
-                      (sky.sky_irradiance({0, 0, 1}) * static_cast<float>(kDefaultCloudAmbientFraction / kPi)).spectrum();
+  lighting_.ambient =
+      default_cloud_ambient(lighting_.sun, to_sun_) +
+      (sky.sky_irradiance({0, 0, 1}) * static_cast<float>(kDefaultCloudAmbientFraction / kPi)).spectrum();
   sky_share_ = measure_sky_share(sky, ground_point);
 }
 

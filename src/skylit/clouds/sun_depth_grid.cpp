@@ -42,8 +42,7 @@ bool SunDepthGrid::prepared_for(const Vec3& to_sun) const {
   const double len = length(to_sun);
   if (!(len > 0) || !std::isfinite(len)) return false;
   const Vec3 d = to_sun / len;
-  return std::abs(d.x - to_sun_.x) <= 1e-12 && std::abs(d.y - to_sun_.y) <= 1e-12 &&
-         std::abs(d.z - to_sun_.z) <= 1e-12;
+  return std::abs(d.x - to_sun_.x) <= 1e-12 && std::abs(d.y - to_sun_.y) <= 1e-12 && std::abs(d.z - to_sun_.z) <= 1e-12;
 }
 
 double SunDepthGrid::depth_at(const CloudGeometry& cloud, const Vec3& p) const {

@@ -55,10 +55,11 @@ Json string_or_null(const std::optional<std::string>& value) { return value ? Js
 }  // namespace
 
 std::string comparison_table(const ComparedFiles& files, const std::vector<RegionComparison>& regions) {
-  std::string out = "A: " + files.a + (files.standard_error_a ? " (standard error " + *files.standard_error_a + ")" : "") +
-                    "\nB: " + files.b + (files.standard_error_b ? " (standard error " + *files.standard_error_b + ")" : "") +
-                    "\n" + std::to_string(files.width) + "x" + std::to_string(files.height) +
-                    " pixels; luminance in cd/m²; B/A = mean B / mean A; median, p5, p95 of B/A per pixel\n\n";
+  std::string out =
+      "A: " + files.a + (files.standard_error_a ? " (standard error " + *files.standard_error_a + ")" : "") +
+      "\nB: " + files.b + (files.standard_error_b ? " (standard error " + *files.standard_error_b + ")" : "") + "\n" +
+      std::to_string(files.width) + "x" + std::to_string(files.height) +
+      " pixels; luminance in cd/m²; B/A = mean B / mean A; median, p5, p95 of B/A per pixel\n\n";
   std::vector<std::vector<std::string>> rows = {
       {"region", "pixels", "dark", "mean A", "mean B", "B/A", "± SE", "median", "p5", "p95"}};
   for (const RegionComparison& r : regions)

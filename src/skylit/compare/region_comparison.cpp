@@ -10,7 +10,9 @@
 namespace skylit {
 namespace {
 
-double luminance_at(const XyzImage& image, uint32_t index) { return image.xyz[3 * static_cast<std::size_t>(index) + 1]; }
+double luminance_at(const XyzImage& image, uint32_t index) {
+  return image.xyz[3 * static_cast<std::size_t>(index) + 1];
+}
 
 bool finite_at(const XyzImage& image, uint32_t index) {
   const float* p = &image.xyz[3 * static_cast<std::size_t>(index)];
@@ -65,7 +67,8 @@ RegionComparison compare_region(const ImageRegion& region, const XyzImage& a, co
     out.mean_a_standard_error_cd_m2 = se_a;
     out.mean_b_standard_error_cd_m2 = se_b;
     // r = b/a: var r ≈ (∂r/∂b)² var b + (∂r/∂a)² var a = (se_b² + r² se_a²) / a².
-    out.ratio_standard_error = std::sqrt(se_b * se_b + out.ratio * out.ratio * se_a * se_a) / std::abs(out.mean_a_cd_m2);
+    out.ratio_standard_error =
+        std::sqrt(se_b * se_b + out.ratio * out.ratio * se_a * se_a) / std::abs(out.mean_a_cd_m2);
   }
   out.pixel_ratio_median = quantile(ratios, 0.5);
   out.pixel_ratio_p05 = quantile(ratios, 0.05);

@@ -38,8 +38,8 @@ struct RegionComparison {
   // Standard errors of the means, sqrt(Σ SE²) / N (independent pixels): only with
   // standard-error images.
   std::optional<double> mean_a_standard_error_cd_m2, mean_b_standard_error_cd_m2;
-  double ratio = 0;                               // mean B / mean A; NaN if mean A is 0
-  std::optional<double> ratio_standard_error;     // delta method, A and B independent
+  double ratio = 0;                            // mean B / mean A; NaN if mean A is 0
+  std::optional<double> ratio_standard_error;  // delta method, A and B independent
   // Percentiles of pixel_luminance_ratio over the pixels that are not dark (linear
   // interpolation between order statistics); NaN if there are none.
   double pixel_ratio_median = 0, pixel_ratio_p05 = 0, pixel_ratio_p95 = 0;

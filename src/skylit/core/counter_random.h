@@ -26,7 +26,9 @@ class CounterRandom {
       : key_(splitmix64(splitmix64(splitmix64(seed) ^ pixel) ^ sample)) {}
 
   // The next number, uniform in [0, 1) with 53 random bits.
-  constexpr double uniform() { return static_cast<double>(splitmix64(key_ + 0x632be59bd9b4e019ULL * ++counter_) >> 11) * 0x1.0p-53; }
+  constexpr double uniform() {
+    return static_cast<double>(splitmix64(key_ + 0x632be59bd9b4e019ULL * ++counter_) >> 11) * 0x1.0p-53;
+  }
 
  private:
   uint64_t key_;

@@ -8,8 +8,9 @@ namespace skylit {
 
 void complement_of_union(double t_min, double t_max, double tolerance, std::vector<Interval>& out) {
   // Union of the pieces; gaps within the tolerance are closed.
-  std::sort(out.begin(), out.end(),
-            [](const Interval& a, const Interval& b) { return a.begin < b.begin || (a.begin == b.begin && a.end < b.end); });
+  std::sort(out.begin(), out.end(), [](const Interval& a, const Interval& b) {
+    return a.begin < b.begin || (a.begin == b.begin && a.end < b.end);
+  });
   size_t merged = 0;
   for (size_t i = 0; i < out.size(); ++i) {
     if (merged > 0 && out[i].begin <= out[merged - 1].end + tolerance)

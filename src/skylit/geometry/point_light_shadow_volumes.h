@@ -45,13 +45,13 @@ class PointLightShadowVolumes {
  private:
   // Frusta [begin, end), all inside a cone from the light.
   struct Group {
-    Vec3 axis;          // unit, from the light toward the group's bounding sphere
-    double sin_half;    // of the cone's half-angle; ≥ 1: the light is inside the sphere
+    Vec3 axis;        // unit, from the light toward the group's bounding sphere
+    double sin_half;  // of the cone's half-angle; ≥ 1: the light is inside the sphere
     uint32_t begin, end;
   };
 
   Vec3 light_;
-  double scale_ = 1;  // largest coordinate magnitude of the light and the casting triangles, >= 1 m
+  double scale_ = 1;                  // largest coordinate magnitude of the light and the casting triangles, >= 1 m
   std::vector<ShadowVolume> frusta_;  // in mesh order
   std::vector<Group> groups_;
 };

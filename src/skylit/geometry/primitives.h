@@ -2,8 +2,8 @@
 // blocks) and a ground square. All in world metres, z up, outward winding.
 #pragma once
 
-#include "skylit/geometry/triangle_mesh.h"
 #include "skylit/core/vec3.h"
+#include "skylit/geometry/triangle_mesh.h"
 
 namespace skylit {
 

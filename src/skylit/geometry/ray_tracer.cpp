@@ -70,8 +70,8 @@ struct RayTracer::Impl {
   void check(const char* call) {
     std::lock_guard lock(error_mutex);
     if (error == RTC_ERROR_NONE) return;
-    const std::string text = std::string("Embree error in ") + call + " (code " + std::to_string(error) +
-                             "): " + error_message;
+    const std::string text =
+        std::string("Embree error in ") + call + " (code " + std::to_string(error) + "): " + error_message;
     error = RTC_ERROR_NONE;
     error_message.clear();
     throw std::runtime_error(text);
@@ -137,7 +137,7 @@ uint32_t RayTracer::add_mesh(const TriangleMesh& mesh) {
   } release{geometry};
 
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                3 * sizeof(float), mesh.vertices.size()));
+                                                               3 * sizeof(float), mesh.vertices.size()));
   im.check("rtcSetNewGeometryBuffer(vertex)");
   if (!vertices) throw std::runtime_error("Embree: cannot allocate a vertex buffer");
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {

@@ -12,8 +12,8 @@
 #include <memory>
 #include <optional>
 
-#include "skylit/geometry/triangle_mesh.h"
 #include "skylit/core/vec3.h"
+#include "skylit/geometry/triangle_mesh.h"
 
 namespace skylit {
 

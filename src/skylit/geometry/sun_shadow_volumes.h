@@ -58,10 +58,10 @@ class SunShadowVolumes {
  private:
   void build(const std::vector<const TriangleMesh*>& meshes, const Vec3& to_sun);
 
-  Vec3 w_, u_, v_;  // light frame: w toward the sun, u and v across
-  double scale_ = 1;  // largest coordinate magnitude of the casting triangles, >= 1 m
+  Vec3 w_, u_, v_;                    // light frame: w toward the sun, u and v across
+  double scale_ = 1;                  // largest coordinate magnitude of the casting triangles, >= 1 m
   std::vector<ShadowVolume> prisms_;  // in BVH leaf order
-  std::vector<Bvh2dNode> nodes_;  // over the prisms' footprints in (u, v), tops along w
+  std::vector<Bvh2dNode> nodes_;      // over the prisms' footprints in (u, v), tops along w
 };
 
 }  // namespace skylit

@@ -15,10 +15,14 @@ std::pair<double, double> cos_sin_deg(double angle_deg) {
   const double q = r / 90.0;
   if (q == std::floor(q)) {
     switch ((static_cast<int>(q) % 4 + 4) % 4) {
-      case 0: return {1.0, 0.0};
-      case 1: return {0.0, 1.0};
-      case 2: return {-1.0, 0.0};
-      default: return {0.0, -1.0};
+      case 0:
+        return {1.0, 0.0};
+      case 1:
+        return {0.0, 1.0};
+      case 2:
+        return {-1.0, 0.0};
+      default:
+        return {0.0, -1.0};
     }
   }
   return {std::cos(radians(angle_deg)), std::sin(radians(angle_deg))};

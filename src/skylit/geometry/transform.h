@@ -4,8 +4,8 @@
 
 #include <array>
 
-#include "skylit/geometry/triangle_mesh.h"
 #include "skylit/core/vec3.h"
+#include "skylit/geometry/triangle_mesh.h"
 
 namespace skylit {
 

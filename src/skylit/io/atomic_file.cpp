@@ -53,8 +53,7 @@ int write_all(int fd, std::span<const uint8_t> bytes) {
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
   const std::filesystem::path folder = folder_of(target_);
   std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec))
-    fail(target_, "folder " + quoted(folder) + " does not exist");
+  if (!std::filesystem::is_directory(folder, ec)) fail(target_, "folder " + quoted(folder) + " does not exist");
   if (target_.filename().empty()) fail(target_, "the path names a folder, not a file");
   // pid and a per-process counter keep concurrent writers (threads or processes) apart.
   static std::atomic<unsigned> counter{0};
@@ -68,8 +67,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   name += ".tmp";
   temporary_ = folder / name;
   const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) fail(target_, "cannot create a file in folder " + quoted(folder) + ": " +
-                                std::strerror(errno));
+  if (fd < 0) fail(target_, "cannot create a file in folder " + quoted(folder) + ": " + std::strerror(errno));
   ::close(fd);
 }
 

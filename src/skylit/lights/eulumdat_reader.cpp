@@ -9,9 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "skylit/lights/number_text.h"
 #include "skylit/core/error.h"
 #include "skylit/core/text_file.h"
+#include "skylit/lights/number_text.h"
 
 namespace skylit {
 namespace {
@@ -47,7 +47,8 @@ class Lines {
 
   double number(const std::string& what) {
     std::string t = text(what);
-    for (char& ch : t) if (ch == ',') ch = '.';
+    for (char& ch : t)
+      if (ch == ',') ch = '.';
     const auto v = parse_number(t);
     if (!v) fail("expected " + what + ", found " + quote_token(t));
     return *v;
@@ -89,7 +90,8 @@ EulumdatPhotometry parse_eulumdat(const std::string& text, const std::string& na
   out.gamma_angles = in.integer("the number of intensities per C plane Ng (line 6)", 2, kMaxAngles);
   const int ng = out.gamma_angles;
   // Refuse absurd sizes before allocating (a corrupted count must not ask for gigabytes).
-  if (static_cast<long>(mc) * ng > 4000000) in.fail("Mc x Ng = " + std::to_string(mc) + " x " + std::to_string(ng) + " is too large");
+  if (static_cast<long>(mc) * ng > 4000000)
+    in.fail("Mc x Ng = " + std::to_string(mc) + " x " + std::to_string(ng) + " is too large");
   in.number("the distance between intensities Dg (line 7)");
   out.report_number = in.text("the measurement report number (line 8)");
   out.luminaire_name = in.text("the luminaire name (line 9)");
@@ -131,16 +133,21 @@ EulumdatPhotometry parse_eulumdat(const std::string& text, const std::string& na
     in.fail_at(mc_line, "Mc = " + std::to_string(mc) + " does not suit symmetry Isym " + std::to_string(isym) +
                             " (must be divisible by " + (isym == 2 ? "2)" : "4)"));
   int mc1 = 1, mc2 = mc;
-  if (isym == 1) mc2 = 1;
-  else if (isym == 2) mc2 = mc / 2 + 1;
-  else if (isym == 3) mc1 = 3 * mc / 4 + 1, mc2 = mc1 + mc / 2;
-  else if (isym == 4) mc2 = mc / 4 + 1;
+  if (isym == 1)
+    mc2 = 1;
+  else if (isym == 2)
+    mc2 = mc / 2 + 1;
+  else if (isym == 3)
+    mc1 = 3 * mc / 4 + 1, mc2 = mc1 + mc / 2;
+  else if (isym == 4)
+    mc2 = mc / 4 + 1;
 
   const int c_line = in.line() + 1;
   std::vector<double> c_all(static_cast<std::size_t>(mc));
   for (int i = 0; i < mc; ++i) c_all[i] = in.number("C angle " + std::to_string(i + 1) + " of " + std::to_string(mc));
   std::vector<double> gamma(static_cast<std::size_t>(ng));
-  for (int i = 0; i < ng; ++i) gamma[i] = in.number("gamma angle " + std::to_string(i + 1) + " of " + std::to_string(ng));
+  for (int i = 0; i < ng; ++i)
+    gamma[i] = in.number("gamma angle " + std::to_string(i + 1) + " of " + std::to_string(ng));
 
   const int n_planes = mc2 - mc1 + 1;
   const double lumens = out.lamp_sets.front().total_lumens;
@@ -161,7 +168,8 @@ EulumdatPhotometry parse_eulumdat(const std::string& text, const std::string& na
   const CSymmetry symmetries[] = {CSymmetry::kNone, CSymmetry::kAxial, CSymmetry::kBilateral0_180,
                                   CSymmetry::kBilateral90_270, CSymmetry::kQuadrant};
   try {
-    out.distribution = IntensityDistribution::table(symmetries[isym], std::move(c), std::move(gamma), std::move(candela));
+    out.distribution =
+        IntensityDistribution::table(symmetries[isym], std::move(c), std::move(gamma), std::move(candela));
   } catch (const std::invalid_argument& e) {
     in.fail_at(c_line, e.what());
   }

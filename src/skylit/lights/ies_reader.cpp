@@ -11,9 +11,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "skylit/lights/number_text.h"
 #include "skylit/core/error.h"
 #include "skylit/core/text_file.h"
+#include "skylit/lights/number_text.h"
 
 namespace skylit {
 namespace {
@@ -33,7 +33,8 @@ std::string trim(const std::string& s) {
 }
 
 std::string upper(std::string s) {
-  for (char& ch : s) if (ch >= 'a' && ch <= 'z') ch = static_cast<char>(ch - 'a' + 'A');
+  for (char& ch : s)
+    if (ch >= 'a' && ch <= 'z') ch = static_cast<char>(ch - 'a' + 'A');
   return s;
 }
 
@@ -53,7 +54,8 @@ class Numbers {
       throw InputError(name_ + ":" + std::to_string(last_line_) + ": expected " + what + ", found the end of the file");
     const Token& t = tokens_[next_++];
     const auto v = parse_number(t.text);
-    if (!v) throw InputError(name_ + ":" + std::to_string(t.line) + ": expected " + what + ", found " + quote_token(t.text));
+    if (!v)
+      throw InputError(name_ + ":" + std::to_string(t.line) + ": expected " + what + ", found " + quote_token(t.text));
     return *v;
   }
 
@@ -62,7 +64,8 @@ class Numbers {
     const double v = number(what);
     if (v != std::floor(v) || v < lo || v > hi)
       throw InputError(name_ + ":" + std::to_string(line) + ": expected " + what + " (a whole number from " +
-                       std::to_string(lo) + " to " + std::to_string(hi) + "), found " + quote_token(tokens_[next_ - 1].text));
+                       std::to_string(lo) + " to " + std::to_string(hi) + "), found " +
+                       quote_token(tokens_[next_ - 1].text));
     return static_cast<int>(v);
   }
 
@@ -88,7 +91,8 @@ std::vector<double> read_list(Numbers& in, int count, const std::string& what) {
   return v;
 }
 
-void check_ascending(Numbers& in, const std::vector<double>& v, int line, const std::string& what, double lo, double hi) {
+void check_ascending(Numbers& in, const std::vector<double>& v, int line, const std::string& what, double lo,
+                     double hi) {
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (v[i] < lo || v[i] > hi)
       in.fail(line, what + " must lie within " + std::to_string(static_cast<int>(lo)) + "-" +
@@ -118,12 +122,17 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   // The identifier line; a 1986 file has none and starts with free text.
   std::size_t li = 0;
   const std::string first = n_lines > 0 ? upper(trim(lines[0])) : std::string();
-  if (first.rfind("IESNA:LM-63-2002", 0) == 0) out.format = "LM-63-2002", li = 1;
-  else if (first.rfind("IESNA:LM-63-1995", 0) == 0) out.format = "LM-63-1995", li = 1;
-  else if (first.rfind("IESNA91", 0) == 0) out.format = "LM-63-1991", li = 1;
-  else if (first.rfind("IESNA", 0) == 0) fail(1, "unknown format identifier " + quote_token(trim(lines[0])) +
-                                                 " (expected IESNA:LM-63-2002, IESNA:LM-63-1995 or IESNA91)");
-  else out.format = "LM-63-1986";
+  if (first.rfind("IESNA:LM-63-2002", 0) == 0)
+    out.format = "LM-63-2002", li = 1;
+  else if (first.rfind("IESNA:LM-63-1995", 0) == 0)
+    out.format = "LM-63-1995", li = 1;
+  else if (first.rfind("IESNA91", 0) == 0)
+    out.format = "LM-63-1991", li = 1;
+  else if (first.rfind("IESNA", 0) == 0)
+    fail(1, "unknown format identifier " + quote_token(trim(lines[0])) +
+                " (expected IESNA:LM-63-2002, IESNA:LM-63-1995 or IESNA91)");
+  else
+    out.format = "LM-63-1986";
 
   // Keyword (or, for 1986, free text) lines up to TILT=.
   int tilt_line = 0;
@@ -144,15 +153,18 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
       }
       const std::string key = upper(line.substr(1, close - 1));
       const std::string value = trim(line.substr(close + 1));
-      if (key == "MORE" && !out.keywords.empty()) out.keywords.back().second += "\n" + value;
-      else out.keywords.emplace_back(key, value);
+      if (key == "MORE" && !out.keywords.empty())
+        out.keywords.back().second += "\n" + value;
+      else
+        out.keywords.emplace_back(key, value);
     }
   }
   if (tilt_line == 0) fail(std::max(n_lines, 1), "expected a TILT= line, found the end of the file");
   const std::string tilt = upper(tilt_value);
   if (tilt != "NONE" && tilt != "INCLUDE")
-    fail(tilt_line, "TILT=" + tilt_value.substr(0, 40) +
-                        ": a separate tilt file is not supported (expected TILT=NONE or TILT=INCLUDE with the tilt data inline)");
+    fail(tilt_line,
+         "TILT=" + tilt_value.substr(0, 40) +
+             ": a separate tilt file is not supported (expected TILT=NONE or TILT=INCLUDE with the tilt data inline)");
 
   // Everything after the TILT line is numbers.
   std::vector<Token> tokens;
@@ -212,7 +224,8 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   }
   {
     const int line = in.current_line();
-    const double field = in.number(out.format == "LM-63-2002" ? "the future-use field" : "the ballast-lamp photometric factor");
+    const double field =
+        in.number(out.format == "LM-63-2002" ? "the future-use field" : "the ballast-lamp photometric factor");
     if (out.format != "LM-63-2002") {
       if (field <= 0) in.fail(line, "the ballast-lamp photometric factor must be positive");
       out.ballast_lamp_factor = field;
@@ -221,8 +234,8 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   out.input_watts = in.number("the input watts");
 
   if (static_cast<long>(n_vertical) * n_horizontal > kMaxValues)
-    in.fail(in.current_line(), "too many candela values (" + std::to_string(n_vertical) + " x " +
-                                   std::to_string(n_horizontal) + ")");
+    in.fail(in.current_line(),
+            "too many candela values (" + std::to_string(n_vertical) + " x " + std::to_string(n_horizontal) + ")");
   const int v_line = in.current_line();
   std::vector<double> gamma = read_list(in, n_vertical, "vertical angle");
   const int h_line = in.current_line();
@@ -246,11 +259,16 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   // The symmetry follows from the first and last horizontal angle (LM-63-02 §3.18).
   CSymmetry symmetry;
   const double c0 = c.front(), c1 = c.back();
-  if (n_horizontal == 1) symmetry = CSymmetry::kAxial;
-  else if (c0 == 0 && c1 == 90) symmetry = CSymmetry::kQuadrant;
-  else if (c0 == 0 && c1 == 180) symmetry = CSymmetry::kBilateral0_180;
-  else if (c0 == 90 && c1 == 270) symmetry = CSymmetry::kBilateral90_270;
-  else if (c0 == 0 && c1 > 180 && c1 <= 360) symmetry = CSymmetry::kNone;
+  if (n_horizontal == 1)
+    symmetry = CSymmetry::kAxial;
+  else if (c0 == 0 && c1 == 90)
+    symmetry = CSymmetry::kQuadrant;
+  else if (c0 == 0 && c1 == 180)
+    symmetry = CSymmetry::kBilateral0_180;
+  else if (c0 == 90 && c1 == 270)
+    symmetry = CSymmetry::kBilateral90_270;
+  else if (c0 == 0 && c1 > 180 && c1 <= 360)
+    symmetry = CSymmetry::kNone;
   else
     in.fail(h_line, "horizontal angles from " + std::to_string(c0) + " to " + std::to_string(c1) +
                         " match no Type C symmetry (expected one angle, 0-90, 0-180, 90-270 or 0 to more than 180)");

@@ -19,11 +19,11 @@ struct IesPhotometry {
   // Keyword lines in file order, without brackets ("TEST", "MANUFAC", ...); [MORE]
   // lines are appended to the preceding keyword's value after a newline.
   std::vector<std::pair<std::string, std::string>> keywords;
-  TiltTable tilt;              // empty for TILT=NONE
+  TiltTable tilt;  // empty for TILT=NONE
   int number_of_lamps = 1;
-  double lumens_per_lamp = -1; // -1: absolute photometry
+  double lumens_per_lamp = -1;  // -1: absolute photometry
   double candela_multiplier = 1;
-  int photometric_type = 1;    // always 1 (Type C) once read
+  int photometric_type = 1;                        // always 1 (Type C) once read
   double width_m = 0, length_m = 0, height_m = 0;  // luminous opening, converted from feet if units = 1
   double ballast_factor = 1;
   double ballast_lamp_factor = 1;  // 1995 and older; the 2002 "future use" field is ignored

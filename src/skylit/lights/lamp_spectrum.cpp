@@ -52,8 +52,9 @@ Spectrum blackbody(double temperature_k) {
     double sum = 0;
     for (int i = 0; i < steps; ++i) {
       const double a = lo + i * h;
-      sum += h / 6 * (planck_radiance(a, temperature_k) + 4 * planck_radiance(a + h / 2, temperature_k) +
-                      planck_radiance(a + h, temperature_k));
+      sum += h / 6 *
+             (planck_radiance(a, temperature_k) + 4 * planck_radiance(a + h / 2, temperature_k) +
+              planck_radiance(a + h, temperature_k));
     }
     bins[b] = sum / width;
   }
@@ -104,15 +105,24 @@ double planck_radiance(double wavelength_nm, double temperature_k) {
 
 Spectrum lamp_spectrum_per_candela(const LampSpectrumSettings& s) {
   switch (s.type) {
-    case LampType::kHighPressureSodium: return per_candela(cie_discharge_lamp(1));
-    case LampType::kColourEnhancedSodium: return per_candela(cie_discharge_lamp(2));
-    case LampType::kMetalHalide: return per_candela(cie_discharge_lamp(3));
-    case LampType::kMetalHalide4000K: return per_candela(cie_discharge_lamp(4));
-    case LampType::kMetalHalideHp5: return per_candela(cie_discharge_lamp(5));
-    case LampType::kLed: return per_candela(led(s.temperature_k));
-    case LampType::kHalogen: return per_candela(blackbody(kHalogenTemperatureK));
-    case LampType::kIncandescent: return per_candela(blackbody(kIncandescentTemperatureK));
-    case LampType::kBlackbody: return per_candela(blackbody(s.temperature_k));
+    case LampType::kHighPressureSodium:
+      return per_candela(cie_discharge_lamp(1));
+    case LampType::kColourEnhancedSodium:
+      return per_candela(cie_discharge_lamp(2));
+    case LampType::kMetalHalide:
+      return per_candela(cie_discharge_lamp(3));
+    case LampType::kMetalHalide4000K:
+      return per_candela(cie_discharge_lamp(4));
+    case LampType::kMetalHalideHp5:
+      return per_candela(cie_discharge_lamp(5));
+    case LampType::kLed:
+      return per_candela(led(s.temperature_k));
+    case LampType::kHalogen:
+      return per_candela(blackbody(kHalogenTemperatureK));
+    case LampType::kIncandescent:
+      return per_candela(blackbody(kIncandescentTemperatureK));
+    case LampType::kBlackbody:
+      return per_candela(blackbody(s.temperature_k));
     case LampType::kTable: {
       for (double y : s.table.y)
         if (!(y >= 0) || !std::isfinite(y)) throw std::invalid_argument("a lamp spectrum table needs values ≥ 0");

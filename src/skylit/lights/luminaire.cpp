@@ -19,7 +19,8 @@ Vec3 rotate(const Vec3& v, const Vec3& k, double cos_a, double sin_a) {
 
 }  // namespace
 
-Luminaire::Luminaire(Vec3 position, IntensityDistribution distribution, Vec3 aim, double rotation_deg, const TiltTable& tilt)
+Luminaire::Luminaire(Vec3 position, IntensityDistribution distribution, Vec3 aim, double rotation_deg,
+                     const TiltTable& tilt)
     : position_(position), distribution_(std::move(distribution)) {
   const double len = length(aim);
   if (!(len > 0) || !std::isfinite(len)) throw std::invalid_argument("a luminaire's aim must be a non-zero vector");

@@ -159,8 +159,10 @@ double IntensityDistribution::table_candela(double c_deg, double gamma_deg) cons
       break;
     case CSymmetry::kBilateral90_270:
       if (c > 180) c -= 360;  // (−180, 180]
-      if (c > 90) c = 180 - c;
-      else if (c < -90) c = -180 - c;
+      if (c > 90)
+        c = 180 - c;
+      else if (c < -90)
+        c = -180 - c;
       break;
     default:
       break;
@@ -200,10 +202,14 @@ double IntensityDistribution::peak_candela() const { return peak_; }
 
 double IntensityDistribution::max_gamma_deg() const {
   switch (kind_) {
-    case Kind::kIsotropic: return 180.0;
-    case Kind::kCosine: return 90.0;
-    case Kind::kSpot: return outer_deg_;
-    case Kind::kTable: break;
+    case Kind::kIsotropic:
+      return 180.0;
+    case Kind::kCosine:
+      return 90.0;
+    case Kind::kSpot:
+      return outer_deg_;
+    case Kind::kTable:
+      break;
   }
   // Bilinear interpolation reaches 0 only at the grid angle after the last non-zero
   // value; beyond the measured range the intensity is 0.
@@ -224,11 +230,13 @@ double IntensityDistribution::angular_detail_deg() const {
   constexpr double kSmooth = 30.0, kFinest = 1.0;
   switch (kind_) {
     case Kind::kIsotropic:
-    case Kind::kCosine: return kSmooth;
+    case Kind::kCosine:
+      return kSmooth;
     case Kind::kSpot:
       // A hard edge is where the lamp's cone is cut exactly; inside it is constant.
       return outer_deg_ > inner_deg_ ? std::clamp(0.5 * (outer_deg_ - inner_deg_), kFinest, kSmooth) : kSmooth;
-    case Kind::kTable: break;
+    case Kind::kTable:
+      break;
   }
   double step = kSmooth;
   for (size_t i = 1; i < gamma_.size(); ++i) step = std::min(step, gamma_[i] - gamma_[i - 1]);

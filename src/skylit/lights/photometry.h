@@ -47,8 +47,8 @@ class IntensityDistribution {
   // angle lists strictly ascending, γ within [0, 180] with at least two angles, values
   // finite and ≥ 0. Throws std::invalid_argument (with a plain message the readers
   // put behind file:line) otherwise.
-  static IntensityDistribution table(CSymmetry symmetry, std::vector<double> c_deg,
-                                     std::vector<double> gamma_deg, std::vector<double> candela);
+  static IntensityDistribution table(CSymmetry symmetry, std::vector<double> c_deg, std::vector<double> gamma_deg,
+                                     std::vector<double> candela);
 
   // Candela toward (C, γ) in degrees; any C (wrapped), γ in [0, 180]. Tables are
   // interpolated bilinearly in (C, γ) and are 0 outside the measured γ range.
@@ -82,7 +82,7 @@ class IntensityDistribution {
 
   Kind kind_ = Kind::kIsotropic;
   CSymmetry symmetry_ = CSymmetry::kAxial;
-  double peak_ = 0;                 // shapes: the peak candela
+  double peak_ = 0;                       // shapes: the peak candela
   double inner_deg_ = 0, outer_deg_ = 0;  // spot
   std::vector<double> c_, gamma_, values_;
 };

@@ -37,7 +37,8 @@ const std::vector<MaterialPreset>& material_presets() {
       // satin finish of rolled or brushed sheet.
       {"aluminium", R"({"type": "cook_torrance", "metal": "aluminium", "roughness": 0.15})"},
       // A 6 mm single pane of float glass (Vogt et al. 2016), a dark room behind.
-      {"glass", R"({"type": "glass", "dielectric": "glass", "thickness_mm": 6, "roughness": 0, "interior_reflectance": 0.05})"},
+      {"glass",
+       R"({"type": "glass", "dielectric": "glass", "thickness_mm": 6, "roughness": 0, "interior_reflectance": 0.05})"},
       // New grey Portland-cement concrete, solar reflectance 0.35–0.40 (US EPA 2008).
       {"concrete", R"({"type": "diffuse", "reflectance": 0.35})"},
       // Asphalt road: 0.05 new, 0.10–0.15 aged (US EPA 2008).

@@ -18,7 +18,8 @@ struct SpecularPart {
 };
 
 std::optional<SpecularPart> specular_part(const Material& material) {
-  if (const auto* ct = std::get_if<CookTorranceMaterial>(&material)) return SpecularPart{ct->roughness(), &ct->fresnel()};
+  if (const auto* ct = std::get_if<CookTorranceMaterial>(&material))
+    return SpecularPart{ct->roughness(), &ct->fresnel()};
   if (const auto* glass = std::get_if<GlassMaterial>(&material))
     return SpecularPart{glass->roughness(), &glass->reflectance()};
   return std::nullopt;

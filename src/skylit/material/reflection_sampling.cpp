@@ -63,7 +63,8 @@ void orthonormal_frame(const Vec3& n, Vec3& t, Vec3& b) {
   b = {c, sign + n.y * n.y * a, -n.y};
 }
 
-CosineWeightedBrdf reflection_cos(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer) {
+CosineWeightedBrdf reflection_cos(const Material& material, const Vec3& n, const Vec3& to_light,
+                                  const Vec3& to_viewer) {
   const double cos_light = dot(n, to_light), cos_view = dot(n, to_viewer);
   if (cos_light <= 0 || cos_view <= 0) return {Spectrum(0.0f)};
   Spectrum out = diffuse_albedo(material, cos_view).spectrum() * static_cast<float>(cos_light / kPi);
@@ -88,7 +89,8 @@ std::optional<ReflectionSample> sample_reflection(const Material& material, cons
     // The mirror: its reflectance over the chance of choosing it.
     const std::optional<Reflectance> r = mirror_reflectance(material, n, to_viewer);
     if (!r) return std::nullopt;
-    return ReflectionSample{mirror_direction(n, to_viewer), r->spectrum() * static_cast<float>(1.0 / c.mirror), 0.0, true};
+    return ReflectionSample{mirror_direction(n, to_viewer), r->spectrum() * static_cast<float>(1.0 / c.mirror), 0.0,
+                            true};
   }
   Vec3 t, b;
   orthonormal_frame(n, t, b);
@@ -107,8 +109,8 @@ std::optional<ReflectionSample> sample_reflection(const Material& material, cons
   to_light = normalize(to_light);
   const double pdf = reflection_pdf(material, n, to_light, to_viewer);
   if (!(pdf > 0)) return ReflectionSample{to_light, Spectrum(0.0f), 0.0, false};
-  return ReflectionSample{to_light, reflection_cos(material, n, to_light, to_viewer).per_sr * static_cast<float>(1.0 / pdf),
-                          pdf, false};
+  return ReflectionSample{
+      to_light, reflection_cos(material, n, to_light, to_viewer).per_sr * static_cast<float>(1.0 / pdf), pdf, false};
 }
 
 }  // namespace skylit

@@ -47,12 +47,14 @@ void require(bool ok, const std::string& message) {
 }  // namespace
 
 double fog_density_from_visibility(double visibility_m, const FogSettings& s) {
-  const double sigma550 = s.unit_density_extinction_per_m * spectral_factor(550.0, s.reference_wavelength_nm, s.wavelength_exponent);
+  const double sigma550 =
+      s.unit_density_extinction_per_m * spectral_factor(550.0, s.reference_wavelength_nm, s.wavelength_exponent);
   return kKoschmiederConstant / (visibility_m * sigma550);
 }
 
 double fog_visibility_from_density(double density, const FogSettings& s) {
-  const double sigma550 = s.unit_density_extinction_per_m * spectral_factor(550.0, s.reference_wavelength_nm, s.wavelength_exponent);
+  const double sigma550 =
+      s.unit_density_extinction_per_m * spectral_factor(550.0, s.reference_wavelength_nm, s.wavelength_exponent);
   return kKoschmiederConstant / (density * sigma550);
 }
 
@@ -89,8 +91,8 @@ FogLayer::FogLayer(const FogSettings& s)
     rho0_ = s.density_at_ground;
     require(std::isfinite(rho0_) && rho0_ >= 0.0, "fog.density_at_ground must be finite and ≥ 0");
   }
-  log_rho0_ = std::log(rho0_);                    // −∞ for no fog, handled by the callers
-  eta_ = clamp_huge(1.0 / s.scale_height_m);      // 0 for h0 = ±∞
+  log_rho0_ = std::log(rho0_);                // −∞ for no fog, handled by the callers
+  eta_ = clamp_huge(1.0 / s.scale_height_m);  // 0 for h0 = ±∞
   for (int i = 0; i < kSpectralBins; ++i) {
     sigma_bins_[static_cast<size_t>(i)] = unit_density_extinction_per_m(kGrid.center_nm(i));
     grey_ = grey_ && sigma_bins_[static_cast<size_t>(i)] == sigma_bins_[0];
@@ -179,7 +181,8 @@ Spectrum FogLayer::transmittance(double column_m) const {
 
 double FogLayer::phase(double cos_theta) const {
   cos_theta = std::clamp(cos_theta, -1.0, 1.0);
-  return phase_kind_ == FogPhase::droplet_fit ? droplet_phase(cos_theta, droplet_) : henyey_greenstein_phase(cos_theta, asymmetry_);
+  return phase_kind_ == FogPhase::droplet_fit ? droplet_phase(cos_theta, droplet_)
+                                              : henyey_greenstein_phase(cos_theta, asymmetry_);
 }
 
 }  // namespace skylit

@@ -39,7 +39,7 @@ class FogLayer {
   // Checks the settings (InputError naming the field) and resolves the visibility.
   explicit FogLayer(const FogSettings& settings);
 
-  double density_at_ground() const { return rho0_; }      // ρ0 (given or from the visibility)
+  double density_at_ground() const { return rho0_; }          // ρ0 (given or from the visibility)
   double inverse_scale_height_per_m() const { return eta_; }  // 1/h0; 0 when homogeneous
   double bottom_m() const { return z_bottom_; }
   double top_m() const { return z_top_; }

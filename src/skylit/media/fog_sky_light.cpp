@@ -46,7 +46,8 @@ FogSkyLight::FogSkyLight(const FogLayer& fog, const SkyModel& sky, int altitudes
   for (int hemisphere = 0; hemisphere < 2; ++hemisphere) {
     const double sign = hemisphere == 0 ? 1.0 : -1.0;
     for (int k = 0; k < kBandsPerHemisphere; ++k) {
-      const double lo = std::pow(double(k) / kBandsPerHemisphere, 2), hi = std::pow(double(k + 1) / kBandsPerHemisphere, 2);
+      const double lo = std::pow(double(k) / kBandsPerHemisphere, 2),
+                   hi = std::pow(double(k + 1) / kBandsPerHemisphere, 2);
       for (int g = 0; g < kNodesPerBand; ++g) {
         const double wn = 0.5 * (lo + hi) + 0.5 * (hi - lo) * kGaussX[static_cast<size_t>(g)];
         const double sin_zenith = std::sqrt(std::max(0.0, 1.0 - wn * wn));
@@ -93,7 +94,8 @@ FogSkyLight::FogSkyLight(const FogLayer& fog, const SkyModel& sky, int altitudes
     for (size_t n = 0; n < w.size(); ++n) {
       const double column = std::min((w[n] > 0 ? v_up : v_down) / std::abs(w[n]), kOpaqueColumnM);
       for (int b = 0; b < kSpectralBins; ++b)
-        sum[static_cast<size_t>(b)] += dw[n] * a[n][b] * std::exp(-std::min(sigma[static_cast<size_t>(b)] * column, 800.0));
+        sum[static_cast<size_t>(b)] +=
+            dw[n] * a[n][b] * std::exp(-std::min(sigma[static_cast<size_t>(b)] * column, 800.0));
     }
     for (int b = 0; b < kSpectralBins; ++b) {
       j_[i][b] = static_cast<float>(sum[static_cast<size_t>(b)]);
@@ -198,7 +200,8 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, do
     bool done = true;
     for (size_t i = 0; i < sum.size() && done; ++i) {
       const double sg = sigma[i];
-      const double rest = j_max_[i] * std::exp(-std::min(sg * column, 800.0)) * -std::expm1(-std::min(sg * rest_column, 800.0));
+      const double rest =
+          j_max_[i] * std::exp(-std::min(sg * column, 800.0)) * -std::expm1(-std::min(sg * rest_column, 800.0));
       done = rest <= kTailTolerance * sum[i];
     }
     if (done) break;
@@ -209,7 +212,8 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, do
   Spectrum out;
   for (int i = 0; i < kSpectralBins; ++i) {
     const double sg = sigma[static_cast<size_t>(i)];
-    const double v = albedo / (4.0 * kPi) * std::exp(-std::min(sg * viewer_column, 800.0)) * sum[static_cast<size_t>(i)];
+    const double v =
+        albedo / (4.0 * kPi) * std::exp(-std::min(sg * viewer_column, 800.0)) * sum[static_cast<size_t>(i)];
     out[i] = static_cast<float>(std::isfinite(v) ? v : 0.0);
   }
   return out;

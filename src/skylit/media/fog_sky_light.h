@@ -71,10 +71,10 @@ class FogSkyLight {
 
  private:
   FogLayer fog_;
-  std::vector<double> z_;         // table altitudes
-  std::vector<Spectrum> j_;       // J at them
+  std::vector<double> z_;                      // table altitudes
+  std::vector<Spectrum> j_;                    // J at them
   std::array<double, kSpectralBins> j_max_{};  // largest J of the table, per bin
-  double j_max_mean_ = 0.0;       // its bin mean: Eq. 14's scalar scale
+  double j_max_mean_ = 0.0;                    // its bin mean: Eq. 14's scalar scale
   Spectrum unattenuated_;
 };
 

@@ -71,7 +71,8 @@ double fog_sun_weight(const FogSunSegment& s, double sigma) {
 
 double fog_sun_weight(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2,
                       double wavelength_nm) {
-  return fog_sun_weight(fog_sun_segment(layer, z_p, z_v, z_sun, s1, s2), layer.unit_density_extinction_per_m(wavelength_nm));
+  return fog_sun_weight(fog_sun_segment(layer, z_p, z_v, z_sun, s1, s2),
+                        layer.unit_density_extinction_per_m(wavelength_nm));
 }
 
 Spectrum fog_sun_inscatter(const FogLayer& layer, const Vec3& viewpoint, const Vec3& view_dir, const Vec3& to_sun,

@@ -48,7 +48,8 @@ LampInScatter::LampInScatter(const FogLayer& layer, const Luminaire& lamp, const
   max_panel_ = std::min(kMaxPanel, lamp.distribution().angular_detail_deg() * kPi / 180);
   cos_max_gamma_ = std::cos(lamp.distribution().max_gamma_deg() * kPi / 180);
   phase_table_.resize(kPhaseSteps + 1);
-  for (int i = 0; i <= kPhaseSteps; ++i) phase_table_[i] = static_cast<float>(layer.phase(std::cos(kPi * i / kPhaseSteps)));
+  for (int i = 0; i <= kPhaseSteps; ++i)
+    phase_table_[i] = static_cast<float>(layer.phase(std::cos(kPi * i / kPhaseSteps)));
 }
 
 double LampInScatter::phase(double theta) const {
@@ -101,8 +102,10 @@ void LampInScatter::emitting_intervals(const Ray& ray, double s_min, double s_ma
     if (!(hi > lo)) continue;
     const double middle = std::isfinite(hi) ? 0.5 * (lo + hi) : lo + std::max(1.0, std::abs(lo));
     if (!inside(middle)) continue;
-    if (!out.empty() && out.back().end >= lo) out.back().end = hi;
-    else out.push_back({lo, hi});
+    if (!out.empty() && out.back().end >= lo)
+      out.back().end = hi;
+    else
+      out.push_back({lo, hi});
   }
 }
 
@@ -200,8 +203,10 @@ Spectrum LampInScatter::along(const Ray& ray, const std::vector<Interval>& lit,
   // pass over them finds their overlaps.
   for (size_t i = 0, j = 0; i < lit.size() && j < emitting.size();) {
     const Interval e{std::max(lit[i].begin, emitting[j].begin), std::min(lit[i].end, emitting[j].end)};
-    if (lit[i].end < emitting[j].end) ++i;
-    else ++j;
+    if (lit[i].end < emitting[j].end)
+      ++i;
+    else
+      ++j;
     if (!(e.end > e.begin)) continue;
     // The extinction where the piece ends, if the fog beyond the lamp is more than an
     // optical depth deep (then the far tail needs graded panels).

@@ -65,9 +65,9 @@ class LampInScatter {
  private:
   // ∫ over θ in [theta_lo, theta_hi] for a ray at distance h from the lamp with foot s₀.
   struct RayInLayer {
-    double lo, hi;          // the view ray's parameter range inside the layer
-    double entry_density;   // ρ where it enters (at lo)
-    double decay_per_m;     // η·z_v: ρ(s) = entry_density·e^(−decay_per_m·(s − lo))
+    double lo, hi;         // the view ray's parameter range inside the layer
+    double entry_density;  // ρ where it enters (at lo)
+    double decay_per_m;    // η·z_v: ρ(s) = entry_density·e^(−decay_per_m·(s − lo))
   };
   // tail_scale: the extinction (m⁻¹) at the far end when the piece runs on beyond the
   // lamp for more than an optical depth (its far tail then gets graded panels), else 0.
@@ -83,10 +83,10 @@ class LampInScatter {
   Spectrum sigma_;  // the fog's extinction at unit density in each bin
   bool grey_;       // σ the same in every bin: one exponential per node
   double cos_max_gamma_;
-  double max_panel_;      // rad: the widest Gauss–Legendre panel
-  double sigma_max_;      // the largest extinction at unit density over the bins
-  bool lamp_inside_;      // the lamp is in the layer: its paths to the view ray stay in it
-  double lamp_density_;   // ρ at the lamp
+  double max_panel_;                // rad: the widest Gauss–Legendre panel
+  double sigma_max_;                // the largest extinction at unit density over the bins
+  bool lamp_inside_;                // the lamp is in the layer: its paths to the view ray stay in it
+  double lamp_density_;             // ρ at the lamp
   std::vector<float> phase_table_;  // F(θ) on a uniform θ grid
 };
 

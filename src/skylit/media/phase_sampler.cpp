@@ -23,7 +23,8 @@ PhaseSampler::PhaseSampler(const std::function<double(double cos_theta)>& phase)
   for (int i = 0; i < kRings; ++i) {
     const double p = mass[static_cast<size_t>(i)] / total;
     cdf_[static_cast<size_t>(i + 1)] = cdf_[static_cast<size_t>(i)] + p;
-    const double solid_angle = 2 * kPi * (std::cos(theta_[static_cast<size_t>(i)]) - std::cos(theta_[static_cast<size_t>(i + 1)]));
+    const double solid_angle =
+        2 * kPi * (std::cos(theta_[static_cast<size_t>(i)]) - std::cos(theta_[static_cast<size_t>(i + 1)]));
     ring_density_[static_cast<size_t>(i)] = solid_angle > 0 ? p / solid_angle : 0.0;
   }
   cdf_.back() = 1.0;

@@ -31,8 +31,8 @@ class PhaseSampler {
   double pdf(double cos_theta) const;
 
  private:
-  std::vector<double> theta_;        // kRings + 1 ring edges, from 0 to π
-  std::vector<double> cdf_;          // kRings + 1
+  std::vector<double> theta_;         // kRings + 1 ring edges, from 0 to π
+  std::vector<double> cdf_;           // kRings + 1
   std::vector<double> ring_density_;  // sr⁻¹ in each ring
 };
 

@@ -115,7 +115,8 @@ Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const 
   if (hit.is_sky())
     return glow + path().seen_from_camera(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction));
   std::optional<CachedSkyLight> sky_light;
-  if (context.caches.sky_light) sky_light = context.caches.sky_light->interpolate(context.image_x, context.image_y, hit.point);
+  if (context.caches.sky_light)
+    sky_light = context.caches.sky_light->interpolate(context.image_x, context.image_y, hit.point);
   if (!sky_light) sky_light = sky_light_at(hit.point, -ray.direction);
   return glow + path().seen_from_camera(shade(ray, hit.point, *sky_light));
 }

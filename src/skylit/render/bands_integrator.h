@@ -37,8 +37,8 @@ class PixelViewPath {
  public:
   template <typename Make>
   const ViewPath& for_distance(double distance, Make&& make) {
-    const bool same = valid_ && (std::isinf(distance) ? std::isinf(distance_)
-                                                      : std::abs(distance - distance_) <= 0.01 * distance_);
+    const bool same =
+        valid_ && (std::isinf(distance) ? std::isinf(distance_) : std::abs(distance - distance_) <= 0.01 * distance_);
     if (!same) {
       path_ = make();
       distance_ = distance;

@@ -89,15 +89,14 @@ MediumStretch FogMedium::along(const Ray& ray, double distance) const {
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
   if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
     for (const Interval& lit : shadows_.sunlit_intervals(ray, inside.lo, std::min(inside.hi, 1e12))) {
-      in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end,
-                                            sun_above_fog_);
+      in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end, sun_above_fog_);
     }
   }
   // Sky light, everywhere along it (the paper's assumption: no shadows for sky light);
   // from the camera's table when the ray starts there.
   if (ray.origin == camera_)
-    in_scattered += sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)),
-                                                  std::min(distance, kLongestRayM));
+    in_scattered +=
+        sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)), std::min(distance, kLongestRayM));
   else
     in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
   out.in_scattered = Radiance(in_scattered);
@@ -111,8 +110,8 @@ Transmittance FogMedium::sun_transmittance(const Vec3& point) const {
 
 Transmittance FogMedium::sky_light_share(double z) const {
   if (z >= layer_.top_m()) return Transmittance(1.0f);
-  const double f = std::clamp((z - layer_.bottom_m()) / (layer_.top_m() - layer_.bottom_m()), 0.0, 1.0) *
-                   (kShareAltitudes - 1);
+  const double f =
+      std::clamp((z - layer_.bottom_m()) / (layer_.top_m() - layer_.bottom_m()), 0.0, 1.0) * (kShareAltitudes - 1);
   const int i = std::min(static_cast<int>(f), kShareAltitudes - 2);
   const float w = static_cast<float>(f - i);
   return Transmittance(sky_share_[static_cast<size_t>(i)] * (1 - w) + sky_share_[static_cast<size_t>(i + 1)] * w);

@@ -58,7 +58,8 @@ LampGlowImage::LampGlowImage(const PinholeCamera& camera, const PrimaryHits& cen
   std::atomic<uint64_t> evaluations{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, blocks_x * blocks_y), [&](const tbb::blocked_range<int>& range) {
     uint64_t count = 0;
-    for (int b = range.begin(); b != range.end(); ++b) fill_block((b % blocks_x) * kBlock, (b / blocks_x) * kBlock, count);
+    for (int b = range.begin(); b != range.end(); ++b)
+      fill_block((b % blocks_x) * kBlock, (b / blocks_x) * kBlock, count);
     evaluations.fetch_add(count, std::memory_order_relaxed);
   });
   evaluations_ = evaluations.load();
@@ -128,8 +129,8 @@ void LampGlowImage::fill_block(int bx, int by, uint64_t& evaluations) {
         accept = std::isfinite(d) && std::abs(h.distance - d) <= kDistanceTolerance * h.distance;
       }
     if (accept) {
-      const std::array<const Spectrum*, 4> g{&evaluated(x0, y0).glow, &evaluated(x1, y0).glow,
-                                             &evaluated(x0, y1).glow, &evaluated(x1, y1).glow};
+      const std::array<const Spectrum*, 4> g{&evaluated(x0, y0).glow, &evaluated(x1, y0).glow, &evaluated(x0, y1).glow,
+                                             &evaluated(x1, y1).glow};
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
           const double u = x1 > x0 ? double(x - x0) / (x1 - x0) : 0, v = y1 > y0 ? double(y - y0) / (y1 - y0) : 0;

@@ -22,7 +22,8 @@ constexpr double kWhiteX = 0.95047, kWhiteZ = 1.08883;
 
 }  // namespace
 
-PathImage render_path_image(const PreparedScene& scene, const PathIntegrator& integrator, const RenderOptions& options) {
+PathImage render_path_image(const PreparedScene& scene, const PathIntegrator& integrator,
+                            const RenderOptions& options) {
   const RenderSettings& settings = scene.scene().render;
   const int width = settings.width, height = settings.height, samples = settings.samples_per_pixel;
   const PinholeCamera camera(scene.scene().camera, width, height);
@@ -50,7 +51,8 @@ PathImage render_path_image(const PreparedScene& scene, const PathIntegrator& in
             }
             film.set(x, y, sum * static_cast<float>(1.0 / samples));
             const double mean = y_sum / samples;
-            const double variance = samples > 1 ? std::max(0.0, (y_squares - samples * mean * mean) / (samples - 1)) : 0.0;
+            const double variance =
+                samples > 1 ? std::max(0.0, (y_squares - samples * mean * mean) / (samples - 1)) : 0.0;
             const double error = std::sqrt(variance / samples);
             standard_error.set(x, y, {kWhiteX * error, error, kWhiteZ * error});
           }

@@ -5,10 +5,10 @@
 #include <limits>
 #include <optional>
 
-#include "skylit/material/reflection.h"
-#include "skylit/material/reflection_sampling.h"
 #include "skylit/clouds/cloud_scattering.h"
 #include "skylit/clouds/cloud_tracking.h"
+#include "skylit/material/reflection.h"
+#include "skylit/material/reflection_sampling.h"
 #include "skylit/media/fog_free_flight.h"
 
 namespace skylit {
@@ -37,8 +37,7 @@ PathIntegrator::PathIntegrator(const PreparedScene& scene) : scene_(scene), sky_
   if (scene.clouds()) cloud_phase_ = std::make_unique<PhaseSampler>([](double c) { return cloud_phase(c); });
 }
 
-PathIntegrator::PathIntegrator(const PreparedScene& scene, const TestEnvironment& environment)
-    : PathIntegrator(scene) {
+PathIntegrator::PathIntegrator(const PreparedScene& scene, const TestEnvironment& environment) : PathIntegrator(scene) {
   test_environment_ = environment;
   sky_sampler_ = SkySampler([this](const Vec3& direction) { return this->environment(direction).spectrum(); });
 }
@@ -60,7 +59,7 @@ Transmittance PathIntegrator::media_transmittance(const Vec3& point, const Vec3&
   if (scene_.fog()) t = Transmittance(fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, distance));
   if (scene_.clouds())
     t *= static_cast<float>(estimate_cloud_transmittance(scene_.clouds()->layer(), point, direction,
-                                                          std::min(distance, kSkyDistanceM), random));
+                                                         std::min(distance, kSkyDistanceM), random));
   return t;
 }
 
@@ -71,7 +70,8 @@ CosineWeightedBrdf PathIntegrator::scattering_cos(const Scatterer& scatterer, co
   // In a medium: the phase function per unit of scattering (the albedo is in the
   // collision's weight).
   const double cos_theta = dot(-to_viewer, to_light);
-  const double phase = scatterer.kind == ScattererKind::fog ? scene_.fog()->layer().phase(cos_theta) : cloud_phase(cos_theta);
+  const double phase =
+      scatterer.kind == ScattererKind::fog ? scene_.fog()->layer().phase(cos_theta) : cloud_phase(cos_theta);
   return {Spectrum(static_cast<float>(phase))};
 }
 
@@ -97,7 +97,8 @@ Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
       Irradiance reaching = sun;
       if (const FogMedium* fog = scene_.fog()) reaching *= fog->sun_transmittance(position);
       if (const CloudsInSky* clouds = scene_.clouds())
-        reaching *= static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, to_sun, kSkyDistanceM, random));
+        reaching *=
+            static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, to_sun, kSkyDistanceM, random));
       light += scattering_cos(scatterer, to_sun, to_viewer).reflect(reaching);
     }
   }
@@ -127,7 +128,8 @@ Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
       if (irradiance.is_black()) continue;
       if (tracer.occluded(Ray{origin, direction, 0.0, distance * (1 - 1e-6)})) continue;
       if (const CloudsInSky* clouds = scene_.clouds())
-        irradiance *= static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, direction, distance, random));
+        irradiance *=
+            static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, direction, distance, random));
       light += f.reflect(irradiance);
     }
   }
@@ -155,7 +157,8 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     // The media: a cloud's collision first (it bounds how far the fog's flight may go),
     // then the fog's; the nearer event is where the path scatters.
     CloudCollision cloud;
-    if (clouds) cloud = sample_cloud_collision(*clouds, ray.origin, ray.direction, std::min(t_hit, kSkyDistanceM), random);
+    if (clouds)
+      cloud = sample_cloud_collision(*clouds, ray.origin, ray.direction, std::min(t_hit, kSkyDistanceM), random);
     std::optional<double> medium_event;
     ScattererKind medium_kind = ScattererKind::cloud;
     if (cloud.collided) {
@@ -179,7 +182,8 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
       radiance += throughput * direct_light(at, Scatterer{medium_kind}, to_viewer, random).spectrum();
       const double u1 = random.uniform(), u2 = random.uniform();
       const PhaseSampler::Sample next = phase_sampler(medium_kind).sample(ray.direction, u1, u2);
-      throughput *= scattering_cos(Scatterer{medium_kind}, next.direction, to_viewer).per_sr * static_cast<float>(1.0 / next.pdf);
+      throughput *=
+          scattering_cos(Scatterer{medium_kind}, next.direction, to_viewer).per_sr * static_cast<float>(1.0 / next.pdf);
       delta = false;
       scatter_pdf = next.pdf;
       ray = Ray{at, next.direction};
@@ -201,8 +205,10 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
         break;
       }
       Radiance arriving = environment(ray.direction);
-      if (!delta) arriving *= static_cast<float>(power_heuristic(scatter_pdf, sky_sampler_.pdf(ray.direction)));
-      else if (!test_environment_) arriving += sky.sun_radiance(ray.direction);
+      if (!delta)
+        arriving *= static_cast<float>(power_heuristic(scatter_pdf, sky_sampler_.pdf(ray.direction)));
+      else if (!test_environment_)
+        arriving += sky.sun_radiance(ray.direction);
       radiance += throughput * arriving.spectrum();
       break;
     }
@@ -211,7 +217,8 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     const Vec3 to_viewer = -ray.direction;
     const Material& material = scene_.material(point.material);
     radiance += throughput * direct_light(point.position, Scatterer{ScattererKind::surface, &material, point.normal},
-                                          to_viewer, random).spectrum();
+                                          to_viewer, random)
+                                 .spectrum();
     const double u0 = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
     const std::optional<ReflectionSample> next = sample_reflection(material, point.normal, to_viewer, u0, u1, u2);
     if (!next || next->weight.is_black() || dot(next->to_light, point.normal) <= 0) break;

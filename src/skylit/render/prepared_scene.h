@@ -26,7 +26,7 @@ class PreparedScene {
   const RayTracer& tracer() const { return tracer_; }
   const Vec3& to_sun() const { return to_sun_; }
   const SkyModel& sky() const { return sky_; }
-  const FogMedium* fog() const { return fog_.get(); }         // null without fog
+  const FogMedium* fog() const { return fog_.get(); }          // null without fog
   const CloudsInSky* clouds() const { return clouds_.get(); }  // null without clouds
   const SceneLamps* lamps() const { return lamps_.get(); }     // null without lights
 

@@ -7,7 +7,8 @@ namespace skylit {
 PrimaryHits::PrimaryHits(const PinholeCamera& camera, int width, int height, const Trace& trace)
     : width_(width), height_(height), hits_(static_cast<size_t>(width) * height) {
   tbb::parallel_for(0, height, [&](int y) {
-    for (int x = 0; x < width; ++x) hits_[static_cast<size_t>(y) * width + x] = trace(camera.ray_through(x + 0.5, y + 0.5));
+    for (int x = 0; x < width; ++x)
+      hits_[static_cast<size_t>(y) * width + x] = trace(camera.ray_through(x + 0.5, y + 0.5));
   });
 }
 

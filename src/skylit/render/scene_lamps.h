@@ -14,13 +14,13 @@
 #include <memory>
 #include <vector>
 
-#include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/point_light_shadow_volumes.h"
+#include "skylit/geometry/ray_tracer.h"
 #include "skylit/lights/intensity_map.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/lamp_in_scatter.h"
-#include "skylit/scene/scene.h"
 #include "skylit/render/surface_cache.h"
+#include "skylit/scene/scene.h"
 
 namespace skylit {
 
@@ -58,9 +58,9 @@ class SceneLamps {
  private:
   struct Lamp {
     const SceneLight* light;
-    std::unique_ptr<IntensityMap> map;  // the luminaire's intensity, for fast look-ups
+    std::unique_ptr<IntensityMap> map;                 // the luminaire's intensity, for fast look-ups
     std::unique_ptr<PointLightShadowVolumes> volumes;  // with fog only
-    std::unique_ptr<LampInScatter> glow;      // with fog only
+    std::unique_ptr<LampInScatter> glow;               // with fog only
   };
   std::vector<Lamp> lamps_;
   const RayTracer& tracer_;

@@ -30,7 +30,8 @@ XyzImage render_sky(const SkyModel& sky, SkyProjection projection, int size) {
       Radiance sum;
       for (int s = 0; s < 4; ++s) {
         const int sub_x = s % 2, sub_y = s / 2;  // a 2 × 2 grid of samples in the pixel
-        const auto direction = sky_projection_direction(projection, size, column + 0.25 + 0.5 * sub_x, row + 0.25 + 0.5 * sub_y);
+        const auto direction =
+            sky_projection_direction(projection, size, column + 0.25 + 0.5 * sub_x, row + 0.25 + 0.5 * sub_y);
         if (direction) sum += sky.sky_radiance(*direction) + sky.sun_radiance(*direction);
       }
       image.set(column, row, xyz_from_spectrum((sum * 0.25f).spectrum()));

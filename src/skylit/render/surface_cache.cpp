@@ -31,8 +31,10 @@ void SurfaceCache::Grid::cell(double x, double y, int& gx, int& gy, double& tx, 
     const double p0 = pixel_of(g) + 0.5, p1 = pixel_of(std::min(g + 1, grid - 1)) + 0.5;
     t = p1 > p0 ? std::clamp((at - p0) / (p1 - p0), 0.0, 1.0) : 0.0;
   };
-  locate(x, grid_width_, [this](int g) { return pixel_x(g); }, gx, tx);
-  locate(y, grid_height_, [this](int g) { return pixel_y(g); }, gy, ty);
+  locate(
+      x, grid_width_, [this](int g) { return pixel_x(g); }, gx, tx);
+  locate(
+      y, grid_height_, [this](int g) { return pixel_y(g); }, gy, ty);
 }
 
 std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point) const {

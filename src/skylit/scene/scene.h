@@ -10,8 +10,8 @@
 
 #include "skylit/atmosphere/atmosphere_settings.h"
 #include "skylit/clouds/cloud_layer.h"
-#include "skylit/geometry/triangle_mesh.h"
 #include "skylit/core/vec3.h"
+#include "skylit/geometry/triangle_mesh.h"
 #include "skylit/lights/luminaire.h"
 #include "skylit/material/material.h"
 #include "skylit/media/fog_settings.h"

@@ -11,9 +11,9 @@ BandSources::BandSources(int bands, int segments) : bands_(bands), segments_(seg
   for (int k = 0; k <= bands; ++k) tilt_edges_.push_back(std::acos(std::clamp(1.0 - 2.0 * k / bands, -1.0, 1.0)));
   for (int k = 1; k <= bands; ++k) tilt_edges_.push_back(kPi + tilt_edges_[static_cast<size_t>(k)]);
   // Along a band, equal steps in cos α give elements of equal solid angle.
-  for (int j = 0; j <= segments; ++j) alpha_edges_.push_back(std::acos(std::clamp(1.0 - 2.0 * j / segments, -1.0, 1.0)));
-  for (int j = 0; j < segments; ++j)
-    alpha_.push_back(std::acos(1.0 - 2.0 * (j + 0.5) / segments));
+  for (int j = 0; j <= segments; ++j)
+    alpha_edges_.push_back(std::acos(std::clamp(1.0 - 2.0 * j / segments, -1.0, 1.0)));
+  for (int j = 0; j < segments; ++j) alpha_.push_back(std::acos(1.0 - 2.0 * (j + 0.5) / segments));
   for (int l = 0; l < 2 * bands; ++l) {
     const double lo = tilt_edges_[static_cast<size_t>(l)], hi = tilt_edges_[static_cast<size_t>(l + 1)];
     tilt_.push_back(0.5 * (lo + hi));

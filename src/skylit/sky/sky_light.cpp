@@ -34,7 +34,8 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   a = normalize(a);
   const Vec3 b = cross(a, r);
   const double beta = std::atan2(dot(normal, b), dot(normal, r));
-  const double width = std::clamp(kSpecularElementPerRoughness * specular_roughness(material), radians(1.0), radians(5.0));
+  const double width =
+      std::clamp(kSpecularElementPerRoughness * specular_roughness(material), radians(1.0), radians(5.0));
   const int half_segments = static_cast<int>(std::ceil(0.5 * kPi / width));  // along α, each way from 90°
   Radiance sum;
   double peak = 0;  // the largest G met: ε is relative to it

@@ -61,14 +61,14 @@ class SkyLight {
   // the world's x axis put east- and west-facing walls seen head-on at the bands' pole,
   // where the search breaks down, and cut the lobe short at grazing views (errors of
   // 5 % and 84 % against the dense quadrature).
-  Radiance specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer, const Material& material) const;
+  Radiance specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer,
+                             const Material& material) const;
 
   // The sky view factor at a point: the share of a cosine-weighted hemisphere that sees
   // the sky (z > 0) unobstructed. 1 for a horizontal surface in the open.
   double sky_view_factor(const Vec3& point, const Vec3& normal) const;
 
  private:
-
   const SkyModel& sky_;
   const RayTracer& tracer_;
   ObstacleRadiance obstacle_radiance_;

@@ -43,8 +43,8 @@ SkySampler::SkySampler(const RadianceOf& radiance_of)
       double radiance = 0;
       for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b)
-          radiance += mean_over_bins(radiance_of(direction_of((r + 0.25 + 0.5 * a) * dtheta,
-                                                                               (c + 0.25 + 0.5 * b) * dphi))) / 4;
+          radiance +=
+              mean_over_bins(radiance_of(direction_of((r + 0.25 + 0.5 * a) * dtheta, (c + 0.25 + 0.5 * b) * dphi))) / 4;
       const double solid_angle = (std::cos(r * dtheta) - std::cos((r + 1) * dtheta)) * dphi;
       weight[static_cast<size_t>(r * kColumns + c)] = std::max(0.0, radiance) * solid_angle;
       total += weight[static_cast<size_t>(r * kColumns + c)];

@@ -60,9 +60,12 @@ double delta_e_2000(const Lab& first, const Lab& second) {
   const double delta_c = cp2 - cp1;
   const bool either_neutral = cp1 * cp2 == 0.0;
   double delta_h_deg = hp2 - hp1;
-  if (either_neutral) delta_h_deg = 0.0;
-  else if (delta_h_deg > 180.0) delta_h_deg -= 360.0;
-  else if (delta_h_deg < -180.0) delta_h_deg += 360.0;
+  if (either_neutral)
+    delta_h_deg = 0.0;
+  else if (delta_h_deg > 180.0)
+    delta_h_deg -= 360.0;
+  else if (delta_h_deg < -180.0)
+    delta_h_deg += 360.0;
   const double delta_hue = 2.0 * std::sqrt(cp1 * cp2) * sin_deg(0.5 * delta_h_deg);
 
   // Step 3: means and weighting functions (Eqs. 12–22); the mean hue also takes the
@@ -71,9 +74,12 @@ double delta_e_2000(const Lab& first, const Lab& second) {
   const double c_mean = 0.5 * (cp1 + cp2);
   double h_mean = hp1 + hp2;
   if (!either_neutral) {
-    if (std::abs(hp1 - hp2) <= 180.0) h_mean *= 0.5;
-    else if (h_mean < 360.0) h_mean = 0.5 * (h_mean + 360.0);
-    else h_mean = 0.5 * (h_mean - 360.0);
+    if (std::abs(hp1 - hp2) <= 180.0)
+      h_mean *= 0.5;
+    else if (h_mean < 360.0)
+      h_mean = 0.5 * (h_mean + 360.0);
+    else
+      h_mean = 0.5 * (h_mean - 360.0);
   }
   const double t = 1.0 - 0.17 * cos_deg(h_mean - 30.0) + 0.24 * cos_deg(2.0 * h_mean) +
                    0.32 * cos_deg(3.0 * h_mean + 6.0) - 0.20 * cos_deg(4.0 * h_mean - 63.0);

@@ -24,8 +24,8 @@ Matrix3 rgb_from_xyz_matrix(const RgbPrimaries& p) {
   // Columns of xyz_from_rgb are the primaries' XYZ (with Y = 1), scaled so that
   // R = G = B = 1 gives the white point with Y = 1.
   auto xyz_of = [](double x, double y) { return Rgb{x / y, 1.0, (1.0 - x - y) / y}; };
-  const Rgb r = xyz_of(p.red_x, p.red_y), g = xyz_of(p.green_x, p.green_y),
-            b = xyz_of(p.blue_x, p.blue_y), w = xyz_of(p.white_x, p.white_y);
+  const Rgb r = xyz_of(p.red_x, p.red_y), g = xyz_of(p.green_x, p.green_y), b = xyz_of(p.blue_x, p.blue_y),
+            w = xyz_of(p.white_x, p.white_y);
   const Matrix3 unscaled{{{r[0], g[0], b[0]}, {r[1], g[1], b[1]}, {r[2], g[2], b[2]}}};
   const Rgb s = apply(inverse(unscaled), w);
   Matrix3 xyz_from_rgb{};

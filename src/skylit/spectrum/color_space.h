@@ -21,8 +21,7 @@ struct RgbPrimaries {
 // sRGB / Rec. 709: IEC 61966-2-1.
 inline constexpr RgbPrimaries kSrgbPrimaries{0.640, 0.330, 0.300, 0.600, 0.150, 0.060, 0.3127, 0.3290};
 // Radiance's default RGB (ray/src/common/color.h: CIE_x_r ... CIE_y_w, equal-energy white).
-inline constexpr RgbPrimaries kRadiancePrimaries{0.640, 0.330, 0.290, 0.600, 0.150, 0.060,
-                                                 1.0 / 3.0, 1.0 / 3.0};
+inline constexpr RgbPrimaries kRadiancePrimaries{0.640, 0.330, 0.290, 0.600, 0.150, 0.060, 1.0 / 3.0, 1.0 / 3.0};
 
 // The matrix that takes XYZ to linear RGB of the given primaries, scaled so that
 // the white point (Y = 1) maps to R = G = B = 1 (SMPTE RP 177 construction).

@@ -30,9 +30,18 @@ class SpectralQuantity {
   float max_value() const { return values_.max_value(); }
   bool is_black() const { return values_.is_black(); }
 
-  SpectralQuantity& operator+=(const SpectralQuantity& o) { values_ += o.values_; return *this; }
-  SpectralQuantity& operator-=(const SpectralQuantity& o) { values_ -= o.values_; return *this; }
-  SpectralQuantity& operator*=(float scale) { values_ *= scale; return *this; }
+  SpectralQuantity& operator+=(const SpectralQuantity& o) {
+    values_ += o.values_;
+    return *this;
+  }
+  SpectralQuantity& operator-=(const SpectralQuantity& o) {
+    values_ -= o.values_;
+    return *this;
+  }
+  SpectralQuantity& operator*=(float scale) {
+    values_ *= scale;
+    return *this;
+  }
 
   friend SpectralQuantity operator+(SpectralQuantity a, const SpectralQuantity& b) { return a += b; }
   friend SpectralQuantity operator-(SpectralQuantity a, const SpectralQuantity& b) { return a -= b; }

@@ -14,9 +14,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "skylit/core/error.h"
 #include "skylit/spectrum/cie.h"
 #include "skylit/spectrum/illuminants.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 
@@ -24,9 +24,7 @@ namespace {
 
 constexpr int kSamples1nm = static_cast<int>(kVisibleMaxNm - kVisibleMinNm) + 1;
 
-double normalised_wavelength(double lambda_nm) {
-  return (lambda_nm - kVisibleMinNm) / (kVisibleMaxNm - kVisibleMinNm);
-}
+double normalised_wavelength(double lambda_nm) { return (lambda_nm - kVisibleMinNm) / (kVisibleMaxNm - kVisibleMinNm); }
 
 // D65 × CMF × trapezoid weight at every nm, scaled so that the perfect reflector has
 // Y = 1: the 1 nm integration that the fit matches colours with.
@@ -103,11 +101,9 @@ Residual residual(const SigmoidPolynomial& c, const Lab& target) {
     df_dxyz[ch] = cielab_f_derivative(xyz[ch] / white[ch]) / white[ch];
   }
   Residual r;
-  r.value = {116.0 * f[1] - 16.0 - target.l, 500.0 * (f[0] - f[1]) - target.a,
-             200.0 * (f[1] - f[2]) - target.b};
+  r.value = {116.0 * f[1] - 16.0 - target.l, 500.0 * (f[0] - f[1]) - target.a, 200.0 * (f[1] - f[2]) - target.b};
   for (int j = 0; j < 3; ++j) {
-    const double dfx = df_dxyz[0] * d_xyz[0][j], dfy = df_dxyz[1] * d_xyz[1][j],
-                 dfz = df_dxyz[2] * d_xyz[2][j];
+    const double dfx = df_dxyz[0] * d_xyz[0][j], dfy = df_dxyz[1] * d_xyz[1][j], dfz = df_dxyz[2] * d_xyz[2][j];
     r.jacobian[0][j] = 116.0 * dfy;
     r.jacobian[1][j] = 500.0 * (dfx - dfy);
     r.jacobian[2][j] = 200.0 * (dfy - dfz);
@@ -125,8 +121,7 @@ struct Solve {
 // Levenberg–Marquardt with Marquardt's diagonal scaling, which copes with the very
 // different sizes of ∂Lab/∂c when the sigmoid saturates. Never returns a worse point
 // than `start`, never a non-finite one.
-Solve levenberg_marquardt(const SigmoidPolynomial& start, const Lab& target, int max_evaluations,
-                          double tolerance) {
+Solve levenberg_marquardt(const SigmoidPolynomial& start, const Lab& target, int max_evaluations, double tolerance) {
   SigmoidPolynomial c = start;
   Residual r = residual(c, target);
   int evaluations = 1;
@@ -231,8 +226,8 @@ SigmoidPolynomial fit_reflectance_to_linear_srgb(const Rgb& linear_srgb) {
   int budget = kContinuationEvaluations;
   while (alpha < 1.0 && budget > 0) {
     const double next_alpha = std::min(1.0, alpha + step);
-    const Solve s = levenberg_marquardt(c, colour_at(next_alpha), std::min(budget, kEvaluationsPerStep),
-                                        kStepTolerance);
+    const Solve s =
+        levenberg_marquardt(c, colour_at(next_alpha), std::min(budget, kEvaluationsPerStep), kStepTolerance);
     budget -= s.evaluations;
     if (s.error <= kStepTolerance || step <= kMinStep) {
       // Converged, or the step cannot be made smaller: keep the best point and go on.
@@ -262,9 +257,7 @@ Spectrum reflectance_from_linear_srgb(const Rgb& linear_srgb) {
 
 Spectrum reflectance_from_samples(const std::vector<std::pair<double, double>>& samples_nm_value,
                                   std::string_view where) {
-  auto fail = [&](const std::string& what) {
-    throw InputError(std::string(where) + ": reflectance samples: " + what);
-  };
+  auto fail = [&](const std::string& what) { throw InputError(std::string(where) + ": reflectance samples: " + what); };
   if (samples_nm_value.empty()) fail("need at least one (wavelength_nm, value) pair");
   Tabulated table;
   for (size_t i = 0; i < samples_nm_value.size(); ++i) {
@@ -272,8 +265,7 @@ Spectrum reflectance_from_samples(const std::vector<std::pair<double, double>>& 
     std::ostringstream at;
     at << "sample " << i << " (" << lambda << " nm, " << value << ")";
     if (!std::isfinite(lambda) || !std::isfinite(value)) fail(at.str() + " is not a finite number");
-    if (!table.x.empty() && lambda <= table.x.back())
-      fail(at.str() + ": wavelengths must increase strictly");
+    if (!table.x.empty() && lambda <= table.x.back()) fail(at.str() + ": wavelengths must increase strictly");
     if (value < 0.0 || value > 1.0)
       fail(at.str() + ": a reflectance must be within [0, 1]" +
            (value > 1.0 && value <= 100.0 ? " (percentages must be divided by 100)" : ""));

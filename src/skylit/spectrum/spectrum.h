@@ -44,10 +44,22 @@ class Spectrum {
   constexpr float& operator[](int i) { return values_[static_cast<size_t>(i)]; }
   constexpr float operator[](int i) const { return values_[static_cast<size_t>(i)]; }
 
-  Spectrum& operator+=(const Spectrum& o) { for (int i = 0; i < size(); ++i) (*this)[i] += o[i]; return *this; }
-  Spectrum& operator-=(const Spectrum& o) { for (int i = 0; i < size(); ++i) (*this)[i] -= o[i]; return *this; }
-  Spectrum& operator*=(const Spectrum& o) { for (int i = 0; i < size(); ++i) (*this)[i] *= o[i]; return *this; }
-  Spectrum& operator*=(float s) { for (float& v : values_) v *= s; return *this; }
+  Spectrum& operator+=(const Spectrum& o) {
+    for (int i = 0; i < size(); ++i) (*this)[i] += o[i];
+    return *this;
+  }
+  Spectrum& operator-=(const Spectrum& o) {
+    for (int i = 0; i < size(); ++i) (*this)[i] -= o[i];
+    return *this;
+  }
+  Spectrum& operator*=(const Spectrum& o) {
+    for (int i = 0; i < size(); ++i) (*this)[i] *= o[i];
+    return *this;
+  }
+  Spectrum& operator*=(float s) {
+    for (float& v : values_) v *= s;
+    return *this;
+  }
 
   float max_value() const;
   bool is_black() const { return max_value() <= 0.0f; }

@@ -13,9 +13,8 @@ XyzImage::XyzImage(int w, int h) : width(w), height(h) {
 namespace {
 std::size_t checked_index(const XyzImage& image, int x, int y) {
   if (x < 0 || y < 0 || x >= image.width || y >= image.height)
-    throw std::out_of_range("XyzImage: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                            ") outside " + std::to_string(image.width) + "x" +
-                            std::to_string(image.height));
+    throw std::out_of_range("XyzImage: pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") outside " +
+                            std::to_string(image.width) + "x" + std::to_string(image.height));
   return 3 * (static_cast<std::size_t>(y) * image.width + x);
 }
 }  // namespace

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "skylit/io/atomic_file.h"
+#include "skylit/core/error.h"
 #include "skylit/figures/figure_file.h"
+#include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image_encoders.h"
 #include "skylit/io/image/tone_map.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 
@@ -94,8 +94,8 @@ ContactSheetLayout contact_sheet_layout(const ContactSheet& sheet) {
     throw std::invalid_argument("contact sheet: " + std::to_string(sheet.row_labels.size()) + " row labels for " +
                                 std::to_string(rows) + " rows");
   if (!sheet.column_labels.empty() && sheet.column_labels.size() != columns)
-    throw std::invalid_argument("contact sheet: " + std::to_string(sheet.column_labels.size()) +
-                                " column labels for " + std::to_string(columns) + " columns");
+    throw std::invalid_argument("contact sheet: " + std::to_string(sheet.column_labels.size()) + " column labels for " +
+                                std::to_string(columns) + " columns");
 
   ContactSheetLayout layout;
   for (const auto& row : sheet.cells)
@@ -107,7 +107,7 @@ ContactSheetLayout contact_sheet_layout(const ContactSheet& sheet) {
       layout.cell_height = std::max(layout.cell_height, (image->height + f - 1) / f);
     }
   sheet_reduction_factor(1, sheet.max_cell_width);  // checks max_cell_width even with no images
-  if (layout.cell_width == 0) {  // only empty cells: small grey squares
+  if (layout.cell_width == 0) {                     // only empty cells: small grey squares
     layout.cell_width = layout.cell_height = std::min(64, sheet.max_cell_width);
   }
   layout.automatic_exposure = !sheet.display.exposure_ev;
@@ -169,17 +169,14 @@ Raster render(const ContactSheet& sheet, const ContactSheetLayout& layout) {
   display.exposure_ev = layout.exposure_ev;  // the same for every cell
   for (std::size_t r = 0; r < sheet.cells.size(); ++r) {
     if (!sheet.row_labels.empty())
-      draw_text(raster, kSheetMargin, layout.cell_y[r] + (layout.cell_height - th) / 2, sheet.row_labels[r],
-                kBlack, s);
+      draw_text(raster, kSheetMargin, layout.cell_y[r] + (layout.cell_height - th) / 2, sheet.row_labels[r], kBlack, s);
     for (std::size_t c = 0; c < layout.cell_x.size(); ++c) {
       const XyzImage* image = cell(sheet, r, c);
       if (!has_pixels(image)) {
-        fill_rect(raster, layout.cell_x[c], layout.cell_y[r], layout.cell_width, layout.cell_height,
-                  kSheetEmptyCell);
+        fill_rect(raster, layout.cell_x[c], layout.cell_y[r], layout.cell_width, layout.cell_height, kSheetEmptyCell);
         continue;
       }
-      const XyzImage reduced =
-          reduce_by_box_filter(*image, sheet_reduction_factor(image->width, sheet.max_cell_width));
+      const XyzImage reduced = reduce_by_box_filter(*image, sheet_reduction_factor(image->width, sheet.max_cell_width));
       blit_rgb8(raster, layout.cell_x[c] + (layout.cell_width - reduced.width) / 2,
                 layout.cell_y[r] + (layout.cell_height - reduced.height) / 2, reduced.width, reduced.height,
                 display_srgb8(reduced, display));

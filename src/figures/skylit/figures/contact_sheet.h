@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "skylit/io/image/image.h"
 #include "skylit/figures/raster.h"
+#include "skylit/io/image/image.h"
 
 namespace skylit {
 
@@ -22,8 +22,8 @@ struct ContactSheet {
   // cells[row][column]; rows may be shorter than the widest one. A null image (or a
   // missing one) is an empty grey cell. The images must outlive the call.
   std::vector<std::vector<const XyzImage*>> cells;
-  DisplayOptions display;     // exposure_ev empty = one automatic exposure for all cells
-  int max_cell_width = 480;   // wider images are reduced by box filtering, pixels
+  DisplayOptions display;    // exposure_ev empty = one automatic exposure for all cells
+  int max_cell_width = 480;  // wider images are reduced by box filtering, pixels
 };
 
 // Where everything goes, in pixels, and the exposure used.
@@ -35,13 +35,13 @@ struct ContactSheetLayout {
   int title_y = 0, column_heading_y = 0, column_label_y = 0, caption_y = 0;
   double exposure_ev = 0;  // shared by all cells
   bool automatic_exposure = false;
-  std::string caption;     // "exposure EV 12.3 for all cells (automatic)"
+  std::string caption;  // "exposure EV 12.3 for all cells (automatic)"
 };
 
-inline constexpr int kSheetMargin = 16;      // around everything, pixels
-inline constexpr int kSheetGap = 8;          // between cells, and between cells and labels
-inline constexpr int kSheetTitleScale = 3;   // bitmap font scale of the title
-inline constexpr int kSheetLabelScale = 2;   // of labels, headings and the caption
+inline constexpr int kSheetMargin = 16;     // around everything, pixels
+inline constexpr int kSheetGap = 8;         // between cells, and between cells and labels
+inline constexpr int kSheetTitleScale = 3;  // bitmap font scale of the title
+inline constexpr int kSheetLabelScale = 2;  // of labels, headings and the caption
 inline constexpr Rgb8 kSheetEmptyCell{150, 150, 150};
 
 // The integer reduction factor for an image `width` pixels wide: ceil(width / max_width).

@@ -18,9 +18,9 @@ std::string figure_extension(const std::filesystem::path& path, std::initializer
     list += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + std::string(a);
     ++i;
   }
-  throw InputError("cannot write \"" + path.string() + "\": " +
-                   (ext.empty() ? std::string("no file extension") : "unknown extension \"" + ext + "\"") + "; " +
-                   std::string(what) + " is written as " + list);
+  throw InputError("cannot write \"" + path.string() +
+                   "\": " + (ext.empty() ? std::string("no file extension") : "unknown extension \"" + ext + "\"") +
+                   "; " + std::string(what) + " is written as " + list);
 }
 
 }  // namespace skylit

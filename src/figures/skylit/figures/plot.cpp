@@ -4,10 +4,10 @@
 
 #include <string>
 
-#include "skylit/io/atomic_file.h"
 #include "skylit/figures/figure_file.h"
-#include "skylit/io/image/image_encoders.h"
 #include "skylit/figures/plot_layout.h"
+#include "skylit/io/atomic_file.h"
+#include "skylit/io/image/image_encoders.h"
 
 namespace skylit {
 

@@ -18,7 +18,7 @@ struct PlotSeries {
   // Same length. A point with a non-finite x or y is skipped and breaks the line there;
   // a point with no finite neighbour is marked with a dot.
   std::vector<double> x, y;
-  bool right_axis = false;   // drawn against the right y axis (Plot::y2_label)
+  bool right_axis = false;  // drawn against the right y axis (Plot::y2_label)
 };
 
 struct Plot {

@@ -47,7 +47,7 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
 std::string tick_label(double value, double step) {
   if (!std::isfinite(value)) return "";
   if (step > 0 && std::abs(value) < step * 1e-6) value = 0;  // rounding of k·step
-  if (value == 0) value = 0.0;                                // and never "-0"
+  if (value == 0) value = 0.0;                               // and never "-0"
   const int step_exponent = step > 0 ? int(std::floor(std::log10(step) + 1e-9)) : 0;
   const double magnitude = std::abs(value);
   // to_chars is locale-independent: a German locale must not turn 0.5 into "0,5".
@@ -97,9 +97,8 @@ AxisScale axis_for_data(double lo, double hi, bool pad_to_ticks, bool include_ze
 }
 
 Rgb8 series_colour(std::size_t index) {
-  static constexpr Rgb8 kPalette[] = {{0, 114, 178},  {213, 94, 0},   {0, 158, 115},
-                                      {204, 121, 167}, {230, 159, 0}, {86, 180, 233},
-                                      {0, 0, 0},      {240, 228, 66}};
+  static constexpr Rgb8 kPalette[] = {{0, 114, 178}, {213, 94, 0},   {0, 158, 115}, {204, 121, 167},
+                                      {230, 159, 0}, {86, 180, 233}, {0, 0, 0},     {240, 228, 66}};
   return kPalette[index % std::size(kPalette)];
 }
 
@@ -127,8 +126,8 @@ PlotLayout plot_layout(const Plot& plot, int width, int height) {
   bool uses_y2 = false;
   for (const PlotSeries& s : plot.series) {
     if (s.x.size() != s.y.size())
-      throw std::invalid_argument("plot series \"" + s.label + "\": " + std::to_string(s.x.size()) +
-                                  " x values but " + std::to_string(s.y.size()) + " y values");
+      throw std::invalid_argument("plot series \"" + s.label + "\": " + std::to_string(s.x.size()) + " x values but " +
+                                  std::to_string(s.y.size()) + " y values");
     uses_y2 = uses_y2 || s.right_axis;
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
@@ -151,8 +150,8 @@ PlotLayout plot_layout(const Plot& plot, int width, int height) {
   layout.y_label_x = margin;
   layout.left = margin + (plot.y_label.empty() ? 0 : th + 2 * gap) + widest_label(layout.y) + gap + kTickLength;
   if (layout.has_y2) {
-    layout.right = width - 1 - margin - (plot.y2_label.empty() ? 0 : th + 2 * gap) - widest_label(layout.y2) -
-                   gap - kTickLength;
+    layout.right =
+        width - 1 - margin - (plot.y2_label.empty() ? 0 : th + 2 * gap) - widest_label(layout.y2) - gap - kTickLength;
     layout.y2_tick_label_x = layout.right + kTickLength + gap + 1;
     layout.y2_label_x = width - margin - th;
   } else {

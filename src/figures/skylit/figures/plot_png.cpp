@@ -57,8 +57,7 @@ Raster render_plot_png(const Plot& plot) {
   for (double t : layout.x.ticks) fill_rect(raster, column_of(layout.px(t)), layout.top, 1, frame_h, kGrid);
   for (double t : layout.y.ticks) fill_rect(raster, layout.left, column_of(layout.py(t, false)), frame_w, 1, kGrid);
 
-  for (std::size_t i = 0; i < plot.series.size(); ++i)
-    draw_series(raster, layout, plot.series[i], series_colour(i));
+  for (std::size_t i = 0; i < plot.series.size(); ++i) draw_series(raster, layout, plot.series[i], series_colour(i));
   // Wipe what a thick line drew outside the frame (only ever its rounded end).
   fill_rect(raster, 0, 0, layout.width, layout.top, kWhite);
   fill_rect(raster, 0, layout.bottom + 1, layout.width, layout.height, kWhite);

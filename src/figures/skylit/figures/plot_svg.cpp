@@ -18,8 +18,8 @@ namespace {
 // Pixel coordinate, 2 decimals at most ("12.5", "300").
 std::string num(double v) {
   char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, std::round(v * 100) / 100 + 0.0,
-                                    std::chars_format::fixed, 2);
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof buffer, std::round(v * 100) / 100 + 0.0, std::chars_format::fixed, 2);
   std::string s(buffer, result.ptr);
   while (s.back() == '0') s.pop_back();
   if (s.back() == '.') s.pop_back();
@@ -45,11 +45,21 @@ std::string xml_text(std::string_view s) {
     const unsigned char b = static_cast<unsigned char>(s[at]);
     if (b < 0x80) {
       switch (b) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&apos;"; break;
+        case '&':
+          out += "&amp;";
+          break;
+        case '<':
+          out += "&lt;";
+          break;
+        case '>':
+          out += "&gt;";
+          break;
+        case '"':
+          out += "&quot;";
+          break;
+        case '\'':
+          out += "&apos;";
+          break;
         default:
           if (b >= 0x20 || b == '\t') out += static_cast<char>(b);
       }
@@ -144,14 +154,15 @@ std::string render_plot_svg(const Plot& plot) {
   const double l = layout.left + 0.5, r = layout.right + 0.5, t = layout.top + 0.5, b = layout.bottom + 0.5;
   std::string svg =
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(layout.width) + "\" height=\"" +
-      std::to_string(layout.height) + "\" viewBox=\"0 0 " + std::to_string(layout.width) + " " +
-      std::to_string(layout.height) + "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" +
-      std::to_string(kSvgFontSize) + "\">\n";
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
+      std::to_string(layout.width) + "\" height=\"" + std::to_string(layout.height) + "\" viewBox=\"0 0 " +
+      std::to_string(layout.width) + " " + std::to_string(layout.height) +
+      "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\" font-size=\"" + std::to_string(kSvgFontSize) +
+      "\">\n";
   if (!plot.title.empty()) svg += "<title>" + xml_text(plot.title) + "</title>\n";
   svg += "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-  svg += "<defs><clipPath id=\"plot-area\"><rect x=\"" + num(l) + "\" y=\"" + num(t) + "\" width=\"" +
-         num(r - l) + "\" height=\"" + num(b - t) + "\"/></clipPath></defs>\n";
+  svg += "<defs><clipPath id=\"plot-area\"><rect x=\"" + num(l) + "\" y=\"" + num(t) + "\" width=\"" + num(r - l) +
+         "\" height=\"" + num(b - t) + "\"/></clipPath></defs>\n";
 
   svg += "<g stroke=\"#e1e1e1\">\n";
   for (double v : layout.x.ticks) {
@@ -166,8 +177,7 @@ std::string render_plot_svg(const Plot& plot) {
 
   svg += "<g clip-path=\"url(#plot-area)\" fill=\"none\" stroke-width=\"" + num(kSeriesLineWidth) +
          "\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-  for (std::size_t i = 0; i < plot.series.size(); ++i)
-    svg += series_element(layout, plot.series[i], series_colour(i));
+  for (std::size_t i = 0; i < plot.series.size(); ++i) svg += series_element(layout, plot.series[i], series_colour(i));
   svg += "</g>\n";
 
   svg += "<rect x=\"" + num(l) + "\" y=\"" + num(t) + "\" width=\"" + num(r - l) + "\" height=\"" + num(b - t) +

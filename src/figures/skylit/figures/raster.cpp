@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "skylit/io/atomic_file.h"
 #include "skylit/figures/figure_file.h"
+#include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image_encoders.h"
 
 namespace skylit {
@@ -21,8 +21,8 @@ Raster::Raster(int w, int h, Rgb8 background) : width(w), height(h) {
 
 Rgb8 Raster::at(int x, int y) const {
   if (x < 0 || y < 0 || x >= width || y >= height)
-    throw std::out_of_range("Raster: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                            ") outside " + std::to_string(width) + "x" + std::to_string(height));
+    throw std::out_of_range("Raster: pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") outside " +
+                            std::to_string(width) + "x" + std::to_string(height));
   const std::size_t i = 3 * (static_cast<std::size_t>(y) * width + x);
   return {rgb[i], rgb[i + 1], rgb[i + 2]};
 }
@@ -129,8 +129,8 @@ void draw_line(Raster& raster, PointF from, PointF to, Rgb8 colour, double width
 
 void blit_rgb8(Raster& raster, int x, int y, int w, int h, std::span<const uint8_t> rgb) {
   if (w < 0 || h < 0 || rgb.size() != 3 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h))
-    throw std::invalid_argument("blit_rgb8: " + std::to_string(rgb.size()) + " bytes for a " +
-                                std::to_string(w) + "x" + std::to_string(h) + " image");
+    throw std::invalid_argument("blit_rgb8: " + std::to_string(rgb.size()) + " bytes for a " + std::to_string(w) + "x" +
+                                std::to_string(h) + " image");
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
       const std::size_t s = 3 * (static_cast<std::size_t>(j) * w + i);

@@ -73,8 +73,7 @@ void draw_legend(Raster& raster, int top, const LegendLayout& l) {
   draw_text(raster, l.bar_x() + l.bar_width() - text_width("B brighter", l.s), top + l.ends_y, "B brighter", ink, l.s);
   const int swatch = text_height(l.s) - 2 * l.s;
   fill_rect(raster, l.bar_x(), top + l.swatch_y + l.s, swatch, swatch, kNoRatioGrey);
-  draw_text(raster, l.bar_x() + swatch + 4 * l.s, top + l.swatch_y, "both below 1e-4 cd/m²", ink,
-            l.s);
+  draw_text(raster, l.bar_x() + swatch + 4 * l.s, top + l.swatch_y, "both below 1e-4 cd/m²", ink, l.s);
 }
 
 }  // namespace

@@ -15,8 +15,7 @@ int text_width(std::string_view utf8, int scale) {
 
 int text_height(int scale) { return kFontCellHeight * std::max(scale, 1); }
 
-void draw_text(Raster& raster, int x, int y, std::string_view utf8, Rgb8 colour, int scale,
-               TextDirection direction) {
+void draw_text(Raster& raster, int x, int y, std::string_view utf8, Rgb8 colour, int scale, TextDirection direction) {
   scale = std::max(scale, 1);
   const std::u32string text = font_characters(utf8);
   // (u, v): position in the unturned text's box, u along the line and v down the line.
@@ -31,8 +30,7 @@ void draw_text(Raster& raster, int x, int y, std::string_view utf8, Rgb8 colour,
     const int u0 = static_cast<int>(k) * kFontCellWidth * scale;
     for (int r = 0; r < kGlyphHeight; ++r)
       for (int c = 0; c < kGlyphWidth; ++c)
-        if (glyph[r] >> (kGlyphWidth - 1 - c) & 1)
-          plot(u0 + c * scale, (kGlyphTopInCell + r) * scale);
+        if (glyph[r] >> (kGlyphWidth - 1 - c) & 1) plot(u0 + c * scale, (kGlyphTopInCell + r) * scale);
   }
 }
 

@@ -32,17 +32,15 @@ Bytes encode_exr(const XyzImage& image) {
   const char* names[4] = {"R", "G", "B", "Y"};
   for (const char* name : names) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
   const RgbPrimaries& s = kSrgbPrimaries;
-  Imf::addChromaticities(header, Imf::Chromaticities({float(s.red_x), float(s.red_y)},
-                                                     {float(s.green_x), float(s.green_y)},
-                                                     {float(s.blue_x), float(s.blue_y)},
-                                                     {float(s.white_x), float(s.white_y)}));
+  Imf::addChromaticities(header,
+                         Imf::Chromaticities({float(s.red_x), float(s.red_y)}, {float(s.green_x), float(s.green_y)},
+                                             {float(s.blue_x), float(s.blue_y)}, {float(s.white_x), float(s.white_y)}));
   Imf::addWhiteLuminance(header, 1.0f);
 
   Imf::FrameBuffer frame;
   const std::size_t x_stride = 4 * sizeof(float), y_stride = x_stride * w;
   for (int c = 0; c < 4; ++c)
-    frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c),
-                                      x_stride, y_stride));
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c), x_stride, y_stride));
 
   Imf::StdOSStream stream;
   {

@@ -7,18 +7,17 @@
 #include <stdexcept>
 #include <string>
 
+#include "skylit/core/error.h"
 #include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image_encoders.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 
 void check_image_shape(const XyzImage& image) {
   if (image.width < 0 || image.height < 0 ||
       image.xyz.size() != 3 * static_cast<std::size_t>(image.width) * image.height)
-    throw std::invalid_argument("XyzImage: xyz holds " + std::to_string(image.xyz.size()) +
-                                " values, not 3 x " + std::to_string(image.width) + " x " +
-                                std::to_string(image.height));
+    throw std::invalid_argument("XyzImage: xyz holds " + std::to_string(image.xyz.size()) + " values, not 3 x " +
+                                std::to_string(image.width) + " x " + std::to_string(image.height));
 }
 
 bool pixel_is_finite(const XyzImage& image, std::size_t index) {
@@ -39,13 +38,12 @@ ImageFormat image_format_from_path(const std::filesystem::path& path) {
   if (ext == ".exr") return ImageFormat::exr;
   if (ext == ".pfm") return ImageFormat::pfm;
   if (ext == ".hdr") return ImageFormat::hdr;
-  throw InputError("cannot write \"" + path.string() + "\": " +
-                   (ext.empty() ? std::string("no file extension") : "unknown extension \"" + ext + "\"") +
+  throw InputError("cannot write \"" + path.string() +
+                   "\": " + (ext.empty() ? std::string("no file extension") : "unknown extension \"" + ext + "\"") +
                    "; use .png, .exr, .pfm or .hdr");
 }
 
-void write_image(const XyzImage& image, const std::filesystem::path& path,
-                 const DisplayOptions& options) {
+void write_image(const XyzImage& image, const std::filesystem::path& path, const DisplayOptions& options) {
   // Everything that can be refused is refused before a temporary file exists.
   const ImageFormat format = image_format_from_path(path);
   check_image_shape(image);
@@ -57,10 +55,18 @@ void write_image(const XyzImage& image, const std::filesystem::path& path,
   AtomicFile file(path);  // checks the folder before the (possibly slow) encoding
   Bytes bytes;
   switch (format) {
-    case ImageFormat::exr: bytes = encode_exr(image); break;
-    case ImageFormat::pfm: bytes = encode_pfm(image); break;
-    case ImageFormat::hdr: bytes = encode_rgbe(image); break;
-    case ImageFormat::png: bytes = encode_png(image, options); break;
+    case ImageFormat::exr:
+      bytes = encode_exr(image);
+      break;
+    case ImageFormat::pfm:
+      bytes = encode_pfm(image);
+      break;
+    case ImageFormat::hdr:
+      bytes = encode_rgbe(image);
+      break;
+    case ImageFormat::png:
+      bytes = encode_png(image, options);
+      break;
   }
   file.commit(bytes);
 }

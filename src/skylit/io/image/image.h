@@ -29,8 +29,7 @@ ImageFormat image_format_from_path(const std::filesystem::path& path);
 // failed or interrupted write leaves no partial file. InputError (naming the path) if
 // the extension is unknown or the folder is missing or unwritable. Non-finite pixels
 // are written as black. The same image and options give the same bytes.
-void write_image(const XyzImage& image, const std::filesystem::path& path,
-                 const DisplayOptions& options = {});
+void write_image(const XyzImage& image, const std::filesystem::path& path, const DisplayOptions& options = {});
 
 // The display transform used for PNG, exposed for tests and contact sheets: returns
 // 8-bit sRGB, 3 per pixel, rows top to bottom.

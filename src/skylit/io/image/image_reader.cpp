@@ -32,8 +32,8 @@ std::string read_bytes(const std::filesystem::path& path) {
 XyzImage read_image(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   if (ext != ".exr" && ext != ".pfm")
-    throw InputError("cannot read \"" + path.string() + "\": " +
-                     (ext.empty() ? std::string("no file extension") : "unknown extension \"" + ext + "\"") +
+    throw InputError("cannot read \"" + path.string() +
+                     "\": " + (ext.empty() ? std::string("no file extension") : "unknown extension \"" + ext + "\"") +
                      "; an image to compare is read from .exr or .pfm");
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError("cannot read \"" + path.string() + "\": no such file");

@@ -19,14 +19,13 @@ void put_little_endian(Bytes& out, float v) {
 }  // namespace
 
 Bytes encode_pfm(const XyzImage& image) {
-  const std::string header =
-      "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+  const std::string header = "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
   Bytes out(header.begin(), header.end());
   out.reserve(header.size() + 12 * static_cast<std::size_t>(image.width) * image.height);
   for (int row = image.height - 1; row >= 0; --row) {
     for (int x = 0; x < image.width; ++x) {
-      const Rgb rgb = linear_srgb_from_xyz(
-          finite_pixel_or_black(image, static_cast<std::size_t>(row) * image.width + x));
+      const Rgb rgb =
+          linear_srgb_from_xyz(finite_pixel_or_black(image, static_cast<std::size_t>(row) * image.width + x));
       for (double c : rgb) put_little_endian(out, to_finite_float(c));
     }
   }

@@ -72,12 +72,11 @@ Bytes encode_rgbe(const XyzImage& image) {
   const int w = image.width, h = image.height;
   const RgbPrimaries& p = kRadiancePrimaries;
   char primaries[128];
-  std::snprintf(primaries, sizeof primaries, "PRIMARIES= %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n",
-                p.red_x, p.red_y, p.green_x, p.green_y, p.blue_x, p.blue_y, p.white_x, p.white_y);
+  std::snprintf(primaries, sizeof primaries, "PRIMARIES= %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n", p.red_x, p.red_y,
+                p.green_x, p.green_y, p.blue_x, p.blue_y, p.white_x, p.white_y);
   // No EXPOSURE line: the pixel values are Radiance's absolute units as they stand.
   const std::string header = std::string("#?RADIANCE\nSOFTWARE=skylit\n") + primaries +
-                             "FORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(h) + " +X " +
-                             std::to_string(w) + "\n";
+                             "FORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(h) + " +X " + std::to_string(w) + "\n";
   Bytes out(header.begin(), header.end());
 
   const Matrix3 radiance_from_xyz = rgb_from_xyz_matrix(kRadiancePrimaries);

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "skylit/io/image/image_encoders.h"
 #include "skylit/core/error.h"
+#include "skylit/io/image/image_encoders.h"
 
 namespace skylit {
 
@@ -64,16 +64,14 @@ std::vector<uint8_t> display_srgb8(const XyzImage& image, const DisplayOptions& 
   check_image_shape(image);
   const double ev = options.exposure_ev ? *options.exposure_ev : automatic_exposure_ev(image);
   if (!std::isfinite(ev))
-    throw InputError("display exposure_ev must be a finite number of stops, got " +
-                     std::to_string(ev));
+    throw InputError("display exposure_ev must be a finite number of stops, got " + std::to_string(ev));
   const double scale = exposure_scale(ev);
   const std::size_t n = static_cast<std::size_t>(image.width) * image.height;
   std::vector<uint8_t> out(3 * n);
   for (std::size_t i = 0; i < n; ++i) {
     const Xyz p = finite_pixel_or_black(image, i);
     const Rgb rgb = display_linear_srgb({p.x * scale, p.y * scale, p.z * scale});
-    for (int c = 0; c < 3; ++c)
-      out[3 * i + c] = static_cast<uint8_t>(std::lround(255.0 * srgb_encode(rgb[c])));
+    for (int c = 0; c < 3; ++c) out[3 * i + c] = static_cast<uint8_t>(std::lround(255.0 * srgb_encode(rgb[c])));
   }
   return out;
 }

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "skylit/io/model/mesh_io.h"
-#include "skylit/geometry/transform.h"
 #include "skylit/core/error.h"
+#include "skylit/geometry/transform.h"
+#include "skylit/io/model/mesh_io.h"
 
 namespace skylit {
 namespace {
@@ -36,8 +36,7 @@ bool harmless_extension(const std::string& name) {
   return false;
 }
 
-bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                  void*) {
+bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
   return true;
 }
 
@@ -62,12 +61,18 @@ struct AccessorView {
   double get(size_t i, int c) const {
     const unsigned char* p = data + i * stride;
     switch (component_type) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: return read<float>(p, c, 1.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return read<uint8_t>(p, c, 255.0);
-      case TINYGLTF_COMPONENT_TYPE_BYTE: return read<int8_t>(p, c, 127.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return read<uint16_t>(p, c, 65535.0);
-      case TINYGLTF_COMPONENT_TYPE_SHORT: return read<int16_t>(p, c, 32767.0);
-      default: return read<uint32_t>(p, c, 4294967295.0);
+      case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return read<float>(p, c, 1.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return read<uint8_t>(p, c, 255.0);
+      case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return read<int8_t>(p, c, 127.0);
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return read<uint16_t>(p, c, 65535.0);
+      case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return read<int16_t>(p, c, 32767.0);
+      default:
+        return read<uint32_t>(p, c, 4294967295.0);
     }
   }
 
@@ -122,7 +127,8 @@ class GltfReader {
       t = Transform::translation({node.translation[0], node.translation[1], node.translation[2]});
     if (node.rotation.size() == 4) {
       const auto& q = node.rotation;
-      if (!(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] > 0)) fail("node '" + node.name + "' has a zero rotation");
+      if (!(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] > 0))
+        fail("node '" + node.name + "' has a zero rotation");
       t = t * Transform::rotation_quaternion(q[0], q[1], q[2], q[3]);
     }
     if (node.scale.size() == 3) t = t * Transform::scale({node.scale[0], node.scale[1], node.scale[2]});
@@ -174,8 +180,8 @@ class GltfReader {
       for (size_t i = 0; i < ix.count; ++i) {
         const double v = ix.get(i, 0);
         if (v >= static_cast<double>(p.count))
-          fail("an index (" + std::to_string(static_cast<uint64_t>(v)) + ") is beyond the " +
-               std::to_string(p.count) + " vertices");
+          fail("an index (" + std::to_string(static_cast<uint64_t>(v)) + ") is beyond the " + std::to_string(p.count) +
+               " vertices");
         indices.push_back(static_cast<uint32_t>(v));
       }
     } else {
@@ -184,7 +190,8 @@ class GltfReader {
     }
     if (indices.size() % 3 != 0)
       fail("a triangle primitive has " + std::to_string(indices.size()) + " indices, not a multiple of 3");
-    for (size_t i = 0; i < indices.size(); i += 3) mesh.triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
+    for (size_t i = 0; i < indices.size(); i += 3)
+      mesh.triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
     return mesh;
   }
 
@@ -250,7 +257,8 @@ TriangleMesh load_gltf_file(const std::filesystem::path& path) {
                          : loader.LoadASCIIFromFile(&model, &err, &warn, name);
   if (!ok) throw InputError(name + ": cannot read glTF: " + one_line(err.empty() ? warn : err));
   for (const std::string& ext : model.extensionsRequired)
-    if (!harmless_extension(ext)) throw InputError(name + ": requires glTF extension " + ext + ", which skylit does not read");
+    if (!harmless_extension(ext))
+      throw InputError(name + ": requires glTF extension " + ext + ", which skylit does not read");
   return GltfReader(model, name).read_scene();
 }
 

@@ -11,8 +11,8 @@
 
 #include <tiny_obj_loader.h>
 
-#include "skylit/io/model/mesh_io.h"
 #include "skylit/core/error.h"
+#include "skylit/io/model/mesh_io.h"
 
 namespace skylit {
 namespace {
@@ -89,7 +89,8 @@ TriangleMesh load_obj_file(const std::filesystem::path& path) {
   const auto& floats = reader.GetAttrib().vertices;
   if (mesh.vertices.size() != floats.size() / 3) {
     mesh.vertices.clear();
-    for (size_t i = 0; i + 2 < floats.size(); i += 3) mesh.vertices.emplace_back(floats[i], floats[i + 1], floats[i + 2]);
+    for (size_t i = 0; i + 2 < floats.size(); i += 3)
+      mesh.vertices.emplace_back(floats[i], floats[i + 1], floats[i + 2]);
   }
 
   const auto vertex = [&](const tinyobj::index_t& index) {

@@ -29,7 +29,8 @@ Rgba8Image read_rgba8(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec)) fail(path, "no such file");
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) fail(path, std::string("not a readable PNG (") + png.message + ")");
+  if (!png_image_begin_read_from_file(&png, path.c_str()))
+    fail(path, std::string("not a readable PNG (") + png.message + ")");
   png.format = PNG_FORMAT_RGBA;
   Rgba8Image out;
   out.width = static_cast<int>(png.width);

@@ -31,7 +31,8 @@ ImageRegion pixel_rectangle(const JsonReader& rect, const std::string& name, int
     rect.fail(rectangle_text(x0, y0, x1, y1) + " is empty; expected x0 < x1 and y0 < y1 (half-open pixel ranges)");
   if (x0 < 0 || y0 < 0 || x1 > width || y1 > height)
     rect.fail(rectangle_text(x0, y0, x1, y1) + " reaches outside the " + size_text(width, height) +
-              " images (x0, x1 from 0 to " + std::to_string(width) + ", y0, y1 from 0 to " + std::to_string(height) + ")");
+              " images (x0, x1 from 0 to " + std::to_string(width) + ", y0, y1 from 0 to " + std::to_string(height) +
+              ")");
   return rectangle_region(name, width, x0, y0, x1, y1);
 }
 
@@ -44,9 +45,7 @@ ImageRegion fraction_rectangle(const JsonReader& rect, const std::string& name, 
   const double f[4] = {e[0].number_in(0, 1), e[1].number_in(0, 1), e[2].number_in(0, 1), e[3].number_in(0, 1)};
   if (f[0] >= f[2] || f[1] >= f[3])
     rect.fail(rectangle_text(f[0], f[1], f[2], f[3]) + " is empty; expected x0 < x1 and y0 < y1");
-  const auto first_pixel = [](double fraction, int size) {
-    return static_cast<int>(std::ceil(fraction * size - 0.5));
-  };
+  const auto first_pixel = [](double fraction, int size) { return static_cast<int>(std::ceil(fraction * size - 0.5)); };
   const int x0 = first_pixel(f[0], width), x1 = first_pixel(f[2], width);
   const int y0 = first_pixel(f[1], height), y1 = first_pixel(f[3], height);
   if (x0 >= x1 || y0 >= y1)

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "skylit/atmosphere/optical_properties.h"
-#include "skylit/sun/solar_position.h"
 #include "skylit/io/scene/scene_parts.h"
+#include "skylit/sun/solar_position.h"
 
 namespace skylit {
 
@@ -53,11 +53,11 @@ void read_sun_and_atmosphere(const JsonReader& root, Scene& scene) {
 }
 
 AtmosphereSettings read_atmosphere(const JsonReader& j) {
-  j.allow_only({"model", "aod_550", "visibility_km", "linke_turbidity", "angstrom_exponent",
-                "single_scattering_albedo", "asymmetry", "aerosol_phase", "aerosol_scale_height_m", "ozone_du",
-                "ground_albedo"});
+  j.allow_only({"model", "aod_550", "visibility_km", "linke_turbidity", "angstrom_exponent", "single_scattering_albedo",
+                "asymmetry", "aerosol_phase", "aerosol_scale_height_m", "ozone_du", "ground_albedo"});
   AtmosphereSettings a;
-  if (auto m = j.optional("model")) a.model = m->one_of({"full", "paper"}) == "paper" ? AtmosphereModel::paper : AtmosphereModel::full;
+  if (auto m = j.optional("model"))
+    a.model = m->one_of({"full", "paper"}) == "paper" ? AtmosphereModel::paper : AtmosphereModel::full;
   if (auto h = j.optional("aerosol_scale_height_m")) a.aerosol.scale_height_m = h->number_in(100, 20000);
   const int turbidity_keys = j.has("aod_550") + j.has("visibility_km") + j.has("linke_turbidity");
   if (turbidity_keys > 1) j.fail("give one of aod_550, visibility_km, linke_turbidity");

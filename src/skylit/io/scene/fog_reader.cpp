@@ -1,9 +1,9 @@
 // The `fog` part of a scene file: a fog layer near the ground (docs/fog.md).
 #include <cmath>
 
+#include "skylit/core/error.h"
 #include "skylit/io/scene/scene_parts.h"
 #include "skylit/media/fog_layer.h"
-#include "skylit/core/error.h"
 
 namespace skylit {
 

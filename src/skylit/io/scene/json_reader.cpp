@@ -101,7 +101,8 @@ double JsonReader::number_in(double lo, double hi) const {
 }
 
 int JsonReader::integer_in(int lo, int hi) const {
-  if (!value_->is_number_integer()) fail_expected("an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
+  if (!value_->is_number_integer())
+    fail_expected("an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
   const auto v = value_->get<long long>();
   if (v < lo || v > hi) fail_expected("an integer from " + std::to_string(lo) + " to " + std::to_string(hi));
   return static_cast<int>(v);

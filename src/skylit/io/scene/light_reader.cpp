@@ -5,13 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "skylit/core/error.h"
+#include "skylit/core/text_file.h"
+#include "skylit/io/scene/scene_parts.h"
 #include "skylit/lights/eulumdat_reader.h"
 #include "skylit/lights/ies_reader.h"
 #include "skylit/lights/lamp_spectrum.h"
-#include "skylit/io/scene/scene_parts.h"
 #include "skylit/spectrum/tabulated.h"
-#include "skylit/core/error.h"
-#include "skylit/core/text_file.h"
 
 namespace skylit {
 
@@ -51,16 +51,17 @@ LampSpectrumSettings read_lamp(const JsonReader& j, const std::filesystem::path&
   LampSpectrumSettings lamp;
   const JsonReader type = j.required("lamp");
   if (!lamp_type_from_name(type.string(), lamp.type))
-    type.fail_expected("a lamp type: high_pressure_sodium, colour_enhanced_sodium, metal_halide, "
-                       "metal_halide_4000k, metal_halide_hp5, led, halogen, incandescent, blackbody or table");
+    type.fail_expected(
+        "a lamp type: high_pressure_sodium, colour_enhanced_sodium, metal_halide, "
+        "metal_halide_4000k, metal_halide_hp5, led, halogen, incandescent, blackbody or table");
   const bool needs_temperature = lamp.type == LampType::kLed || lamp.type == LampType::kBlackbody;
   if (j.has("temperature_k") && !needs_temperature)
     j.required("temperature_k").fail("only an led or a blackbody lamp takes temperature_k");
   if (j.has("spectrum_file") != (lamp.type == LampType::kTable))
     j.fail("a lamp of type 'table' needs 'spectrum_file' (and only it takes one)");
   if (lamp.type == LampType::kLed)
-    lamp.temperature_k = j.optional("temperature_k") ? j.required("temperature_k").number_in(kLedMinCctK, kLedMaxCctK)
-                                                     : 4000.0;
+    lamp.temperature_k =
+        j.optional("temperature_k") ? j.required("temperature_k").number_in(kLedMinCctK, kLedMaxCctK) : 4000.0;
   if (lamp.type == LampType::kBlackbody) lamp.temperature_k = j.required("temperature_k").number_in(500, 25000);
   if (lamp.type == LampType::kTable) {
     const std::filesystem::path file = base_dir / j.required("spectrum_file").string();
@@ -99,8 +100,7 @@ SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir
   } catch (const std::invalid_argument& e) {
     j.required("lamp").fail(e.what());
   }
-  return {name, Luminaire(position, std::move(photometry.distribution), aim, rotation, photometry.tilt),
-          spectrum};
+  return {name, Luminaire(position, std::move(photometry.distribution), aim, rotation, photometry.tilt), spectrum};
 }
 
 }  // namespace

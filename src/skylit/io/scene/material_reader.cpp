@@ -115,7 +115,8 @@ ComplexIor read_metal_constants(const JsonReader& j) {
   std::vector<IorSample> samples;
   for (size_t i = 0; i < wavelengths.size(); ++i) {
     samples.push_back({wavelengths[i].number_in(1, 1e5), n_values[i], k_values[i]});
-    if (i > 0 && samples[i].wavelength_nm <= samples[i - 1].wavelength_nm) wavelengths[i].fail("wavelengths must increase");
+    if (i > 0 && samples[i].wavelength_nm <= samples[i - 1].wavelength_nm)
+      wavelengths[i].fail("wavelengths must increase");
   }
   return ior_from_samples(samples);
 }

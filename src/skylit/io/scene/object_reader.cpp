@@ -2,9 +2,9 @@
 // with one material.
 #include <string>
 
-#include "skylit/io/model/mesh_io.h"
 #include "skylit/geometry/primitives.h"
 #include "skylit/geometry/transform.h"
+#include "skylit/io/model/mesh_io.h"
 #include "skylit/io/scene/scene_parts.h"
 
 namespace skylit {
@@ -85,9 +85,12 @@ std::vector<SceneObject> read_objects(const JsonReader& j, const std::vector<Nam
     SceneObject object;
     object.name = o.optional("name") ? o.required("name").string() : o.path();
     object.material_index = find_material(o.required("material"), materials);
-    if (type == "box") object.mesh = read_box(o);
-    else if (type == "plane") object.mesh = read_plane(o);
-    else object.mesh = read_mesh(o, base_dir);
+    if (type == "box")
+      object.mesh = read_box(o);
+    else if (type == "plane")
+      object.mesh = read_plane(o);
+    else
+      object.mesh = read_mesh(o, base_dir);
     out.push_back(std::move(object));
   }
   return out;

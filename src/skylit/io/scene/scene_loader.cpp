@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "skylit/io/scene/scene_overrides.h"
-#include "skylit/io/scene/scene_parts.h"
 #include "skylit/core/error.h"
 #include "skylit/core/text_file.h"
+#include "skylit/io/scene/scene_overrides.h"
+#include "skylit/io/scene/scene_parts.h"
 
 namespace skylit {
 
@@ -49,19 +49,21 @@ RenderSettings read_render(const JsonReader& j) {
     if (!(ev->is_string() && ev->string() == "auto")) render.exposure_ev = ev->number_in(-30, 40);
   }
   if (auto s = j.optional("samples_per_axis")) render.samples_per_axis = s->integer_in(1, 16);
-  if (auto i = j.optional("integrator")) render.integrator = i->one_of({"bands", "path"}) == "path" ? Integrator::path : Integrator::bands;
+  if (auto i = j.optional("integrator"))
+    render.integrator = i->one_of({"bands", "path"}) == "path" ? Integrator::path : Integrator::bands;
   if (auto s = j.optional("samples_per_pixel")) render.samples_per_pixel = s->integer_in(1, 1 << 20);
   if (auto s = j.optional("seed")) render.seed = static_cast<uint64_t>(s->integer_in(0, 1 << 30));
   return render;
 }
 
-
 }  // namespace
 
-Scene scene_from_json(const nlohmann::json& document, const std::string& source, const std::filesystem::path& base_dir) {
+Scene scene_from_json(const nlohmann::json& document, const std::string& source,
+                      const std::filesystem::path& base_dir) {
   const JsonReader root(document, source);
   if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
-  root.allow_only({"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "objects", "lights", "render"});
+  root.allow_only(
+      {"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "objects", "lights", "render"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
   read_sun_and_atmosphere(root, scene);

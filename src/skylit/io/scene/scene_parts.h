@@ -13,8 +13,7 @@ namespace skylit {
 // load_scene (scene_loader.h) from a parsed document; `base_dir` resolves mesh paths,
 // `source` names the document in messages. Here rather than in scene_loader.h because
 // its nlohmann::json parameter must not reach the installed headers.
-Scene scene_from_json(const nlohmann::json& document, const std::string& source,
-                      const std::filesystem::path& base_dir);
+Scene scene_from_json(const nlohmann::json& document, const std::string& source, const std::filesystem::path& base_dir);
 
 // `sun`, or `site` and `time`, and `atmosphere`, from the scene's top level.
 void read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
