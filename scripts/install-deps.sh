@@ -1,19 +1,20 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages skylit needs to build and test, if any is missing.
 # As root it runs apt-get; otherwise it prints the exact command to run and stops.
-# With --clang it also installs Clang 14 with its sanitizer runtimes and libFuzzer
-# (libclang-rt-14-dev, only recommended by clang-14), for scripts/test-sanitizers.sh
-# and scripts/fuzz.sh.
+# With --clang it also installs the checking tools CI runs: Clang 14 with its sanitizer
+# runtimes and libFuzzer (libclang-rt-14-dev, only recommended by clang-14), for
+# scripts/test-sanitizers.sh and scripts/fuzz.sh, and clang-format and clang-tidy for
+# scripts/check-format.sh and scripts/tidy.sh.
 set -euo pipefail
 
 packages=(
-  g++ cmake make pkg-config clang-tidy
+  g++ cmake make pkg-config
   libembree-dev libtbb-dev libopenexr-dev libpng-dev
   nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev libcli11-dev
   libgtest-dev libbenchmark-dev
 )
 if [ "${1:-}" = "--clang" ]; then
-  packages+=(clang-14 libclang-rt-14-dev)
+  packages+=(clang-14 libclang-rt-14-dev clang-format clang-tidy)
 fi
 
 missing=()

@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 build_dir=${1:-build}
 jobs=${JOBS:-2}
 
-command -v clang-tidy >/dev/null || { echo "clang-tidy is missing (scripts/install-deps.sh)" >&2; exit 1; }
+scripts/install-deps.sh --clang
 if [ ! -f "$build_dir/compile_commands.json" ]; then
   cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >/dev/null
 fi

@@ -16,10 +16,11 @@ class FunctionRef;
 template <typename R, typename... Args>
 class FunctionRef<R(Args...)> {
  public:
-  template <typename F>
-  requires(!std::is_same_v<std::remove_cvref_t<F>, FunctionRef> && std::is_invocable_r_v<R, F&, Args...>)
-      FunctionRef(F&& f)
-  noexcept {  // NOLINT(google-explicit-constructor): it stands for the callable
+  // The constraint keeps copies and moves of a FunctionRef away from this constructor
+  // (written with enable_if, which clang-format 14 and clang-tidy 14 read, unlike requires).
+  template <typename F, typename = std::enable_if_t<!std::is_same_v<std::remove_cvref_t<F>, FunctionRef> &&
+                                                    std::is_invocable_r_v<R, F&, Args...>>>
+  FunctionRef(F&& f) noexcept {  // NOLINT(google-explicit-constructor): it stands for the callable
     using Callable = std::remove_reference_t<F>;
     // A const callable is kept as const: the union's member matches its constness.
     if constexpr (std::is_const_v<Callable>) {

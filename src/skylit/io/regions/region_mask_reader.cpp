@@ -69,6 +69,7 @@ std::vector<ImageRegion> read_region_mask(const std::filesystem::path& path, int
   }
   if (pixels_by_colour.empty()) fail(path, "every pixel is black or transparent: no region");
   std::vector<ImageRegion> regions;
+  regions.reserve(pixels_by_colour.size());
   for (auto& [rgb, pixels] : pixels_by_colour) regions.push_back({hex_colour(rgb), std::move(pixels)});
   return regions;
 }
