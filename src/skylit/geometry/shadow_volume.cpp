@@ -18,23 +18,6 @@ constexpr double kRelativeTolerance = 1e-9;
 
 }  // namespace
 
-bool clip_to_volume(const ShadowVolume& volume, const Vec3& origin, const Vec3& direction, double& lo, double& hi) {
-  for (int i = 0; i < 4; ++i) {
-    const HalfSpace& f = volume.faces[i];
-    const double a = dot(f.normal, origin) - f.offset;
-    const double b = dot(f.normal, direction);
-    if (b > 0) {
-      lo = std::max(lo, -a / b);
-    } else if (b < 0) {
-      hi = std::min(hi, -a / b);
-      if (!(lo < hi)) return false;
-    } else if (a < 0 || (i == 3 && a == 0)) {
-      return false;  // parallel to the face and outside (the cap open, the sides closed)
-    }
-  }
-  return lo < hi;
-}
-
 void lit_intervals_from_shadows(const Ray& ray, double t_min, double t_max, double scale, bool no_volumes,
                                 FunctionRef<void(const Vec3&, const Vec3&, std::vector<Interval>&)> collect_shadows,
                                 std::vector<Interval>& out) {

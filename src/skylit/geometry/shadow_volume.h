@@ -9,6 +9,8 @@
 // shade) and gives the same set. docs/geometry.md, "Shadow volumes".
 #pragma once
 
+#include <algorithm>
+
 #include <array>
 #include <vector>
 
@@ -39,7 +41,24 @@ struct ShadowVolume {
 // The sides are closed, so a ray lying in a side shared by two volumes is in both; the
 // cap is open, so a ray running along a lit surface (a view ray grazing the ground)
 // stays lit.
-bool clip_to_volume(const ShadowVolume& volume, const Vec3& origin, const Vec3& direction, double& lo, double& hi);
+// Inline: it runs once per volume per query, the innermost loop of beams and lamp glow.
+inline bool clip_to_volume(const ShadowVolume& volume, const Vec3& origin, const Vec3& direction, double& lo,
+                           double& hi) {
+  for (int i = 0; i < 4; ++i) {
+    const HalfSpace& f = volume.faces[i];
+    const double a = dot(f.normal, origin) - f.offset;
+    const double b = dot(f.normal, direction);
+    if (b > 0) {
+      lo = std::max(lo, -a / b);
+    } else if (b < 0) {
+      hi = std::min(hi, -a / b);
+      if (!(lo < hi)) return false;
+    } else if (a < 0 || (i == 3 && a == 0)) {
+      return false;  // parallel to the face and outside (the cap open, the sides closed)
+    }
+  }
+  return lo < hi;
+}
 
 // The lit parts of ray.origin + t ray.direction, t in [t_min, t_max], into `out`
 // (cleared first): collect_shadows(o, d, out) appends the shadow intervals of the volumes
