@@ -6,6 +6,7 @@
 #include "fuzz_support.h"
 #include "skylit/io/scene/json_reader.h"
 #include "skylit/io/scene/scene_loader.h"
+#include "skylit/io/scene/scene_parts.h"
 #include "skylit/io/scene/scene_overrides.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

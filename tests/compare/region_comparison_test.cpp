@@ -13,12 +13,7 @@
 namespace skylit {
 namespace {
 
-// A 1-row image of D65 greys at the given luminances (cd/m²).
-XyzImage row_of_greys(const std::vector<double>& luminances) {
-  std::vector<Rgb> colours;
-  for (double l : luminances) colours.push_back({l, l, l});
-  return test::image_from_srgb(colours);
-}
+using test::row_of_greys;
 
 TEST(RegionComparison, MeansRatioAndStandardErrorsByHand) {
   const XyzImage a = row_of_greys({10, 10, 10, 10});

@@ -15,11 +15,7 @@
 namespace skylit {
 namespace {
 
-XyzImage row_of_greys(const std::vector<double>& luminances) {
-  std::vector<Rgb> colours;
-  for (double l : luminances) colours.push_back({l, l, l});
-  return test::image_from_srgb(colours);
-}
+using test::row_of_greys;
 
 TEST(CoolWarm, EndsAndMiddleAreMorelandsTable) {
   EXPECT_EQ(cool_warm(0.0), kCoolWarmBlue);

@@ -59,6 +59,13 @@ inline XyzImage image_from_srgb(const std::vector<Rgb>& colours) {
   return image;
 }
 
+// A 1-row image of D65 greys at the given luminances (cd/m²).
+inline XyzImage row_of_greys(const std::vector<double>& luminances) {
+  std::vector<Rgb> colours;
+  for (double l : luminances) colours.push_back({l, l, l});
+  return image_from_srgb(colours);
+}
+
 // A uniform image of D65 grey (x, y = 0.3127, 0.3290) at `luminance` cd/m².
 inline XyzImage grey_image(int width, int height, double luminance) {
   XyzImage image(width, height);
