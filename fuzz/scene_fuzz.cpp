@@ -6,8 +6,8 @@
 #include "fuzz_support.h"
 #include "skylit/io/scene/json_reader.h"
 #include "skylit/io/scene/scene_loader.h"
-#include "skylit/io/scene/scene_parts.h"
 #include "skylit/io/scene/scene_overrides.h"
+#include "skylit/io/scene/scene_parts.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view input = skylit::fuzz::text_of(data, size);
