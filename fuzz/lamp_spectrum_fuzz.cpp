@@ -4,6 +4,7 @@
 #include "fuzz_support.h"
 #include "skylit/io/scene/json_reader.h"
 #include "skylit/io/scene/scene_loader.h"
+#include "skylit/io/scene/scene_parts.h"
 
 namespace {
 const char* kScene = R"({
