@@ -56,6 +56,14 @@ TEST(SceneLoader, SyntaxErrorNamesFileLineAndColumn) {
   EXPECT_NE(msg.find("scene.json:4:5: invalid JSON"), std::string::npos) << msg;
 }
 
+TEST(SceneLoader, OverrideWithBytesThatAreNotUtf8IsAnInputError) {
+  // A --set value that is not JSON becomes a string as given; one that is not UTF-8
+  // either, where a number array belongs, used to escape as nlohmann's type_error
+  // (exit 1) when the message quoted it (scene fuzz target).
+  const std::string msg = load_error(testing::small_scene_json(), {"objects.1.center=a\xEB\xFF"});
+  EXPECT_NE(msg.find("objects[1].center"), std::string::npos) << msg;
+}
+
 TEST(SceneLoader, UnknownKeyIsNamedWithItsPath) {
   const std::string msg = load_error(replace(testing::small_scene_json(), "\"vertical_fov_deg\"", "\"fov\""));
   EXPECT_NE(msg.find("scene.json: camera.fov: unknown key"), std::string::npos) << msg;

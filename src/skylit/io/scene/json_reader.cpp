@@ -134,7 +134,9 @@ Vec3 JsonReader::vec3() const {
 }
 
 std::string describe_json_value(const nlohmann::json& value) {
-  std::string text = value.dump();
+  // A string set by --set can hold bytes that are not UTF-8: shown replaced (U+FFFD),
+  // not thrown as nlohmann's type_error (found by the scene fuzz target).
+  std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   if (text.size() > 40) text = text.substr(0, 37) + "...";
   return text;
 }
