@@ -141,26 +141,48 @@ std::string describe_json_value(const nlohmann::json& value) {
   return text;
 }
 
+namespace {
+
+// "<line>:<column>" of a byte offset in a text (both 1-based).
+std::string line_and_column(const std::string& text, size_t offset) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < std::min(offset, text.size()); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// nlohmann's description without its "[json.exception...] ...: " prefix.
+std::string description_of(const nlohmann::json::exception& e) {
+  std::string what = e.what();
+  const size_t detail = what.find(": ");
+  return detail != std::string::npos ? what.substr(detail + 2) : what;
+}
+
+}  // namespace
+
 nlohmann::json parse_json_text(const std::string& text, const std::string& source) {
   try {
     return nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is the 1-based offset of the character that made the text invalid.
-    const size_t offset = e.byte == 0 ? 0 : std::min<size_t>(e.byte - 1, text.size());
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i < offset; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
-    // Keep nlohmann's description but drop its "[json.exception...] parse error at ...: " prefix.
-    std::string what = e.what();
-    const size_t detail = what.find(": ");
-    if (detail != std::string::npos) what = what.substr(detail + 2);
-    throw InputError(source + ":" + std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " + what);
+    const size_t offset = e.byte == 0 ? 0 : e.byte - 1;
+    throw InputError(source + ":" + line_and_column(text, offset) + ": invalid JSON: " + description_of(e));
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number too large for a double (1e400): nlohmann names the token but not where
+    // it is; the place is its first occurrence in the text.
+    std::string what = description_of(e);
+    const size_t open = what.find('\''), close = what.rfind('\'');
+    const std::string token = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const size_t at = token.empty() ? std::string::npos : text.find(token);
+    const std::string place = at == std::string::npos ? "" : ":" + line_and_column(text, at);
+    throw InputError(source + place + ": invalid JSON: a number too large for a double (" +
+                     describe_json_value(nlohmann::json(token.substr(0, 30))) + ")");
   }
 }
 
