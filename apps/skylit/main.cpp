@@ -13,7 +13,12 @@ int main(int argc, char** argv) {
       "skylit: spectral renderer of outdoor scenes under real atmospheric conditions.\n"
       "Images hold absolute luminance (cd/m²). Units: metres, degrees, nanometres."};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "skylit 0.1.0");
+  app.set_version_flag("--version", "skylit " SKYLIT_VERSION);
+  // One line, as every other user mistake gets (issue 19, item 15); set before the
+  // subcommands are added, which take it over.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "skylit: " + std::string(e.what()) + " (see skylit --help)\n";
+  });
   const std::vector<skylit::cli::CommandRunner> commands = {
       skylit::cli::add_render_command(app), skylit::cli::add_sun_command(app),
       skylit::cli::add_sky_command(app),    skylit::cli::add_spectrum_command(app),

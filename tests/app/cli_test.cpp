@@ -14,6 +14,17 @@ using testing::quoted;
 using testing::run_skylit;
 using testing::TempDir;
 
+TEST(Cli, CommandLineMistakesAreOneLineWithExitStatus2) {
+  // CLI11 used to add a second line ("Run with --help for more information.").
+  for (const std::string arguments : {"render", "nonsense", "sun --lat abc", "render --threads -3 x.json -o a.png"}) {
+    const auto r = run_skylit(arguments);
+    EXPECT_EQ(r.exit_status, 2) << arguments;
+    ASSERT_FALSE(r.output.empty()) << arguments;
+    EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << arguments << ": " << r.output;
+    EXPECT_EQ(r.output.rfind("skylit: ", 0), 0u) << r.output;
+  }
+}
+
 TEST(Cli, RendersEveryFormat) {
   TempDir dir;
   const auto scene = dir.write("scene.json", testing::small_scene_json());
