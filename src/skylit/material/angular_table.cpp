@@ -8,12 +8,6 @@ namespace skylit {
 
 namespace {
 
-double bin_mean(const Spectrum& s) {
-  double sum = 0;
-  for (int i = 0; i < Spectrum::size(); ++i) sum += s[i];
-  return sum / Spectrum::size();
-}
-
 // The interval and the weight of its upper node for cos θ.
 std::pair<int, double> locate(double cos_theta) {
   const double x = std::clamp(cos_theta, 0.0, 1.0) * AngularTable::kIntervals;
@@ -27,7 +21,7 @@ AngularTable::AngularTable(const std::function<Spectrum(double)>& f) {
   nodes_.reserve(kIntervals + 1);
   for (int i = 0; i <= kIntervals; ++i) {
     nodes_.push_back(f(static_cast<double>(i) / kIntervals));
-    means_.push_back(bin_mean(nodes_.back()));
+    means_.push_back(nodes_.back().mean_value());
   }
 }
 

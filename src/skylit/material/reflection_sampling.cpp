@@ -10,12 +10,6 @@ namespace skylit {
 
 namespace {
 
-double mean(const Spectrum& s) {
-  double sum = 0;
-  for (int k = 0; k < kSpectralBins; ++k) sum += s[k];
-  return sum / kSpectralBins;
-}
-
 // The glossy lobe's mean Fresnel reflectance at a cosine: about its directional albedo
 // where the lobe's half vectors lie near the normal.
 double glossy_fresnel_mean(const Material& material, double cos_theta) {
@@ -36,8 +30,8 @@ LobeChoice lobe_choice(const Material& material, const Vec3& n, const Vec3& to_v
   const double cos_view = dot(n, to_viewer);
   LobeChoice c;
   if (cos_view <= 0) return c;
-  c.diffuse = mean(diffuse_albedo(material, cos_view).spectrum());
-  if (const std::optional<Reflectance> m = mirror_reflectance(material, n, to_viewer)) c.mirror = mean(m->spectrum());
+  c.diffuse = diffuse_albedo(material, cos_view).mean_value();
+  if (const std::optional<Reflectance> m = mirror_reflectance(material, n, to_viewer)) c.mirror = m->mean_value();
   if (has_specular(material)) c.glossy = std::max(1e-3, glossy_fresnel_mean(material, cos_view));
   const double total = c.diffuse + c.glossy + c.mirror;
   if (total <= 0) return {};

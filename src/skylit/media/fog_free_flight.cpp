@@ -32,9 +32,7 @@ FogFlight sample_fog_flight(const FogLayer& fog, const Ray& ray, double t_end, d
   if (!(target_column < total_column)) {
     // Through the fog: each bin's chance of getting through over the bins' mean chance.
     const Spectrum through = fog.transmittance(total_column);
-    double mean = 0;
-    for (int k = 0; k < kSpectralBins; ++k) mean += through[k];
-    mean /= kSpectralBins;
+    const double mean = through.mean_value();
     for (int k = 0; k < kSpectralBins; ++k) flight.weight[k] = mean > 0 ? static_cast<float>(through[k] / mean) : 0.0f;
     return flight;
   }

@@ -17,12 +17,6 @@ namespace {
 
 double power_heuristic(double a, double b) { return a * a / (a * a + b * b); }
 
-double mean(const Spectrum& s) {
-  double sum = 0;
-  for (int k = 0; k < kSpectralBins; ++k) sum += s[k];
-  return sum / kSpectralBins;
-}
-
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Shadow rays toward the sky end here: above any cloud (as in clouds/clouds_in_sky.cpp).
 constexpr double kSkyDistanceM = 1e7;
@@ -188,7 +182,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
       scatter_pdf = next.pdf;
       ray = Ray{at, next.direction};
       if (event >= 3) {
-        const double survive = std::min(0.95, mean(throughput));
+        const double survive = std::min(0.95, throughput.mean_value());
         if (random.uniform() >= survive) break;
         throughput *= static_cast<float>(1.0 / survive);
       }
@@ -229,7 +223,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     // Russian roulette from the fourth event: a path goes on with a chance that follows
     // its throughput, and carries the inverse of that chance.
     if (event >= 3) {
-      const double survive = std::min(0.95, mean(throughput));
+      const double survive = std::min(0.95, throughput.mean_value());
       if (random.uniform() >= survive) break;
       throughput *= static_cast<float>(1.0 / survive);
     }

@@ -50,9 +50,7 @@ Radiance SceneLamps::reflected(const SurfacePoint& point, const Material& materi
   };
   const bool has_glossy = has_specular(material);
   const Reflectance albedo = diffuse_albedo(material, dot(point.normal, to_viewer));
-  double mean_albedo = 0;
-  for (int b = 0; b < kSpectralBins; ++b) mean_albedo += albedo[b];
-  mean_albedo /= kSpectralBins;
+  const double mean_albedo = albedo.mean_value();
   thread_local std::vector<Candidate> candidates;
   candidates.clear();
   for (size_t i = 0; i < lamps_.size(); ++i) {

@@ -11,12 +11,6 @@ namespace {
 // so that the estimator stays unbiased wherever the table underrates the sky.
 constexpr double kFloorShare = 0.02;
 
-double mean_over_bins(const Spectrum& s) {
-  double sum = 0;
-  for (int k = 0; k < kSpectralBins; ++k) sum += s[k];
-  return sum / kSpectralBins;
-}
-
 Vec3 direction_of(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
@@ -44,7 +38,7 @@ SkySampler::SkySampler(const RadianceOf& radiance_of)
       for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b)
           radiance +=
-              mean_over_bins(radiance_of(direction_of((r + 0.25 + 0.5 * a) * dtheta, (c + 0.25 + 0.5 * b) * dphi))) / 4;
+              radiance_of(direction_of((r + 0.25 + 0.5 * a) * dtheta, (c + 0.25 + 0.5 * b) * dphi)).mean_value() / 4;
       const double solid_angle = (std::cos(r * dtheta) - std::cos((r + 1) * dtheta)) * dphi;
       weight[static_cast<size_t>(r * kColumns + c)] = std::max(0.0, radiance) * solid_angle;
       total += weight[static_cast<size_t>(r * kColumns + c)];

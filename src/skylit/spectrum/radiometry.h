@@ -28,6 +28,7 @@ class SpectralQuantity {
   constexpr const Spectrum& spectrum() const { return values_; }
   constexpr float operator[](int bin) const { return values_[bin]; }
   float max_value() const { return values_.max_value(); }
+  double mean_value() const { return values_.mean_value(); }
   bool is_black() const { return values_.is_black(); }
 
   SpectralQuantity& operator+=(const SpectralQuantity& o) {

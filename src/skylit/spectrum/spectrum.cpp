@@ -20,6 +20,12 @@ Spectrum Spectrum::from_bins(const std::vector<double>& bin_values) {
   return s;
 }
 
+double Spectrum::mean_value() const {
+  double sum = 0;
+  for (float v : values_) sum += v;
+  return sum / kSpectralBins;
+}
+
 float Spectrum::max_value() const {
   float m = values_[0];
   for (float v : values_) m = v > m ? v : m;

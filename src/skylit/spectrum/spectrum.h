@@ -62,6 +62,8 @@ class Spectrum {
   }
 
   float max_value() const;
+  // The mean over the bins (in double, bin by bin in order).
+  double mean_value() const;
   bool is_black() const { return max_value() <= 0.0f; }
 
  private:
