@@ -16,14 +16,7 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {
   const std::optional<Hit> hit = scene_.tracer().intersect(ray);
   if (!hit) return {};
-  return {hit->mesh_id, surface_point(ray, *hit)};
-}
-
-SurfacePoint BandsIntegrator::surface_point(const Ray& ray, const Hit& hit) const {
-  // Two-sided surfaces: use the side facing the ray's origin.
-  Vec3 normal = hit.geometric_normal;
-  if (dot(normal, ray.direction) > 0) normal = -normal;
-  return {ray.origin + hit.t * ray.direction, normal, hit.t, scene_.material_of_mesh(hit.mesh_id)};
+  return {hit->mesh_id, scene_.surface_point(ray, *hit)};
 }
 
 ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
@@ -60,7 +53,7 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
 }
 
 Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) const {
-  const SurfacePoint point = surface_point(ray, hit);
+  const SurfacePoint point = scene_.surface_point(ray, hit);
   const Irradiance irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
                                 sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   return lambertian_radiance(diffuse_albedo(material_of(point), -dot(point.normal, ray.direction)), irradiance);

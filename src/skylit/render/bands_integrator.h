@@ -80,8 +80,6 @@ class BandsIntegrator {
 
  private:
   const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
-  // The surface point a ray meets, facing the ray's origin.
-  SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
   ViewPath view_path(const Ray& ray, double distance) const;
   // The sun's direct normal irradiance at a surface point if it reaches it (0 in
   // shadow or behind the surface).

@@ -41,12 +41,6 @@ Radiance PathIntegrator::environment(const Vec3& direction) const {
   return scene_.sky().sky_radiance_near_ground(direction);
 }
 
-SurfacePoint PathIntegrator::surface_point(const Ray& ray, const Hit& hit) const {
-  Vec3 normal = hit.geometric_normal;
-  if (dot(normal, ray.direction) > 0) normal = -normal;
-  return {ray.origin + hit.t * ray.direction, normal, hit.t, scene_.material_of_mesh(hit.mesh_id)};
-}
-
 Transmittance PathIntegrator::media_transmittance(const Vec3& point, const Vec3& direction, double distance,
                                                   CounterRandom& random) const {
   Transmittance t(1.0f);
@@ -206,7 +200,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
       radiance += throughput * arriving.spectrum();
       break;
     }
-    const SurfacePoint point = surface_point(ray, *hit);
+    const SurfacePoint point = scene_.surface_point(ray, *hit);
     if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
     const Vec3 to_viewer = -ray.direction;
     const Material& material = scene_.material(point.material);

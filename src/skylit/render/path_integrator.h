@@ -79,7 +79,6 @@ class PathIntegrator {
   const PhaseSampler& phase_sampler(ScattererKind kind) const {
     return kind == ScattererKind::fog ? *fog_phase_ : *cloud_phase_;
   }
-  SurfacePoint surface_point(const Ray& ray, const Hit& hit) const;
 
   // The radiance arriving from a direction: the sky's (as surfaces near the ground
   // receive it), or the test environment's.

@@ -12,6 +12,7 @@
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/render/fog_medium.h"
 #include "skylit/render/scene_lamps.h"
+#include "skylit/render/surface_point.h"
 #include "skylit/scene/scene.h"
 
 namespace skylit {
@@ -30,6 +31,13 @@ class PreparedScene {
   const CloudsInSky* clouds() const { return clouds_.get(); }  // null without clouds
   const SceneLamps* lamps() const { return lamps_.get(); }     // null without lights
 
+  // The surface point a ray meets, its normal facing the ray's origin (surfaces are
+  // two-sided), with the material of the mesh it belongs to.
+  SurfacePoint surface_point(const Ray& ray, const Hit& hit) const {
+    Vec3 normal = hit.geometric_normal;
+    if (dot(normal, ray.direction) > 0) normal = -normal;
+    return {ray.origin + hit.t * ray.direction, normal, hit.t, material_of_mesh(hit.mesh_id)};
+  }
   // The material of a mesh hit by a ray (the tracer's mesh id).
   uint32_t material_of_mesh(uint32_t mesh) const { return material_of_mesh_[mesh]; }
   const Material& material(uint32_t index) const { return scene_.materials[index].material; }
