@@ -66,13 +66,23 @@ CosineWeightedBrdf reflection_cos(const Material& material, const Vec3& n, const
   return {out};
 }
 
-double reflection_pdf(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer) {
+namespace {
+
+// The density of to_light through the non-mirror lobes, for the lobes' chances `c`
+// (found once per sample, used for the drawing and the density alike).
+double mixture_pdf(const LobeChoice& c, const Material& material, const Vec3& n, const Vec3& to_light,
+                   const Vec3& to_viewer) {
   const double cos_light = dot(n, to_light);
   if (cos_light <= 0) return 0;
-  const LobeChoice c = lobe_choice(material, n, to_viewer);
   double pdf = c.diffuse * cos_light / kPi;
   if (c.glossy > 0) pdf += c.glossy * beckmann_pdf(n, to_light, to_viewer, specular_roughness(material));
   return pdf;
+}
+
+}  // namespace
+
+double reflection_pdf(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer) {
+  return mixture_pdf(lobe_choice(material, n, to_viewer), material, n, to_light, to_viewer);
 }
 
 std::optional<ReflectionSample> sample_reflection(const Material& material, const Vec3& n, const Vec3& to_viewer,
@@ -101,7 +111,7 @@ std::optional<ReflectionSample> sample_reflection(const Material& material, cons
     to_light = 2 * dot(to_viewer, h) * h - to_viewer;
   }
   to_light = normalize(to_light);
-  const double pdf = reflection_pdf(material, n, to_light, to_viewer);
+  const double pdf = mixture_pdf(c, material, n, to_light, to_viewer);
   if (!(pdf > 0)) return ReflectionSample{to_light, Spectrum(0.0f), 0.0, false};
   return ReflectionSample{
       to_light, reflection_cos(material, n, to_light, to_viewer).per_sr * static_cast<float>(1.0 / pdf), pdf, false};
