@@ -17,6 +17,16 @@ namespace {
 
 double power_heuristic(double a, double b) { return a * a / (a * a + b * b); }
 
+// Russian roulette from the fourth event: a path goes on with a chance that follows its
+// throughput, and then carries the inverse of that chance (unbiased).
+bool survives_roulette(int event, Spectrum& throughput, CounterRandom& random) {
+  if (event < 3) return true;
+  const double survive = std::min(0.95, throughput.mean_value());
+  if (random.uniform() >= survive) return false;
+  throughput *= static_cast<float>(1.0 / survive);
+  return true;
+}
+
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Shadow rays toward the sky end here: above any cloud (as in clouds/clouds_in_sky.cpp).
 constexpr double kSkyDistanceM = 1e7;
@@ -148,21 +158,19 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     if (clouds)
       cloud = sample_cloud_collision(*clouds, ray.origin, ray.direction, std::min(t_hit, kSkyDistanceM), random);
     std::optional<double> medium_event;
+    if (cloud.collided) medium_event = cloud.distance;
     ScattererKind medium_kind = ScattererKind::cloud;
-    if (cloud.collided) {
-      throughput *= static_cast<float>(cloud.albedo);
-      medium_event = cloud.distance;
-    }
     if (fog) {
       const double u_bin = random.uniform(), u_depth = random.uniform();
       const FogFlight flight = sample_fog_flight(*fog, ray, medium_event ? *medium_event : t_hit, u_bin, u_depth);
       throughput *= flight.weight;
       if (flight.scattered) {
-        if (cloud.collided) throughput *= static_cast<float>(1.0 / cloud.albedo);  // the cloud did not scatter
         medium_event = flight.distance;
         medium_kind = ScattererKind::fog;
       }
     }
+    // The cloud's albedo only where the cloud is what scattered.
+    if (medium_event && medium_kind == ScattererKind::cloud) throughput *= static_cast<float>(cloud.albedo);
     if (medium_event) {
       const Vec3 at = ray.origin + *medium_event * ray.direction;
       if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, *medium_event);
@@ -175,11 +183,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
       delta = false;
       scatter_pdf = next.pdf;
       ray = Ray{at, next.direction};
-      if (event >= 3) {
-        const double survive = std::min(0.95, throughput.mean_value());
-        if (random.uniform() >= survive) break;
-        throughput *= static_cast<float>(1.0 / survive);
-      }
+      if (!survives_roulette(event, throughput, random)) break;
       continue;
     }
     if (!hit) {
@@ -214,13 +218,7 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     delta = next->mirror;
     scatter_pdf = next->pdf;
     ray = Ray{offset_from_surface(point.position, point.normal), next->to_light};
-    // Russian roulette from the fourth event: a path goes on with a chance that follows
-    // its throughput, and carries the inverse of that chance.
-    if (event >= 3) {
-      const double survive = std::min(0.95, throughput.mean_value());
-      if (random.uniform() >= survive) break;
-      throughput *= static_cast<float>(1.0 / survive);
-    }
+    if (!survives_roulette(event, throughput, random)) break;
   }
   return camera_air.seen_through(Radiance(radiance));
 }
