@@ -30,12 +30,6 @@ struct CompareArguments {
   std::optional<std::string> mask, regions_file, standard_error_a, standard_error_b, ratio_map, json;
 };
 
-void check_output_folder(const std::string& out) {
-  const std::filesystem::path dir = std::filesystem::path(out).parent_path();
-  if (!dir.empty() && !std::filesystem::is_directory(dir))
-    throw InputError(out + ": the folder " + dir.string() + " does not exist");
-}
-
 std::string size_text(const XyzImage& image) {
   return std::to_string(image.width) + "x" + std::to_string(image.height);
 }

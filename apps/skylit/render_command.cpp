@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "progress_bar.h"
 #include "skylit/core/error.h"
+#include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/renderer.h"
@@ -32,9 +33,7 @@ int run_render(const RenderArguments& args) {
   all_outputs.insert(all_outputs.end(), args.standard_error_outputs.begin(), args.standard_error_outputs.end());
   for (const std::string& out : all_outputs) {
     image_format_from_path(out);
-    const std::filesystem::path dir = std::filesystem::path(out).parent_path();
-    if (!dir.empty() && !std::filesystem::is_directory(dir))
-      throw InputError(out + ": the folder " + dir.string() + " does not exist");
+    check_output_folder(out);
   }
   const Scene scene = load_scene(args.scene_file, args.overrides);
   if (!args.standard_error_outputs.empty() && scene.render.integrator != Integrator::path)

@@ -18,6 +18,7 @@
 #include "skylit/core/error.h"
 #include "skylit/figures/contact_sheet.h"
 #include "skylit/figures/sweep.h"
+#include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/renderer.h"
@@ -43,9 +44,7 @@ void check_sheet_path(const std::filesystem::path& sheet) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension != ".png")
     throw InputError("cannot write \"" + sheet.string() + "\": a contact sheet is written as .png");
-  const std::filesystem::path dir = sheet.parent_path();
-  if (!dir.empty() && !std::filesystem::is_directory(dir))
-    throw InputError(sheet.string() + ": the folder " + dir.string() + " does not exist");
+  check_output_folder(sheet);
 }
 
 std::vector<std::string> with_overrides(std::vector<std::string> base, const std::vector<std::string>& more) {

@@ -50,10 +50,15 @@ int write_all(int fd, std::span<const uint8_t> bytes) {
 
 }  // namespace
 
-AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
-  const std::filesystem::path folder = folder_of(target_);
+void check_output_folder(const std::filesystem::path& target) {
+  const std::filesystem::path folder = folder_of(target);
   std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec)) fail(target_, "folder " + quoted(folder) + " does not exist");
+  if (!std::filesystem::is_directory(folder, ec)) fail(target, "folder " + quoted(folder) + " does not exist");
+}
+
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  check_output_folder(target_);
+  const std::filesystem::path folder = folder_of(target_);
   if (target_.filename().empty()) fail(target_, "the path names a folder, not a file");
   // pid and a per-process counter keep concurrent writers (threads or processes) apart.
   static std::atomic<unsigned> counter{0};

@@ -11,6 +11,10 @@
 
 namespace skylit {
 
+// InputError naming the target if its folder does not exist (the check AtomicFile makes
+// when it starts), for checking every output before the work that will fill it.
+void check_output_folder(const std::filesystem::path& target);
+
 class AtomicFile {
  public:
   // Creates the temporary ".<name>.<pid>-<n>.tmp" beside `target`. InputError naming
