@@ -41,23 +41,25 @@ std::vector<Piece> pieces_of(const CloudLayer& layer, const Vec3& o, const Vec3&
 }
 
 // The extinction at p (m⁻¹): the clouds of the piece whose solid holds it.
-double extinction_at(const Piece& piece, const Vec3& p, const Cloud** which, double pick) {
+double extinction_at(const Piece& piece, const Vec3& p) {
   double sum = 0;
   for (const Cloud* c : piece.clouds)
     if (c->contains(p)) sum += c->shape().extinction;
-  if (which) {
-    // The cloud that scattered, chosen in proportion to its share of the extinction.
-    double running = 0;
-    for (const Cloud* c : piece.clouds)
-      if (c->contains(p)) {
-        running += c->shape().extinction;
-        if (pick * sum < running) {
-          *which = c;
-          break;
-        }
-      }
-  }
   return sum;
+}
+
+// Of the clouds holding p, the one that scattered: chosen in proportion to its share
+// of the extinction σ there, by pick uniform in [0, σ).
+const Cloud* scattering_cloud(const Piece& piece, const Vec3& p, double pick) {
+  double running = 0;
+  const Cloud* last = nullptr;
+  for (const Cloud* c : piece.clouds) {
+    if (!c->contains(p)) continue;
+    last = c;
+    running += c->shape().extinction;
+    if (pick < running) return c;
+  }
+  return last;
 }
 
 }  // namespace
@@ -70,9 +72,9 @@ CloudCollision sample_cloud_collision(const CloudLayer& layer, const Vec3& o, co
       t -= std::log1p(-random.uniform()) / piece.majorant;
       if (t >= piece.end) break;
       const Vec3 p = o + t * d;
-      const Cloud* which = nullptr;
-      const double sigma = extinction_at(piece, p, &which, random.uniform());
-      if (random.uniform() * piece.majorant < sigma) return {true, t, which ? which->shape().albedo : 1.0};
+      const double sigma = extinction_at(piece, p);
+      if (random.uniform() * piece.majorant < sigma)
+        return {true, t, scattering_cloud(piece, p, random.uniform() * sigma)->shape().albedo};
     }
   }
   return {};
@@ -86,7 +88,7 @@ double estimate_cloud_transmittance(const CloudLayer& layer, const Vec3& o, cons
     while (transmittance > 0) {
       t -= std::log1p(-random.uniform()) / piece.majorant;
       if (t >= piece.end) break;
-      transmittance *= 1 - extinction_at(piece, o + t * d, nullptr, 0) / piece.majorant;
+      transmittance *= 1 - extinction_at(piece, o + t * d) / piece.majorant;
     }
   }
   return transmittance;
