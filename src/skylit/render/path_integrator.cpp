@@ -18,10 +18,14 @@ namespace {
 double power_heuristic(double a, double b) { return a * a / (a * a + b * b); }
 
 // Russian roulette from the fourth event: a path goes on with a chance that follows its
-// throughput, and then carries the inverse of that chance (unbiased).
+// throughput, and then carries the inverse of that chance (unbiased). While the
+// throughput is 1 or more it goes on for sure: in a non-absorbing cloud the throughput
+// stays 1 over the hundreds of events of diffusion, and any fixed chance below 1 would
+// compound there into rare paths of weight in the thousands (with a cap of 0.95, a slab
+// of optical depth 20 read 25 % low after 256,000 paths).
 bool survives_roulette(int event, Spectrum& throughput, CounterRandom& random) {
   if (event < 3) return true;
-  const double survive = std::min(0.95, throughput.mean_value());
+  const double survive = std::min(1.0, throughput.mean_value());
   if (random.uniform() >= survive) return false;
   throughput *= static_cast<float>(1.0 / survive);
   return true;
