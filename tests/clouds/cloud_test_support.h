@@ -40,7 +40,8 @@ inline CloudLighting flat_light(const Vec3& to_sun) {
   CloudLighting l;
   l.to_sun = normalize(to_sun);
   l.sun = Spectrum(1.5f);
-  l.ambient = default_cloud_ambient(l.sun, l.to_sun);
+  l.sky_from_above = Spectrum(0.3f);
+  l.sky_from_below = Spectrum(0.1f);
   return l;
 }
 

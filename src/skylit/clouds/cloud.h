@@ -30,16 +30,16 @@ class Cloud : public CloudGeometry {
   // the bounding volume if the sun grid is prepared for to_sun, else marched.
   double sun_transmittance(const Vec3& p, const Vec3& to_sun) const;
 
-  // Tabulates t' toward to_sun (SunDepthGrid). Call once per scene / sun direction; not
+  // Tabulates t' toward to_sun and the depth away from it (SunLineDepths). Call once per scene / sun direction; not
   // thread-safe against concurrent scatter() calls. A zero or non-finite direction
   // clears the grid.
   void prepare_sun(const Vec3& to_sun) { sun_depths_.prepare(*this, to_sun); }
   void clear_sun() { sun_depths_.clear(); }
   // Whether scatter() with this (unit or not) sun direction will use the grid.
-  bool sun_prepared_for(const Vec3& to_sun) const { return sun_depths_.prepared_for(to_sun); }
+  bool sun_prepared_for(const Vec3& to_sun) const { return sun_depths_.toward_sun.prepared_for(to_sun); }
   // t' at p toward the prepared sun by trilinear interpolation of the grid (p inside the
   // bounding volume or clamped onto it). Only meaningful when a grid is prepared.
-  double interpolated_sun_depth(const Vec3& p) const { return sun_depths_.depth_at(*this, p); }
+  double interpolated_sun_depth(const Vec3& p) const { return sun_depths_.toward_sun.depth_at(*this, p); }
 
   // In-scattered radiance and transmittance of the segment of the viewing ray o + t·d
   // (d unit, from the viewer), t in [t_min, t_max] (Eq. 16 without I_behind;
@@ -53,7 +53,7 @@ class Cloud : public CloudGeometry {
                     const CloudLighting& light) const;
 
  private:
-  SunDepthGrid sun_depths_;
+  SunLineDepths sun_depths_;
 };
 
 }  // namespace skylit

@@ -1,6 +1,7 @@
-// Light through one cloud (§6, Eq. 16): the droplets' phase function, the ambient
-// radiance standing for multiple scattering, and the integral along a viewing ray.
-// Geometry is cloud_shape.h, the march cloud_march.h, t' toward the sun sun_depth_grid.h.
+// Light through one cloud (§6, Eq. 16): the droplets' phase function, the light
+// scattered once and many times, and the integral along a viewing ray. Geometry is
+// cloud_shape.h, the march cloud_march.h, t' toward the sun sun_depth_grid.h, the slab
+// solution for multiple scattering cloud_two_stream.h.
 //
 // Optics. Droplets (diameters ~ 5–50 µm) are much larger than visible wavelengths:
 // extinction and phase function are taken as wavelength-independent (grey), as the
@@ -12,18 +13,29 @@
 //
 // Light (Eq. 16). Along a viewing ray, the radiance leaving the cloud toward the viewer:
 //
-//   I_c = I_behind e^{−t_total} + ∫ σ (ω F(θ) E_sun e^{−t'(s)} + I_a e^{−(1−g) t'(s)}) e^{−t(s)} ds,
+//   I_c = I_behind e^{−t_total} + ∫ σ ω F(θ) E_sun e^{−t'(s)} e^{−t(s)} ds + (multiple scattering),
 //
 // with E_sun the sun's irradiance at the cloud (Eq. 15, supplied by the caller), t'(s)
-// the optical depth from the point toward the sun through this cloud's 3-D shape, t(s)
-// the optical depth from the point back toward the viewer, and I_a a uniform ambient
-// radiance standing for multiple scattering (iii). Unlike the paper's printed Eq. 16,
-// I_a is attenuated by the similarity-scaled depth e^{−(1−g) t'} (g = cloud_mean_cosine(),
-// 0.879; van de Hulst's similarity relation: in a forward-scattering medium multiply
-// scattered light diffuses with transport coefficient σ(1−g)), not by e^{−t'}: it still
-// fades into the cloud away from the sun's side (so the sunlit side stays brighter with
-// the sun behind the viewer), but thick centres no longer go black. The single-scattered
-// sun keeps e^{−t'} (docs/clouds.md).
+// the optical depth from the point toward the sun through this cloud's 3-D shape and
+// t(s) that from the point back toward the viewer: the sky behind seen through the cloud
+// (i) and the sun scattered once, exactly, with the droplets' phase function (ii).
+//
+// Multiple scattering (iii), two models (CloudLightModel):
+// - two_stream (the default): at each point the delta-Eddington field of a slab
+//   (cloud_two_stream.h). For the sun's light, the slab is the cloud along the sun's line
+//   through the point: the depth t' toward the sun and the depth away from it, taken as
+//   the slant depths of a horizontal slab under the sun (vertical depths μ0·t', a
+//   plane-parallel cloud's exactly), so a point near the sunlit surface lies near the lit
+//   face whichever way that face is turned. For the sky's light (diffuse irradiance on
+//   its top from the sky, on its bottom from the ground), the slab is the cloud's column
+//   at the point. Each field scatters I0 + g'μI1 toward the viewer, reaching it through
+//   the scaled depth e^{−(1−f)t(s)}; the light the forward spike carries past the first
+//   scattering (e^{−(1−f)t'} − e^{−t'}) is scattered once more with a Henyey–Greenstein
+//   phase function of mean cosine g'.
+// - paper: Eq. 16 as printed: a uniform ambient radiance I_a through e^{−t(s)−t'(s)}.
+//   The paper gives no value for I_a; the renderer takes a Lambertian of albedo 0.25
+//   under the sun and the sky at the clouds (default_cloud_ambient). Thick clouds come
+//   out 2–4 times too dark and their centres black (docs/clouds.md).
 #pragma once
 
 #include <limits>
@@ -38,6 +50,9 @@ namespace skylit {
 inline constexpr double kCloudDropletDiameterUm = 20.0;       // for the phase function
 inline constexpr double kDefaultCloudAmbientFraction = 0.25;  // see default_cloud_ambient
 
+// How the light scattered many times inside a cloud is found (see above).
+enum class CloudLightModel { two_stream, paper };
+
 // The cloud phase function F(θ) (sr⁻¹, normalised over the sphere): the droplet fit of
 // media/fog_phase.h at kCloudDropletDiameterUm. cos θ = V·L for the viewing direction V
 // (from the viewer into the cloud) and the direction L toward the sun.
@@ -49,14 +64,16 @@ double cloud_mean_cosine();
 struct CloudLighting {
   Vec3 to_sun{0, 0, 1};  // unit vector toward the sun
   Spectrum sun;          // E_sun at the cloud's altitude (Eq. 15), W m⁻² nm⁻¹, normal to the beam
-  Spectrum ambient;      // I_a, W m⁻² sr⁻¹ nm⁻¹
+  CloudLightModel model = CloudLightModel::two_stream;
+  // two_stream: the diffuse irradiance on a horizontal surface at the clouds facing up
+  // (the sky's) and facing down (the ground's and the air's below), W m⁻² nm⁻¹.
+  Spectrum sky_from_above, sky_from_below;
+  Spectrum ambient;  // paper: I_a, W m⁻² sr⁻¹ nm⁻¹
 };
 
-// A default for I_a: kDefaultCloudAmbientFraction · E_sun · max(sin h, 0) / π for the
-// sun's altitude h — the radiance of a Lambertian surface of albedo 0.25 under the sun,
-// about what a thick cloud's base transmits diffusely (a two-stream estimate for optical
-// depth ~20 and g ~0.85 gives 0.2–0.3). The renderer may add a share of the sky's mean
-// radiance for when the sun is down.
+// The paper model's I_a: kDefaultCloudAmbientFraction · E_sun · max(sin h, 0) / π for the
+// sun's altitude h — the radiance of a Lambertian surface of albedo 0.25 under the sun.
+// The renderer adds the same share of the sky's irradiance for when the sun is down.
 Spectrum default_cloud_ambient(const Spectrum& sun_at_cloud, const Vec3& to_sun);
 
 // What a segment of a ray through a cloud does to light: radiance leaving = behind ·
@@ -71,10 +88,10 @@ struct CloudScattering {
 
 // In-scattered radiance and transmittance of the segment of the viewing ray o + t·d
 // (d unit, from the viewer), t in [t_min, t_max], through one cloud (Eq. 16 without
-// I_behind). With the sun below the horizon or E_sun black, only I_a remains (still
-// through e^{−(1−g)t'}). t' comes from sun_depths if it is prepared for light.to_sun,
-// else is marched.
-CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunDepthGrid& sun_depths, const Vec3& o,
+// I_behind). With the sun below the horizon or E_sun black, only the sky's light (or
+// I_a) remains. The depths along the sun's line come from sun_depths if they are
+// prepared for light.to_sun, else are marched.
+CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunLineDepths& sun_depths, const Vec3& o,
                                       const Vec3& d, double t_min, double t_max, const CloudLighting& light);
 
 }  // namespace skylit

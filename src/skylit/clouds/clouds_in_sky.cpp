@@ -27,18 +27,23 @@ double mean_altitude(const std::vector<Cloud>& clouds) {
 }  // namespace
 
 CloudsInSky::CloudsInSky(const std::vector<CloudShape>& listed, const std::optional<CloudLayerSettings>& generated,
-                         const SkyModel& sky, const Vec3& ground_point)
+                         const SkyModel& sky, const Vec3& ground_point, CloudLightModel model)
     : layer_(all_clouds(listed, generated)), to_sun_(sky.to_sun()) {
   const double altitude = mean_altitude(layer_.clouds());
   layer_.prepare_sun(to_sun_);
-  // Eq. 15: the sun at the clouds' altitude; the ambient light of multiple scattering
-  // as the radiance of a Lambertian of albedo 0.25 under the sun and the sky there
-  // (docs/clouds.md), so that clouds stay lit by the sky after sunset.
+  // Eq. 15: the sun at the clouds' altitude. The sky's light from above and the ground's
+  // from below are the irradiances the scene's surfaces get (as the path-traced reference
+  // lights the clouds), so that clouds stay lit by the sky after sunset.
   lighting_.to_sun = to_sun_;
   lighting_.sun = sky.direct_sun(altitude).spectrum();
-  lighting_.ambient =
-      default_cloud_ambient(lighting_.sun, to_sun_) +
-      (sky.sky_irradiance({0, 0, 1}) * static_cast<float>(kDefaultCloudAmbientFraction / kPi)).spectrum();
+  lighting_.model = model;
+  const Irradiance from_above = sky.sky_irradiance({0, 0, 1});
+  lighting_.sky_from_above = from_above.spectrum();
+  lighting_.sky_from_below = sky.sky_irradiance({0, 0, -1}).spectrum();
+  // The paper's model: a Lambertian of albedo 0.25 under the sun and the sky.
+  if (model == CloudLightModel::paper)
+    lighting_.ambient = default_cloud_ambient(lighting_.sun, to_sun_) +
+                        (from_above * static_cast<float>(kDefaultCloudAmbientFraction / kPi)).spectrum();
   sky_share_ = measure_sky_share(sky, ground_point);
 }
 

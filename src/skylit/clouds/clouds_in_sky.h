@@ -1,5 +1,5 @@
 // The scene's clouds under its sky: how they are lit (Eq. 15: the sun at the clouds'
-// altitude; the ambient standing for multiple scattering inside them), what they do
+// altitude; the sky's and the ground's diffuse light there), what they do
 // to a view ray (Eq. 16, as a stretch of medium), the shadows they cast, and how much
 // of the sky light they let through to the ground. Built once per scene from the
 // atmosphere's sky model; read by the renderer from any thread.
@@ -17,9 +17,10 @@ namespace skylit {
 class CloudsInSky {
  public:
   // The clouds given one by one and those of a generated layer, if any; `ground_point`
-  // is where the share of sky light under the clouds is measured (below the camera).
+  // is where the share of sky light under the clouds is measured (below the camera);
+  // `model` how their multiple scattering is found (cloud_scattering.h).
   CloudsInSky(const std::vector<CloudShape>& listed, const std::optional<CloudLayerSettings>& generated,
-              const SkyModel& sky, const Vec3& ground_point);
+              const SkyModel& sky, const Vec3& ground_point, CloudLightModel model = CloudLightModel::two_stream);
 
   // What the clouds do along a view ray from its origin up to `distance` (may be
   // infinite), and where the ray enters the first cloud (infinite if none).

@@ -39,4 +39,19 @@ class SunDepthGrid {
   Vec3 to_sun_{0, 0, 0};  // unit
 };
 
+// The optical depth on both sides of a point along the sun's line: toward the sun (t',
+// Eq. 16) and away from it (together, the depth of the slab the two-stream light of
+// cloud_scattering.h puts the point in).
+struct SunLineDepths {
+  SunDepthGrid toward_sun, away_from_sun;
+  void prepare(const CloudGeometry& cloud, const Vec3& to_sun) {
+    toward_sun.prepare(cloud, to_sun);
+    away_from_sun.prepare(cloud, -to_sun);
+  }
+  void clear() {
+    toward_sun.clear();
+    away_from_sun.clear();
+  }
+};
+
 }  // namespace skylit

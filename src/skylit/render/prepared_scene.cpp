@@ -14,7 +14,8 @@ PreparedScene::PreparedScene(const Scene& scene)
   tracer_.commit();
   if (!scene.clouds.empty() || scene.cloud_layer) {
     const Vec3 below_camera{scene.camera.position.x, scene.camera.position.y, 0.0};
-    clouds_ = std::make_unique<CloudsInSky>(scene.clouds, scene.cloud_layer, sky_, below_camera);
+    clouds_ =
+        std::make_unique<CloudsInSky>(scene.clouds, scene.cloud_layer, sky_, below_camera, scene.render.cloud_light);
   }
   // The scene's meshes, for the fog's and the lamps' shadow volumes.
   std::vector<const TriangleMesh*> meshes;

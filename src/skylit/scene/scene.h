@@ -45,6 +45,9 @@ struct RenderSettings {
   Integrator integrator = Integrator::bands;
   int samples_per_pixel = 64;  // path: paths per pixel, at random places in it
   uint64_t seed = 1;           // path: which random numbers (the same seed, the same bytes)
+  // bands: the clouds' multiple scattering by the two-stream slab, or the paper's Eq. 16
+  // as printed (clouds/cloud_scattering.h)
+  CloudLightModel cloud_light = CloudLightModel::two_stream;
 };
 
 struct SceneObject {

@@ -40,7 +40,8 @@ Camera read_camera(const JsonReader& j) {
 }
 
 RenderSettings read_render(const JsonReader& j) {
-  j.allow_only({"width", "height", "exposure_ev", "samples_per_axis", "integrator", "samples_per_pixel", "seed"});
+  j.allow_only(
+      {"width", "height", "exposure_ev", "samples_per_axis", "integrator", "samples_per_pixel", "seed", "cloud_light"});
   RenderSettings render;
   if (auto w = j.optional("width")) render.width = w->integer_in(1, 16384);
   if (auto h = j.optional("height")) render.height = h->integer_in(1, 16384);
@@ -51,6 +52,9 @@ RenderSettings read_render(const JsonReader& j) {
   if (auto s = j.optional("samples_per_axis")) render.samples_per_axis = s->integer_in(1, 16);
   if (auto i = j.optional("integrator"))
     render.integrator = i->one_of({"bands", "path"}) == "path" ? Integrator::path : Integrator::bands;
+  if (auto c = j.optional("cloud_light"))
+    render.cloud_light =
+        c->one_of({"two_stream", "paper"}) == "paper" ? CloudLightModel::paper : CloudLightModel::two_stream;
   if (auto s = j.optional("samples_per_pixel")) render.samples_per_pixel = s->integer_in(1, 1 << 20);
   if (auto s = j.optional("seed")) render.seed = static_cast<uint64_t>(s->integer_in(0, 1 << 30));
   return render;
