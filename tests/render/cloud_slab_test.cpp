@@ -15,7 +15,8 @@
 // degree or two of the sun's (next-event estimation toward a directional sun through a
 // spike of the phase function). The estimate is unbiased but heavy-tailed: at τ = 20, sun
 // 60°, the transmitted luminance read 12.4, 15.1, 15.4 and 20.4 kcd/m² after 1, 16, 256
-// and 1024 thousand paths (fast method: 20.7). So the sunlit matrix (DISABLED_SunAt30,
+// and 1024 thousand paths (with the Russian roulette of before 228d9a4, which made it
+// worse; fast method: 20.7). So the sunlit matrix (DISABLED_SunAt30,
 // DISABLED_SunAt60; 100,000 paths per value, about ten minutes each, recorded in
 // docs/clouds.md) is run by hand; CI checks the sky-lit slab (uniform radiance above and
 // below, no sun: the reference's sky is drawn by multiple importance sampling, which
