@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "skylit/core/error.h"
+#include "skylit/spectrum/rgb_to_spectrum.h"
 
 namespace skylit {
 namespace {
@@ -139,6 +140,24 @@ TEST_F(MeshIo, ObjQuadsAndNegativeIndicesLoad) {
   const TriangleMesh y = load_mesh_file(p, UpAxis::y);
   EXPECT_EQ(y.vertices[3], Vec3(0, -0.5, 3));
   EXPECT_EQ(y.vertices[4], Vec3(0, -7, 0));
+}
+
+// An L-shaped face listed from its reflex corner: a fan from that corner (what a
+// naive split does) would cover the notch and count 4 m² too many. The triangles
+// must add up to the L's 3 m² (exact in binary, so 1e-12) and face +z like the face.
+TEST_F(MeshIo, ObjConcaveFaceIsSplitInsideItsOutline) {
+  const fs::path p = write("l.obj", "v 1 1 0\nv 1 2 0\nv 0 2 0\nv 0 0 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4 5 6\n");
+  const TriangleMesh mesh = load_mesh_file(p, UpAxis::z);
+  ASSERT_EQ(mesh.triangles.size(), 4u);
+  double area = 0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 n = cross(mesh.vertices[t[1]] - mesh.vertices[t[0]], mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    EXPECT_GT(n.z, 0.0);
+    area += 0.5 * length(n);
+    const Vec3 c = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
+    EXPECT_FALSE(c.x > 1 && c.y > 1) << "a triangle lies in the notch";
+  }
+  EXPECT_NEAR(area, 3.0, 1e-12);
 }
 
 TEST_F(MeshIo, ObjBadIndexOrHugeCoordinateIsInputError) {
@@ -301,6 +320,139 @@ TEST_F(MeshIo, GarbageFilesAreInputErrorsNamingThem) {
                                                       "ELF\x01\x02 binary junk\n")),
                      "no triangles");
   expect_input_error(write("model.stl", "solid x\nendsolid x\n"), "extension");
+}
+
+}  // namespace
+}  // namespace skylit
+
+namespace skylit {
+namespace {
+
+// Normal-incidence Fresnel reflectance of an interface from air, |(ñ − 1)/(ñ + 1)|²,
+// written out here independently of material/fresnel.cpp.
+double normal_reflectance(double n, double k) { return ((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k); }
+
+void expect_same_spectrum(const Spectrum& a, const Spectrum& b, double tolerance) {
+  for (int i = 0; i < Spectrum::size(); ++i) EXPECT_NEAR(a[i], b[i], tolerance) << "bin " << i;
+}
+
+TEST_F(MeshIo, ObjMaterialsFromMtlPerFace) {
+  write("house.mtl",
+        "newmtl Brick_red\nKd 0.5 0.2 0.1\nillum 1\n"
+        "newmtl Window_Glass\nKd 0.1 0.1 0.1\nd 0.3\nNi 1.52\n"
+        "newmtl Roof_Metal\nKd 0 0 0\nKs 0.9 0.6 0.3\nNs 200\nillum 3\n"
+        "newmtl Painted\nKd 0.3 0.3 0.3\nKs 0.5 0.5 0.5\nNs 50\nillum 2\n"
+        "newmtl Frosted\nKd 1 1 1\nTr 0.8\nNi 1.0\n");
+  const fs::path p = write("house.obj",
+                           "mtllib house.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                           "f 1 2 3\nusemtl Brick_red\nf 1 2 3 4\nusemtl Window_Glass\nf 1 3 4\n"
+                           "usemtl Roof_Metal\nf 1 2 4\nusemtl Painted\nf 2 3 4\nusemtl Frosted\nf 1 2 3\n");
+  const LoadedModel model = load_model_file(p, UpAxis::z);
+  ASSERT_EQ(model.materials.size(), 5u);
+  EXPECT_TRUE(model.missing_libraries.empty());
+  ASSERT_EQ(model.triangle_material.size(), 7u);  // the quad gives two
+  EXPECT_EQ(model.triangle_material, (std::vector<int32_t>{LoadedModel::kNoMaterial, 0, 0, 1, 2, 3, 4}));
+
+  const ModelMaterial& brick = model.materials[0];
+  EXPECT_EQ(brick.name, "Brick_red");
+  EXPECT_EQ(brick.kind, ModelMaterial::Kind::diffuse);
+  const Material brick_material = material_from_model(brick);
+  ASSERT_TRUE(std::holds_alternative<DiffuseMaterial>(brick_material));
+  expect_same_spectrum(std::get<DiffuseMaterial>(brick_material).reflectance,
+                       reflectance_from_linear_srgb({0.5, 0.2, 0.1}), 1e-6);
+
+  EXPECT_EQ(model.materials[1].kind, ModelMaterial::Kind::glass);  // d < 1
+  EXPECT_NEAR(model.materials[1].ior, 1.52, 1e-6);
+  const Material glass = material_from_model(model.materials[1]);
+  ASSERT_TRUE(std::holds_alternative<GlassMaterial>(glass));
+  EXPECT_NEAR(std::get<GlassMaterial>(glass).ior().n[10], 1.52, 1e-6);
+
+  // A black body with a coloured Ks: a metal whose normal reflectance is Ks.
+  const ModelMaterial& roof = model.materials[2];
+  EXPECT_EQ(roof.kind, ModelMaterial::Kind::metal);
+  const Material roof_material = material_from_model(roof);
+  ASSERT_TRUE(std::holds_alternative<CookTorranceMaterial>(roof_material));
+  const auto& metal = std::get<CookTorranceMaterial>(roof_material);
+  EXPECT_TRUE(metal.ior().is_conductor());
+  EXPECT_FALSE(metal.has_diffuse());
+  EXPECT_NEAR(metal.roughness(), std::sqrt(2.0 / 202.0), 1e-12);  // Walter et al. Eq. 37
+  const Spectrum ks = reflectance_from_linear_srgb({0.9, 0.6, 0.3});
+  for (int i = 0; i < Spectrum::size(); ++i)  // n, k are floats: 1e-5
+    EXPECT_NEAR(normal_reflectance(metal.ior().n[i], metal.ior().k[i]), ks[i], 1e-5) << "bin " << i;
+
+  EXPECT_EQ(model.materials[3].kind, ModelMaterial::Kind::coated);
+  EXPECT_NEAR(model.materials[3].ior, 1.5, 1e-12);  // Ni absent: the usual coat
+  // Tr = 1 − d; Ni 1.0 means "not set": glass of index 1.5.
+  EXPECT_EQ(model.materials[4].kind, ModelMaterial::Kind::glass);
+  EXPECT_NEAR(model.materials[4].ior, 1.5, 1e-12);
+}
+
+TEST_F(MeshIo, ObjMissingMaterialLibraryIsNotAnError) {
+  const fs::path p = write("lost.obj", "mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Brick\nf 1 2 3\n");
+  const LoadedModel model = load_model_file(p, UpAxis::z);
+  EXPECT_EQ(model.missing_libraries, std::vector<std::string>{"nowhere.mtl"});
+  EXPECT_EQ(model.triangle_material, std::vector<int32_t>{LoadedModel::kNoMaterial});
+}
+
+std::string with_material(int index) {
+  return R"(, {"attributes": {"POSITION": 0}, "indices": 1, "material": )" + std::to_string(index) + "}";
+}
+
+TEST_F(MeshIo, GltfMaterialsMapToMetalGlassAndCoat) {
+  const std::string materials = R"("materials": [
+      {"name": "Gold", "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.6, 0.2, 1], "metallicFactor": 1,
+                                                "roughnessFactor": 0.5}},
+      {"name": "Pane", "pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0},
+       "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
+                      "KHR_materials_ior": {"ior": 1.45},
+                      "KHR_materials_volume": {"thicknessFactor": 0.01}}},
+      {"pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.4, 0.6, 1], "metallicFactor": 0}}],
+  )";
+  for (int index : {0, 1, 2}) {
+    SCOPED_TRACE(index);
+    // A second primitive, the same triangle with a material.
+    const fs::path p =
+        write("m.gltf", triangle_gltf(embedded(triangle_buffer()), materials + kTranslatedNode, with_material(index)));
+    const LoadedModel model = load_model_file(p, UpAxis::y);
+    ASSERT_EQ(model.materials.size(), 3u);
+    EXPECT_EQ(model.triangle_material, (std::vector<int32_t>{LoadedModel::kNoMaterial, index}));
+  }
+  const fs::path p = write("m.gltf", triangle_gltf(embedded(triangle_buffer()), materials + kTranslatedNode));
+  const LoadedModel model = load_model_file(p, UpAxis::y);
+  EXPECT_EQ(model.triangle_material, std::vector<int32_t>{LoadedModel::kNoMaterial});
+
+  // metallicFactor 1: the Fresnel colour at normal incidence is the base colour.
+  const ModelMaterial& gold = model.materials[0];
+  EXPECT_EQ(gold.kind, ModelMaterial::Kind::metal);
+  EXPECT_NEAR(gold.roughness, 0.25, 1e-12);  // α = roughness²
+  const auto metal = std::get<CookTorranceMaterial>(material_from_model(gold));
+  const Spectrum base = reflectance_from_linear_srgb({0.9, 0.6, 0.2});
+  const Spectrum f0 = metal.fresnel().at(1.0);
+  for (int i = 0; i < Spectrum::size(); ++i) {
+    EXPECT_NEAR(normal_reflectance(metal.ior().n[i], metal.ior().k[i]), base[i], 1e-5) << "bin " << i;
+    // The renderer's table agrees (its interpolation error is below 1e-4, fresnel_test.cpp).
+    EXPECT_NEAR(f0[i], base[i], 1e-4) << "bin " << i;
+  }
+
+  const ModelMaterial& pane = model.materials[1];
+  EXPECT_EQ(pane.name, "Pane");
+  EXPECT_EQ(pane.kind, ModelMaterial::Kind::glass);
+  EXPECT_NEAR(pane.ior, 1.45, 1e-12);
+  EXPECT_NEAR(pane.thickness_m, 0.01, 1e-12);
+
+  const ModelMaterial& coat = model.materials[2];
+  EXPECT_EQ(coat.name, "material 2");  // unnamed: named by its index
+  EXPECT_EQ(coat.kind, ModelMaterial::Kind::coated);
+  EXPECT_NEAR(coat.roughness, 1.0, 1e-12);  // the spec's default roughnessFactor 1
+  const auto layered = std::get<CookTorranceMaterial>(material_from_model(coat));
+  EXPECT_NEAR(layered.ior().n[0], 1.5, 1e-6);
+  expect_same_spectrum(layered.diffuse_reflectance(), reflectance_from_linear_srgb({0.2, 0.4, 0.6}), 1e-6);
+}
+
+TEST_F(MeshIo, GltfMaterialOutOfRangeIsInputError) {
+  expect_input_error(
+      write("bad_material.gltf", triangle_gltf(embedded(triangle_buffer()), kTranslatedNode, with_material(4))),
+      "material 4");
 }
 
 }  // namespace

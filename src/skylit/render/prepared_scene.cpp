@@ -7,10 +7,7 @@ PreparedScene::PreparedScene(const Scene& scene)
       to_sun_(direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg)),
       atmosphere_(scene.atmosphere),
       sky_(atmosphere_, to_sun_, scene.camera.position.z) {
-  for (const SceneObject& object : scene.objects) {
-    tracer_.add_mesh(object.mesh);
-    material_of_mesh_.push_back(object.material_index);
-  }
+  for (const SceneObject& object : scene.objects) tracer_.add_mesh(object.mesh);
   tracer_.commit();
   if (!scene.clouds.empty() || scene.cloud_layer) {
     const Vec3 below_camera{scene.camera.position.x, scene.camera.position.y, 0.0};

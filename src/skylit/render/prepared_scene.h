@@ -32,20 +32,17 @@ class PreparedScene {
   const SceneLamps* lamps() const { return lamps_.get(); }     // null without lights
 
   // The surface point a ray meets, its normal facing the ray's origin (surfaces are
-  // two-sided), with the material of the mesh it belongs to.
+  // two-sided), with the material of the triangle it meets.
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const {
     Vec3 normal = hit.geometric_normal;
     if (dot(normal, ray.direction) > 0) normal = -normal;
-    return {ray.origin + hit.t * ray.direction, normal, hit.t, material_of_mesh(hit.mesh_id)};
+    return {ray.origin + hit.t * ray.direction, normal, hit.t, scene_.objects[hit.mesh_id].material_of(hit.triangle)};
   }
-  // The material of a mesh hit by a ray (the tracer's mesh id).
-  uint32_t material_of_mesh(uint32_t mesh) const { return material_of_mesh_[mesh]; }
   const Material& material(uint32_t index) const { return scene_.materials[index].material; }
 
  private:
   const Scene& scene_;
-  RayTracer tracer_;
-  std::vector<uint32_t> material_of_mesh_;
+  RayTracer tracer_;  // mesh ids are the indices of scene_.objects
   Vec3 to_sun_;
   Atmosphere atmosphere_;
   SkyModel sky_;

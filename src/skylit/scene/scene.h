@@ -53,7 +53,14 @@ struct RenderSettings {
 struct SceneObject {
   std::string name;
   TriangleMesh mesh;        // in world coordinates
-  uint32_t material_index;  // into Scene::materials
+  uint32_t material_index;  // into Scene::materials, for every triangle unless...
+  // ...a material per triangle is given (a model file's own materials), into
+  // Scene::materials; empty otherwise.
+  std::vector<uint32_t> triangle_materials{};
+
+  uint32_t material_of(uint32_t triangle) const {
+    return triangle_materials.empty() ? material_index : triangle_materials[triangle];
+  }
 };
 
 // A luminaire (§7, Fig. 9): where it is, its intensity distribution in absolute

@@ -1,10 +1,12 @@
 // glTF 2.0 geometry (.gltf with external or data-URI buffers, and .glb) through
 // tinygltf: triangle-list primitives of every mesh instance in the scene, placed by
-// the node hierarchy. Everything else in the file is ignored. The file's own axes
-// are kept (+Y up); load_mesh_file turns them into skylit's frame.
+// the node hierarchy, each triangle with its primitive's material (metallic-roughness
+// factors and the transmission, ior and volume extensions; docs/model-materials.md).
+// Everything else in the file is ignored. The file's own axes are kept (+Y up);
+// load_model_file turns them into skylit's frame.
 //
-// This is the one translation unit that compiles tinygltf's implementation. skylit
-// reads only geometry, so images are never decoded: no stb_image, no image files.
+// This is the one translation unit that compiles tinygltf's implementation. Images
+// are not decoded here: no stb_image, no image files.
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -34,6 +37,39 @@ bool harmless_extension(const std::string& name) {
                              "KHR_mesh_quantization"})  // quantized positions are read below
     if (name.rfind(prefix, 0) == 0) return true;
   return false;
+}
+
+// A number in a material extension's object, or `fallback`.
+double extension_number(const tinygltf::Material& m, const char* extension, const char* key, double fallback) {
+  const auto e = m.extensions.find(extension);
+  if (e == m.extensions.end() || !e->second.Has(key)) return fallback;
+  const tinygltf::Value& v = e->second.Get(key);
+  return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? v.GetNumberAsDouble() : fallback;
+}
+
+// The metallic-roughness model mapped onto skylit's kinds: mostly transmitting →
+// glass; mostly metallic → a metal whose normal reflectance is the base colour;
+// otherwise the spec's dielectric, a coat of index `ior` over a body of the base
+// colour. Factors in between are rounded to the nearer kind (skylit does not blend).
+ModelMaterial model_material(const tinygltf::Material& m, size_t index) {
+  ModelMaterial out;
+  out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
+  const auto& pbr = m.pbrMetallicRoughness;
+  if (pbr.baseColorFactor.size() >= 3)  // linear by the spec
+    out.color_linear = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
+  out.roughness = beckmann_from_gltf_roughness(pbr.roughnessFactor);
+  out.ior = extension_number(m, "KHR_materials_ior", "ior", 1.5);
+  const double transmission = extension_number(m, "KHR_materials_transmission", "transmissionFactor", 0.0);
+  const double thickness = extension_number(m, "KHR_materials_volume", "thicknessFactor", 0.0);
+  if (transmission >= 0.5) {
+    out.kind = ModelMaterial::Kind::glass;
+    if (thickness > 0) out.thickness_m = thickness;
+  } else if (pbr.metallicFactor >= 0.5) {
+    out.kind = ModelMaterial::Kind::metal;
+  } else {
+    out.kind = ModelMaterial::Kind::coated;
+  }
+  return out;
 }
 
 bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
@@ -88,9 +124,12 @@ struct AccessorView {
 
 class GltfReader {
  public:
-  GltfReader(const tinygltf::Model& model, std::string name) : model_(model), name_(std::move(name)) {}
+  GltfReader(const tinygltf::Model& model, std::string name) : model_(model), name_(std::move(name)) {
+    for (size_t i = 0; i < model_.materials.size(); ++i)
+      out_.materials.push_back(model_material(model_.materials[i], i));
+  }
 
-  TriangleMesh read_scene() {
+  LoadedModel read_scene() {
     std::vector<int> roots;
     if (model_.defaultScene >= 0 && static_cast<size_t>(model_.defaultScene) < model_.scenes.size())
       roots = model_.scenes[model_.defaultScene].nodes;
@@ -144,18 +183,39 @@ class GltfReader {
       fail("the node hierarchy has a cycle or is deeper than " + std::to_string(kMaxDepth) + " levels");
     const tinygltf::Node& node = model_.nodes[index];
     const Transform world = parent * local_transform(node);
-    if (node.mesh >= 0) out_.append(transformed(mesh(node.mesh), world));
+    if (node.mesh >= 0) {
+      const Part& part = mesh(node.mesh);
+      out_.mesh.append(transformed(part.mesh, world));
+      out_.triangle_material.insert(out_.triangle_material.end(), part.material.begin(), part.material.end());
+    }
     for (int child : node.children) visit(child, world, depth + 1);
   }
 
-  // A mesh in its own space, built once however many nodes use it.
-  const TriangleMesh& mesh(int index) {
+  // A mesh in its own space with its triangles' materials.
+  struct Part {
+    TriangleMesh mesh;
+    std::vector<int32_t> material;
+  };
+
+  // A mesh, built once however many nodes use it.
+  const Part& mesh(int index) {
     if (static_cast<size_t>(index) >= model_.meshes.size())
       fail("a node refers to mesh " + std::to_string(index) + " which does not exist");
     auto [it, inserted] = meshes_.try_emplace(index);
     if (inserted)
-      for (const auto& primitive : model_.meshes[index].primitives) it->second.append(read_primitive(primitive));
+      for (const auto& primitive : model_.meshes[index].primitives) {
+        const TriangleMesh triangles = read_primitive(primitive);
+        it->second.mesh.append(triangles);
+        it->second.material.insert(it->second.material.end(), triangles.triangles.size(), material_of(primitive));
+      }
     return it->second;
+  }
+
+  int32_t material_of(const tinygltf::Primitive& primitive) const {
+    if (primitive.material < 0) return LoadedModel::kNoMaterial;
+    if (static_cast<size_t>(primitive.material) >= model_.materials.size())
+      fail("a primitive refers to material " + std::to_string(primitive.material) + " which does not exist");
+    return primitive.material;
   }
 
   TriangleMesh read_primitive(const tinygltf::Primitive& primitive) const {
@@ -236,13 +296,13 @@ class GltfReader {
   static constexpr size_t kMaxDepth = 1000;
   const tinygltf::Model& model_;
   std::string name_;
-  std::map<int, TriangleMesh> meshes_;
-  TriangleMesh out_;
+  std::map<int, Part> meshes_;
+  LoadedModel out_;
 };
 
 }  // namespace
 
-TriangleMesh load_gltf_file(const std::filesystem::path& path) {
+LoadedModel load_gltf_file(const std::filesystem::path& path) {
   const std::string name = path.string();
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&ignore_image, nullptr);

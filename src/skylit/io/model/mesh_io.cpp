@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 
@@ -41,24 +42,30 @@ void check(const TriangleMesh& mesh, const std::filesystem::path& path) {
 }  // namespace
 
 TriangleMesh load_mesh_file(const std::filesystem::path& path, UpAxis up_axis) {
+  return load_model_file(path, up_axis).mesh;
+}
+
+LoadedModel load_model_file(const std::filesystem::path& path, UpAxis up_axis) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": mesh file not found");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
 
   const std::string ext = lower(path.extension().string());
-  TriangleMesh mesh;
+  LoadedModel model;
   if (ext == ".obj")
-    mesh = load_obj_file(path);
+    model = load_obj_file(path);
   else if (ext == ".gltf" || ext == ".glb")
-    mesh = load_gltf_file(path);
+    model = load_gltf_file(path);
   else
     throw InputError(path.string() + ": unknown mesh file extension '" + path.extension().string() +
                      "' (expected .gltf, .glb or .obj)");
 
   if (up_axis == UpAxis::y)
-    for (Vec3& v : mesh.vertices) v = {v.x, -v.z, v.y};
-  check(mesh, path);
-  return mesh;
+    for (Vec3& v : model.mesh.vertices) v = {v.x, -v.z, v.y};
+  check(model.mesh, path);
+  if (model.triangle_material.size() != model.mesh.triangles.size())  // a slip in a reader
+    throw std::logic_error("load_model_file: a material per triangle is missing");
+  return model;
 }
 
 }  // namespace skylit

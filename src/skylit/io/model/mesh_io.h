@@ -1,11 +1,15 @@
-// Loading triangle meshes from files: glTF 2.0 (.gltf, .glb) and Wavefront OBJ.
-// Only geometry is read; materials, normals, UVs, textures, cameras, lights and
-// animation in the file are ignored (the scene file gives each object one material).
+// Loading triangle meshes from files: glTF 2.0 (.gltf, .glb) and Wavefront OBJ with
+// its MTL libraries. Geometry and each triangle's material are read; normals, UVs,
+// textures, cameras, lights and animation in the file are ignored.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "skylit/geometry/triangle_mesh.h"
+#include "skylit/material/model_material.h"
 
 namespace skylit {
 
@@ -15,6 +19,18 @@ namespace skylit {
 // faces south (-y). A proper rotation, so winding and normals are kept.
 enum class UpAxis { y, z };
 
+// A model file's triangles and the materials it gives them.
+struct LoadedModel {
+  static constexpr int32_t kNoMaterial = -1;
+  TriangleMesh mesh;
+  std::vector<ModelMaterial> materials;
+  // Per triangle of `mesh`: an index into `materials`, or kNoMaterial where the file
+  // gives none (the scene's object material is used there).
+  std::vector<int32_t> triangle_material;
+  // Material libraries the file names (OBJ `mtllib`) that could not be read.
+  std::vector<std::string> missing_libraries;
+};
+
 // Loads every triangle of the file in metres, in skylit's frame. The format comes
 // from the extension (.gltf, .glb, .obj; any case). For glTF, the node hierarchy
 // of the default scene (else scene 0, else every root node) is applied, and only
@@ -22,11 +38,15 @@ enum class UpAxis { y, z };
 // skipped. Throws InputError, naming the file, when it is missing or unreadable,
 // cannot be parsed, has an index out of range or a non-finite coordinate, holds no
 // triangles, or has an unknown extension.
+// A material library the file names that cannot be read is not an error: its
+// triangles get kNoMaterial.
+LoadedModel load_model_file(const std::filesystem::path& path, UpAxis up_axis);
+// The geometry alone.
 TriangleMesh load_mesh_file(const std::filesystem::path& path, UpAxis up_axis);
 
-// The loaders behind load_mesh_file: the file's own axes, indices checked, but
-// emptiness and non-finite coordinates are left to load_mesh_file. Throw InputError.
-TriangleMesh load_obj_file(const std::filesystem::path& path);
-TriangleMesh load_gltf_file(const std::filesystem::path& path);  // .gltf or .glb
+// The loaders behind load_model_file: the file's own axes, indices checked, but
+// emptiness and non-finite coordinates are left to load_model_file. Throw InputError.
+LoadedModel load_obj_file(const std::filesystem::path& path);
+LoadedModel load_gltf_file(const std::filesystem::path& path);  // .gltf or .glb
 
 }  // namespace skylit

@@ -1,17 +1,25 @@
-// Wavefront OBJ geometry through tinyobjloader: positions and faces only. Polygons
-// are split into triangles; lines, points, normals, UVs and materials are ignored.
+// Wavefront OBJ geometry through tinyobjloader: positions and faces only. Polygons,
+// concave ones too, are split into triangles by our ear clipping
+// (geometry/polygon_triangulation.h); tinyobjloader's own splitting cuts concave faces
+// wrongly. Each face takes its `usemtl` material from the `mtllib` libraries beside
+// the file (docs/model-materials.md gives the mapping). Lines, points, normals and UVs
+// are ignored.
 // Vertex lines are also read here, in double precision, because tinyobjloader
 // (Debian's float build) reads an unparsable number such as "nan" as 0 without a
 // word, and rounds site coordinates (e.g. 500123.25 m east) to float.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <tiny_obj_loader.h>
 
 #include "skylit/core/error.h"
+#include "skylit/geometry/polygon_triangulation.h"
 #include "skylit/io/model/mesh_io.h"
 
 namespace skylit {
@@ -57,9 +65,72 @@ std::vector<Vec3> read_positions(const std::string& text, const std::string& nam
   return positions;
 }
 
+std::string trimmed(std::string_view s) {
+  while (!s.empty() && (blank(s.front()) || s.front() == '\n')) s.remove_prefix(1);
+  while (!s.empty() && (blank(s.back()) || s.back() == '\n')) s.remove_suffix(1);
+  return std::string(s);
+}
+
+// The text of every `mtllib` the file names, read beside it. A name with spaces is
+// tried whole first, then as several names. Libraries that cannot be read are listed
+// in `missing`.
+std::string read_material_libraries(const std::string& text, const std::filesystem::path& dir,
+                                    std::vector<std::string>& missing) {
+  std::string libraries;
+  const auto read = [&](const std::string& file) {
+    std::ifstream in(dir / file, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    libraries += buffer.str();
+    libraries += '\n';
+    return true;
+  };
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    const std::string l = trimmed(line);
+    if (l.rfind("mtllib", 0) != 0 || l.size() < 7 || !blank(l[6])) continue;
+    const std::string names = trimmed(std::string_view(l).substr(7));
+    if (read(names)) continue;
+    std::istringstream words(names);
+    for (std::string word; words >> word;)
+      if (!read(word)) missing.push_back(word);
+  }
+  return libraries;
+}
+
+double largest(const tinyobj::real_t* rgb) { return std::max({rgb[0], rgb[1], rgb[2]}); }
+
+// MTL's parameters onto skylit's kinds (docs/model-materials.md). Colours are
+// taken as linear reflectances, as exporters write them (Blender's base colour, say).
+ModelMaterial model_material(const tinyobj::material_t& m) {
+  ModelMaterial out;
+  out.name = m.name;
+  out.color_linear = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
+  // Ni 1 (or nonsense) is what exporters write when they mean "not set".
+  out.ior = m.ior >= 1.05 && m.ior <= 3.0 ? m.ior : 1.5;
+  out.roughness =
+      m.roughness > 0 ? beckmann_from_gltf_roughness(m.roughness) : beckmann_from_phong_exponent(m.shininess);
+  const bool transparent_illum = m.illum == 4 || m.illum == 6 || m.illum == 7 || m.illum == 9;
+  if (m.dissolve < 0.99 || transparent_illum) {  // d, or Tr = 1 − d
+    out.kind = ModelMaterial::Kind::glass;
+    out.roughness = 0;             // window glass is flat; Ns describes a highlight's size, not a pane
+  } else if (m.metallic >= 0.5) {  // the PBR extension's Pm
+    out.kind = ModelMaterial::Kind::metal;
+  } else if (largest(m.specular) > 0.1 && largest(m.diffuse) < 0.01) {  // all specular: a metal coloured Ks
+    out.kind = ModelMaterial::Kind::metal;
+    out.color_linear = {m.specular[0], m.specular[1], m.specular[2]};
+  } else if (largest(m.specular) > 0 && m.illum >= 2) {  // a highlight: a coat over the body
+    out.kind = ModelMaterial::Kind::coated;
+  } else {
+    out.kind = ModelMaterial::Kind::diffuse;
+  }
+  return out;
+}
+
 }  // namespace
 
-TriangleMesh load_obj_file(const std::filesystem::path& path) {
+LoadedModel load_obj_file(const std::filesystem::path& path) {
   const std::string name = path.string();
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(name + ": cannot open the file");
@@ -69,20 +140,23 @@ TriangleMesh load_obj_file(const std::filesystem::path& path) {
   const std::string text = std::move(buffer).str();
   std::vector<Vec3> positions = read_positions(text, name);
 
-  // Parsing from a string makes tinyobjloader skip `mtllib`: materials come from
-  // the scene file, and a missing .mtl must not stop the load.
+  // Parsing from strings: the libraries are read here, so a missing one does not stop
+  // the load.
+  LoadedModel model;
+  const std::string libraries = read_material_libraries(text, path.parent_path(), model.missing_libraries);
   tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
+  config.triangulate = false;
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(text, "", config))
+  if (!reader.ParseFromString(text, libraries, config))
     throw InputError(name + ": cannot parse OBJ: " + one_line(reader.Error()));
   // tinyobjloader drops faces with bad indices with only a warning; a silently
   // missing wall would be worse than an error.
   if (reader.Warning().find("invalid vertex index") != std::string::npos)
     throw InputError(name + ": a face refers to a vertex that does not exist");
 
-  TriangleMesh mesh;
+  for (const tinyobj::material_t& m : reader.GetMaterials()) model.materials.push_back(model_material(m));
+  TriangleMesh& mesh = model.mesh;
   mesh.vertices = std::move(positions);
   // Should the two readers ever disagree on what is a vertex line (line
   // continuations, say), trust the one that also reads the faces.
@@ -99,18 +173,38 @@ TriangleMesh load_obj_file(const std::filesystem::path& path) {
                        std::to_string(mesh.vertices.size()) + ")");
     return static_cast<uint32_t>(index.vertex_index);
   };
+  std::vector<std::vector<Vec3>> rings(1);
+  std::vector<uint32_t> face;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     const auto& indices = shape.mesh.indices;
     size_t first = 0;
-    for (unsigned char n : shape.mesh.num_face_vertices) {
+    for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+      const unsigned char n = shape.mesh.num_face_vertices[f];
       if (first + n > indices.size()) throw InputError(name + ": inconsistent face list");
-      // Faces are triangles after triangulation; fan-split anything else anyway.
-      for (size_t k = 1; k + 1 < n; ++k)
-        mesh.triangles.push_back({vertex(indices[first]), vertex(indices[first + k]), vertex(indices[first + k + 1])});
+      const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+      const size_t before = mesh.triangles.size();
+      face.clear();
+      rings[0].clear();
+      for (size_t k = 0; k < n; ++k) {
+        face.push_back(vertex(indices[first + k]));
+        rings[0].push_back(mesh.vertices[face.back()]);
+      }
+      if (n == 3)
+        mesh.triangles.push_back({face[0], face[1], face[2]});
+      else
+        for (const TriangleIndices& t : triangulate_polygon_3d(rings))
+          mesh.triangles.push_back({face[t[0]], face[t[1]], face[t[2]]});
+      const bool known = material >= 0 && static_cast<size_t>(material) < model.materials.size();
+      model.triangle_material.insert(model.triangle_material.end(), mesh.triangles.size() - before,
+                                     known ? material : LoadedModel::kNoMaterial);
       first += n;
     }
+    // tinyobjloader counts a face's corners in a byte: a face of more than 255
+    // corners leaves its indices unaccounted for.
+    if (first != indices.size())
+      throw InputError(name + ": a face has more than 255 corners, which the OBJ reader cannot take");
   }
-  return mesh;
+  return model;
 }
 
 }  // namespace skylit

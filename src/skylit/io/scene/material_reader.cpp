@@ -208,21 +208,22 @@ Material read_preset_with_overrides(const JsonReader& j) {
 
 }  // namespace
 
+Material read_material(const JsonReader& m) {
+  if (m.is_string()) {
+    const nlohmann::json preset = nlohmann::json::parse(find_preset(m).json);
+    return read_typed_material(JsonReader(preset, m.source(), m.path()));
+  }
+  if (m.is_object() && m.has("preset")) return read_preset_with_overrides(m);
+  if (m.is_object()) return read_typed_material(m);
+  m.fail_expected("a material: an object with a type, a preset's name (" + material_preset_names() +
+                  "), or {\"preset\": name, …}");
+}
+
 std::vector<NamedMaterial> read_materials(const JsonReader& j) {
   std::vector<NamedMaterial> out;
   for (const auto& [name, m] : j.members()) {
     if (name.empty()) m.fail("a material needs a non-empty name");
-    if (m.is_string()) {
-      const nlohmann::json preset = nlohmann::json::parse(find_preset(m).json);
-      out.push_back({name, read_typed_material(JsonReader(preset, m.source(), m.path()))});
-    } else if (m.is_object() && m.has("preset")) {
-      out.push_back({name, read_preset_with_overrides(m)});
-    } else if (m.is_object()) {
-      out.push_back({name, read_typed_material(m)});
-    } else {
-      m.fail_expected("a material: an object with a type, a preset's name (" + material_preset_names() +
-                      "), or {\"preset\": name, …}");
-    }
+    out.push_back({name, read_material(m)});
   }
   return out;
 }

@@ -1,24 +1,53 @@
-// The `objects` part of a scene file: primitives (box, plane) and mesh files, each
-// with one material.
+// The `objects` part of a scene file: primitives (box, plane) with one material each,
+// and mesh files with the materials they give their triangles (replaced by the
+// scene's `material_overrides`), the object's `material` where they give none.
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <map>
+#include <optional>
 #include <string>
 
 #include "skylit/geometry/primitives.h"
 #include "skylit/geometry/transform.h"
 #include "skylit/io/model/mesh_io.h"
 #include "skylit/io/scene/scene_parts.h"
+#include "skylit/material/model_material.h"
 
 namespace skylit {
 
 namespace {
 
+std::optional<uint32_t> material_named(const std::string& name, const std::vector<NamedMaterial>& materials) {
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<uint32_t>(i);
+  return std::nullopt;
+}
+
 uint32_t find_material(const JsonReader& j, const std::vector<NamedMaterial>& materials) {
   const std::string name = j.string();
+  if (auto index = material_named(name, materials)) return *index;
   std::string known;
-  for (size_t i = 0; i < materials.size(); ++i) {
-    if (materials[i].name == name) return static_cast<uint32_t>(i);
-    known += (known.empty() ? "" : ", ") + materials[i].name;
-  }
+  for (const NamedMaterial& m : materials) known += (known.empty() ? "" : ", ") + m.name;
   j.fail("unknown material '" + name + "'; known materials: " + (known.empty() ? "(none)" : known));
+}
+
+// Characters of a glob pattern that must match literally.
+size_t literal_length(const std::string& pattern) {
+  return static_cast<size_t>(std::count_if(pattern.begin(), pattern.end(),
+                                           [](char c) { return c != '*' && c != '?' && c != '[' && c != ']'; }));
+}
+
+// JSON objects have no order, so among the patterns that match, the most specific
+// (most literal characters) wins: "*Glass*" before "*"; ties go to the first in
+// alphabetical order.
+const MaterialOverride* best_override(const std::string& name, const std::vector<MaterialOverride>& overrides) {
+  const MaterialOverride* best = nullptr;
+  for (const MaterialOverride& o : overrides)
+    if (fnmatch(o.pattern.c_str(), name.c_str(), 0) == 0 &&
+        (!best || literal_length(o.pattern) > literal_length(best->pattern)))
+      best = &o;
+  return best;
 }
 
 Vec3 read_positive_size(const JsonReader& j) {
@@ -62,7 +91,7 @@ Transform read_transform(const JsonReader& j) {
   return t;
 }
 
-TriangleMesh read_mesh(const JsonReader& j, const std::filesystem::path& base_dir) {
+LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir) {
   j.allow_only({"type", "name", "material", "file", "up_axis", "transform"});
   const std::filesystem::path file = base_dir / j.required("file").string();
   const std::string extension = file.extension().string();
@@ -70,27 +99,79 @@ TriangleMesh read_mesh(const JsonReader& j, const std::filesystem::path& base_di
   const bool gltf = extension == ".gltf" || extension == ".glb" || extension == ".GLTF" || extension == ".GLB";
   UpAxis up = gltf ? UpAxis::y : UpAxis::z;
   if (auto u = j.optional("up_axis")) up = u->one_of({"y", "z"}) == "y" ? UpAxis::y : UpAxis::z;
-  TriangleMesh mesh = load_mesh_file(file, up);
-  if (auto t = j.optional("transform")) mesh = transformed(mesh, read_transform(*t));
-  return mesh;
+  LoadedModel model = load_model_file(file, up);
+  if (auto t = j.optional("transform")) model.mesh = transformed(model.mesh, read_transform(*t));
+  return model;
+}
+
+// Each triangle's scene material: its file material's override, or the file material
+// itself (added to `materials` once, as "<object>/<name>"), or the object's material.
+void assign_model_materials(const JsonReader& j, const LoadedModel& model, std::vector<NamedMaterial>& materials,
+                            const std::vector<MaterialOverride>& overrides, SceneObject& object) {
+  const bool has_fallback = j.has("material");
+  const uint32_t fallback = has_fallback ? find_material(j.required("material"), materials) : 0;
+  object.material_index = fallback;
+  std::map<int32_t, uint32_t> scene_material;
+  object.triangle_materials.reserve(model.triangle_material.size());
+  for (int32_t m : model.triangle_material) {
+    if (m == LoadedModel::kNoMaterial) {
+      if (!has_fallback) j.fail("the file gives some triangles no material: give the object a \"material\" for them");
+      object.triangle_materials.push_back(fallback);
+      continue;
+    }
+    auto [it, added] = scene_material.try_emplace(m, 0);
+    if (added) {
+      const ModelMaterial& file_material = model.materials[m];
+      if (const MaterialOverride* o = best_override(file_material.name, overrides)) {
+        it->second = o->material;
+      } else {
+        it->second = static_cast<uint32_t>(materials.size());
+        materials.push_back({object.name + "/" + file_material.name, material_from_model(file_material)});
+      }
+    }
+    object.triangle_materials.push_back(it->second);
+  }
+  // One material for all (a file without materials, say): no list needed.
+  const auto& list = object.triangle_materials;
+  if (!list.empty() && std::all_of(list.begin(), list.end(), [&](uint32_t m) { return m == list[0]; })) {
+    object.material_index = list[0];
+    object.triangle_materials.clear();
+  }
 }
 
 }  // namespace
 
-std::vector<SceneObject> read_objects(const JsonReader& j, const std::vector<NamedMaterial>& materials,
+std::vector<MaterialOverride> read_material_overrides(const JsonReader& j, std::vector<NamedMaterial>& materials) {
+  std::vector<MaterialOverride> out;
+  for (const auto& [pattern, value] : j.members()) {
+    if (pattern.empty()) value.fail("a pattern must not be empty");
+    if (value.is_string())
+      if (auto index = material_named(value.string(), materials)) {
+        out.push_back({pattern, *index});
+        continue;
+      }
+    materials.push_back({"override " + pattern, read_material(value)});
+    out.push_back({pattern, static_cast<uint32_t>(materials.size() - 1)});
+  }
+  return out;
+}
+
+std::vector<SceneObject> read_objects(const JsonReader& j, std::vector<NamedMaterial>& materials,
+                                      const std::vector<MaterialOverride>& overrides,
                                       const std::filesystem::path& base_dir) {
   std::vector<SceneObject> out;
   for (const JsonReader& o : j.elements()) {
     const std::string type = o.required("type").one_of({"box", "plane", "mesh"});
     SceneObject object;
     object.name = o.optional("name") ? o.required("name").string() : o.path();
-    object.material_index = find_material(o.required("material"), materials);
-    if (type == "box")
-      object.mesh = read_box(o);
-    else if (type == "plane")
-      object.mesh = read_plane(o);
-    else
-      object.mesh = read_mesh(o, base_dir);
+    if (type == "mesh") {
+      LoadedModel model = read_mesh(o, base_dir);
+      assign_model_materials(o, model, materials, overrides, object);
+      object.mesh = std::move(model.mesh);
+    } else {
+      object.material_index = find_material(o.required("material"), materials);
+      object.mesh = type == "box" ? read_box(o) : read_plane(o);
+    }
     out.push_back(std::move(object));
   }
   return out;

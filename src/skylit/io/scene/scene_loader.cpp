@@ -66,15 +66,17 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
                       const std::filesystem::path& base_dir) {
   const JsonReader root(document, source);
   if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
-  root.allow_only(
-      {"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "objects", "lights", "render"});
+  root.allow_only({"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "material_overrides",
+                   "objects", "lights", "render"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
   read_sun_and_atmosphere(root, scene);
   if (auto fog = root.optional("fog")) scene.fog = read_fog(*fog);
   if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
   scene.materials = read_materials(root.required("materials"));
-  scene.objects = read_objects(root.required("objects"), scene.materials, base_dir);
+  std::vector<MaterialOverride> overrides;
+  if (auto o = root.optional("material_overrides")) overrides = read_material_overrides(*o, scene.materials);
+  scene.objects = read_objects(root.required("objects"), scene.materials, overrides, base_dir);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
   return scene;

@@ -21,9 +21,24 @@ AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
 FogSettings read_fog(const JsonReader& fog);
 void read_clouds(const JsonReader& clouds, Scene& scene);
 std::vector<NamedMaterial> read_materials(const JsonReader& materials);
+// One material: a preset's name, {"preset": name, …} or an object with a type.
+Material read_material(const JsonReader& material);
+
+// `material_overrides`: glob patterns (fnmatch(3), case-sensitive) on the names of a
+// model file's materials, each with the scene material that replaces them.
+struct MaterialOverride {
+  std::string pattern;
+  uint32_t material;  // into Scene::materials
+};
+// Each value names a scene material or a preset, or defines one inline (added to
+// `materials` as "override <pattern>").
+std::vector<MaterialOverride> read_material_overrides(const JsonReader& overrides,
+                                                      std::vector<NamedMaterial>& materials);
 Spectrum read_reflectance(const JsonReader& reflectance);
 std::vector<SceneLight> read_lights(const JsonReader& lights, const std::filesystem::path& base_dir);
-std::vector<SceneObject> read_objects(const JsonReader& objects, const std::vector<NamedMaterial>& materials,
+// Materials of model files are added to `materials`.
+std::vector<SceneObject> read_objects(const JsonReader& objects, std::vector<NamedMaterial>& materials,
+                                      const std::vector<MaterialOverride>& overrides,
                                       const std::filesystem::path& base_dir);
 
 }  // namespace skylit

@@ -1,0 +1,47 @@
+// Materials as model files describe them (glTF 2.0, OBJ + MTL), reduced to the few
+// kinds skylit renders, and turned into skylit materials. The readers in io/model/
+// map each format's parameters onto ModelMaterial (docs/model-materials.md gives
+// every mapping); material_from_model does the physics once for both.
+#pragma once
+
+#include <string>
+
+#include "skylit/material/material.h"
+#include "skylit/spectrum/color_space.h"
+
+namespace skylit {
+
+struct ModelMaterial {
+  enum class Kind {
+    diffuse,  // Lambertian body of reflectance `color`
+    coated,   // a dielectric coat of index `ior` over a body of reflectance `color`
+    metal,    // a conductor whose reflectance at normal incidence is `color`
+    glass,    // a pane of index `ior` and thickness `thickness_m` (the dark room behind)
+  };
+  std::string name;  // as the file names it
+  Kind kind = Kind::diffuse;
+  Rgb color_linear{0.8, 0.8, 0.8};  // linear sRGB, each in [0, 1]
+  double roughness = 0.5;           // Beckmann rms slope m (microfacet.h)
+  double ior = 1.5;
+  double thickness_m = 0.006;
+};
+
+const char* kind_name(ModelMaterial::Kind kind);
+
+// The skylit material: diffuse → DiffuseMaterial; coated → CookTorranceMaterial over
+// the body; metal → CookTorranceMaterial with n, k found so that the Fresnel
+// reflectance at normal incidence is `color` in every wavelength bin (see .cpp);
+// glass → GlassMaterial. Colours become smooth spectra by the Jakob–Hanika fit.
+Material material_from_model(const ModelMaterial& m);
+
+// n and k of a conductor whose normal-incidence reflectance is r and whose
+// reflectance toward grazing is tinted by g (O. Gulbrandsen, "Artist friendly metallic
+// Fresnel", JCGT 3(4), 2014, Eqs. 3 and 4). r is limited to [0, 0.999].
+ComplexIor conductor_from_reflectance(const Spectrum& r, const Spectrum& g);
+
+// The glTF metallic-roughness roughness (perceptual, α = roughness²) as a Beckmann
+// rms slope, and the Blinn–Phong exponent of MTL's Ns likewise.
+double beckmann_from_gltf_roughness(double roughness);
+double beckmann_from_phong_exponent(double ns);
+
+}  // namespace skylit
