@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "skylit/scene/scene.h"
+
 namespace skylit::cli {
 
 using CommandRunner = std::function<int()>;
@@ -28,5 +30,11 @@ CommandRunner add_sweep_command(CLI::App& app);
 // `skylit compare A B [--regions R.json] [--mask M.png] [--standard-error-a SA] [--standard-error-b SB]
 // [-o RATIO.png] [--json OUT.json]` (docs/validation.md)
 CommandRunner add_compare_command(CLI::App& app);
+
+// `skylit info SCENE [--set PATH=VALUE ...]`: what the scene loads, and warnings
+CommandRunner add_info_command(CLI::App& app);
+
+// The scene's warnings (io/scene/scene_report.h) on stderr, one "skylit: warning:" line each.
+void print_scene_warnings(const Scene& scene, bool check_camera);
 
 }  // namespace skylit::cli

@@ -1,6 +1,7 @@
 // `skylit render`: a scene file into one or more images.
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -12,6 +13,7 @@
 #include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image.h"
 #include "skylit/io/scene/scene_loader.h"
+#include "skylit/io/scene/scene_report.h"
 #include "skylit/render/renderer.h"
 
 namespace skylit::cli {
@@ -25,6 +27,7 @@ struct RenderArguments {
   std::vector<std::string> overrides;
   int threads = 0;
   bool quiet = false;
+  bool verbose = false;
 };
 
 int run_render(const RenderArguments& args) {
@@ -36,6 +39,10 @@ int run_render(const RenderArguments& args) {
     check_output_folder(out);
   }
   const Scene scene = load_scene(args.scene_file, args.overrides);
+  // Likely mistakes are said before the work; the camera checks build a ray-tracing
+  // structure of their own, so only when asked for.
+  if (args.verbose) std::fputs(describe_objects(scene).c_str(), stderr);
+  print_scene_warnings(scene, /*check_camera=*/args.verbose);
   if (!args.standard_error_outputs.empty() && scene.render.integrator != Integrator::path)
     throw InputError(args.scene_file +
                      ": --standard-error needs render.integrator \"path\" (the bands method has no noise)");
@@ -74,6 +81,8 @@ CommandRunner add_render_command(CLI::App& app) {
   render->add_option("--threads", args->threads, "Worker threads (0: all cores); the image does not depend on it")
       ->check(CLI::Range(0, 1024));
   render->add_flag("-q,--quiet", args->quiet, "No progress bar");
+  render->add_flag("-v,--verbose", args->verbose,
+                   "Say what the scene loads (as skylit info) and check the camera for likely mistakes, on stderr");
   return [render, args] { return render->parsed() ? run_render(*args) : -1; };
 }
 

@@ -113,3 +113,24 @@ TEST(ExitStatus, InputErrorsAreTwoAndInternalErrorsOne) {
 
 }  // namespace
 }  // namespace skylit
+
+namespace skylit {
+namespace {
+
+// `skylit info`: the report on stdout, warnings on stderr, exit status 0.
+TEST(Cli, InfoReportsObjectsAndWarnsWithExitStatus0) {
+  TempDir dir;
+  dir.write("tower.obj", "v 0 0 5\nv 1 0 5\nv 0 1 5\nf 1 2 3\n");
+  const auto scene = dir.write("scene.json", R"({"camera": {"position": [0, -20, 2], "look_at": [0, 0, 3]},
+    "sun": {"altitude_deg": 40, "azimuth_deg": 135}, "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
+    "objects": [{"type": "mesh", "name": "tower", "file": "tower.obj", "material": "white"}]})");
+  const auto r = run_skylit("info " + quoted(scene));
+  EXPECT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find("object 'tower': "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 triangles"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("skylit: warning: object 'tower' floats 5.00 m above the ground"), std::string::npos)
+      << r.output;
+}
+
+}  // namespace
+}  // namespace skylit

@@ -2,6 +2,7 @@
 // geometry source (primitives, OBJ, glTF) is turned into before ray tracing.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -12,6 +13,25 @@
 
 namespace skylit {
 
+// An axis-aligned box; empty (lo > hi) until a point is added.
+struct BoundingBox {
+  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity()};
+  Vec3 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity()};
+
+  bool empty() const { return lo.x > hi.x; }
+  void add(const Vec3& p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  void add(const BoundingBox& b) {
+    if (!b.empty()) add(b.lo), add(b.hi);
+  }
+  Vec3 center() const { return 0.5 * (lo + hi); }
+  Vec3 size() const { return hi - lo; }
+};
+
 struct TriangleMesh {
   std::vector<Vec3> vertices;
   // Indices into `vertices`; counter-clockwise seen from the outside (the side the
@@ -19,6 +39,14 @@ struct TriangleMesh {
   std::vector<std::array<uint32_t, 3>> triangles;
 
   bool empty() const { return triangles.empty(); }
+
+  // The box around the vertices that triangles use.
+  BoundingBox bounds() const {
+    BoundingBox box;
+    for (const auto& t : triangles)
+      for (uint32_t i : t) box.add(vertices[i]);
+    return box;
+  }
 
   // Adds `other`'s vertices and triangles, re-indexing its triangles.
   void append(const TriangleMesh& other) {

@@ -50,6 +50,21 @@ struct RenderSettings {
   CloudLightModel cloud_light = CloudLightModel::two_stream;
 };
 
+// Where a mesh object came from and what loading did to it (`skylit info`).
+struct ModelSource {
+  std::string file;
+  char up_axis = 'z';  // the file's up axis as read: 'y' or 'z'
+  std::string units = "m";
+  Vec3 offset_m{0, 0, 0};  // the shift added by `center` and `place_on_ground`
+  struct MaterialUse {
+    std::string file_name;  // as the file names it
+    std::string became;     // the scene material's name and kind
+    bool overridden = false;
+  };
+  std::vector<MaterialUse> materials;
+  std::vector<std::string> missing_libraries;
+};
+
 struct SceneObject {
   std::string name;
   TriangleMesh mesh;        // in world coordinates
@@ -57,6 +72,7 @@ struct SceneObject {
   // ...a material per triangle is given (a model file's own materials), into
   // Scene::materials; empty otherwise.
   std::vector<uint32_t> triangle_materials{};
+  std::optional<ModelSource> source{};  // for mesh files
 
   uint32_t material_of(uint32_t triangle) const {
     return triangle_materials.empty() ? material_index : triangle_materials[triangle];
@@ -87,6 +103,10 @@ struct Scene {
   std::vector<SceneObject> objects;
   std::vector<SceneLight> lights;
   RenderSettings render;
+  // How many `material_overrides` patterns the scene gives, and those that matched no
+  // material of any file (a typo?).
+  size_t material_override_count = 0;
+  std::vector<std::string> unused_material_overrides;
 };
 
 }  // namespace skylit

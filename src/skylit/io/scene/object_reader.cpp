@@ -91,8 +91,33 @@ Transform read_transform(const JsonReader& j) {
   return t;
 }
 
-LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir) {
-  j.allow_only({"type", "name", "material", "file", "up_axis", "transform"});
+// Metres per file unit.
+double metres_per_unit(const std::string& unit) {
+  if (unit == "cm") return 0.01;
+  if (unit == "mm") return 0.001;
+  if (unit == "ft") return 0.3048;  // the international foot
+  if (unit == "in") return 0.0254;
+  return 1.0;
+}
+
+// `center`: the model's box centred on the origin in x and y (survey coordinates
+// brought to the site); `place_on_ground`: its lowest point on z = 0. Returns the
+// shift.
+Vec3 place(const JsonReader& j, TriangleMesh& mesh) {
+  const bool center = j.optional("center") && j.required("center").boolean();
+  const bool ground = j.optional("place_on_ground") && j.required("place_on_ground").boolean();
+  const BoundingBox box = mesh.bounds();
+  Vec3 shift{0, 0, 0};
+  if (box.empty()) return shift;
+  if (center) shift = {-box.center().x, -box.center().y, 0};
+  if (ground) shift.z = -box.lo.z;
+  if (center || ground)
+    for (Vec3& v : mesh.vertices) v += shift;
+  return shift;
+}
+
+LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir, ModelSource& source) {
+  j.allow_only({"type", "name", "material", "file", "up_axis", "units", "transform", "center", "place_on_ground"});
   const std::filesystem::path file = base_dir / j.required("file").string();
   const std::string extension = file.extension().string();
   // glTF 2.0 is +Y up by its specification; OBJ has no convention, and ours is +Z.
@@ -100,14 +125,23 @@ LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir
   UpAxis up = gltf ? UpAxis::y : UpAxis::z;
   if (auto u = j.optional("up_axis")) up = u->one_of({"y", "z"}) == "y" ? UpAxis::y : UpAxis::z;
   LoadedModel model = load_model_file(file, up);
+  source.file = file.string();
+  source.up_axis = up == UpAxis::y ? 'y' : 'z';
+  source.missing_libraries = model.missing_libraries;
+  if (auto u = j.optional("units")) source.units = u->one_of({"m", "cm", "mm", "ft", "in"});
+  if (const double f = metres_per_unit(source.units); f != 1.0)
+    model.mesh = transformed(model.mesh, Transform::scale({f, f, f}));
   if (auto t = j.optional("transform")) model.mesh = transformed(model.mesh, read_transform(*t));
+  source.offset_m = place(j, model.mesh);
   return model;
 }
 
 // Each triangle's scene material: its file material's override, or the file material
 // itself (added to `materials` once, as "<object>/<name>"), or the object's material.
 void assign_model_materials(const JsonReader& j, const LoadedModel& model, std::vector<NamedMaterial>& materials,
-                            const std::vector<MaterialOverride>& overrides, SceneObject& object) {
+                            const std::vector<MaterialOverride>& overrides, std::vector<bool>& override_used,
+                            SceneObject& object) {
+  ModelSource& source = *object.source;
   const bool has_fallback = j.has("material");
   const uint32_t fallback = has_fallback ? find_material(j.required("material"), materials) : 0;
   object.material_index = fallback;
@@ -124,9 +158,13 @@ void assign_model_materials(const JsonReader& j, const LoadedModel& model, std::
       const ModelMaterial& file_material = model.materials[m];
       if (const MaterialOverride* o = best_override(file_material.name, overrides)) {
         it->second = o->material;
+        override_used[static_cast<size_t>(o - overrides.data())] = true;
+        source.materials.push_back({file_material.name, materials[o->material].name, true});
       } else {
         it->second = static_cast<uint32_t>(materials.size());
         materials.push_back({object.name + "/" + file_material.name, material_from_model(file_material)});
+        source.materials.push_back(
+            {file_material.name, materials.back().name + " (" + kind_name(file_material.kind) + ")", false});
       }
     }
     object.triangle_materials.push_back(it->second);
@@ -158,15 +196,18 @@ std::vector<MaterialOverride> read_material_overrides(const JsonReader& j, std::
 
 std::vector<SceneObject> read_objects(const JsonReader& j, std::vector<NamedMaterial>& materials,
                                       const std::vector<MaterialOverride>& overrides,
-                                      const std::filesystem::path& base_dir) {
+                                      const std::filesystem::path& base_dir,
+                                      std::vector<std::string>& unused_overrides) {
   std::vector<SceneObject> out;
+  std::vector<bool> override_used(overrides.size(), false);
   for (const JsonReader& o : j.elements()) {
     const std::string type = o.required("type").one_of({"box", "plane", "mesh"});
     SceneObject object;
     object.name = o.optional("name") ? o.required("name").string() : o.path();
     if (type == "mesh") {
-      LoadedModel model = read_mesh(o, base_dir);
-      assign_model_materials(o, model, materials, overrides, object);
+      object.source.emplace();
+      LoadedModel model = read_mesh(o, base_dir, *object.source);
+      assign_model_materials(o, model, materials, overrides, override_used, object);
       object.mesh = std::move(model.mesh);
     } else {
       object.material_index = find_material(o.required("material"), materials);
@@ -174,6 +215,8 @@ std::vector<SceneObject> read_objects(const JsonReader& j, std::vector<NamedMate
     }
     out.push_back(std::move(object));
   }
+  for (size_t i = 0; i < overrides.size(); ++i)
+    if (!override_used[i]) unused_overrides.push_back(overrides[i].pattern);
   return out;
 }
 

@@ -76,7 +76,9 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   scene.materials = read_materials(root.required("materials"));
   std::vector<MaterialOverride> overrides;
   if (auto o = root.optional("material_overrides")) overrides = read_material_overrides(*o, scene.materials);
-  scene.objects = read_objects(root.required("objects"), scene.materials, overrides, base_dir);
+  scene.material_override_count = overrides.size();
+  scene.objects =
+      read_objects(root.required("objects"), scene.materials, overrides, base_dir, scene.unused_material_overrides);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
   return scene;

@@ -36,9 +36,11 @@ std::vector<MaterialOverride> read_material_overrides(const JsonReader& override
                                                       std::vector<NamedMaterial>& materials);
 Spectrum read_reflectance(const JsonReader& reflectance);
 std::vector<SceneLight> read_lights(const JsonReader& lights, const std::filesystem::path& base_dir);
-// Materials of model files are added to `materials`.
+// Materials of model files are added to `materials`; override patterns that matched
+// no file material are listed in `unused_overrides`.
 std::vector<SceneObject> read_objects(const JsonReader& objects, std::vector<NamedMaterial>& materials,
                                       const std::vector<MaterialOverride>& overrides,
-                                      const std::filesystem::path& base_dir);
+                                      const std::filesystem::path& base_dir,
+                                      std::vector<std::string>& unused_overrides);
 
 }  // namespace skylit

@@ -1,0 +1,155 @@
+#include "skylit/io/scene/scene_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "skylit/geometry/ray_tracer.h"
+#include "skylit/render/camera.h"
+
+namespace skylit {
+namespace {
+
+// Thresholds of the warnings. Beyond 10 km from the origin Embree's single
+// precision spaces points 1 mm apart or more. Half a metre off the ground is more than
+// any modelling slip of a plinth. A building 2 km across is beyond any single
+// building (the tallest is 828 m), and one under 0.2 m across is no building at all:
+// both suggest a unit read wrong (mm or cm as m; km or feet-to-metre mix-ups).
+constexpr double kFarFromOrigin_m = 10e3;
+constexpr double kOffGround_m = 0.5;
+constexpr double kLargestModel_m = 2e3;
+constexpr double kSmallestModel_m = 0.2;
+
+std::string format(const char* pattern, double a, double b = 0, double c = 0) {
+  char text[160];
+  std::snprintf(text, sizeof text, pattern, a, b, c);
+  return text;
+}
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+void check_model_placement(const SceneObject& object, std::vector<std::string>& warnings) {
+  const BoundingBox box = object.mesh.bounds();
+  if (box.empty()) return;
+  const std::string who = "object " + quoted(object.name);
+  const Vec3 c = box.center();
+  const double distance = std::hypot(c.x, c.y);
+  if (distance > kFarFromOrigin_m)
+    warnings.push_back(who + format(" lies %.1f km from the origin: set \"center\": true (or translate it) so that "
+                                    "single-precision ray tracing keeps its detail",
+                                    distance / 1e3));
+  if (box.lo.z > kOffGround_m)
+    warnings.push_back(
+        who + format(" floats %.2f m above the ground (its lowest point): \"place_on_ground\": true?", box.lo.z));
+  if (box.lo.z < -kOffGround_m)
+    warnings.push_back(
+        who + format(" sinks %.2f m below the ground (its lowest point): \"place_on_ground\": true?", -box.lo.z));
+  const Vec3 size = box.size();
+  const double largest = std::max({size.x, size.y, size.z});
+  if (largest > kLargestModel_m)
+    warnings.push_back(
+        who + format(" is %.0f m across: is the file in mm or cm? Set \"units\" (m, cm, mm, ft, in)", largest));
+  if (largest < kSmallestModel_m)
+    warnings.push_back(who + format(" is only %.3f m across: is the file in another unit? Set \"units\"", largest));
+}
+
+// Inside a closed mesh, every ray from the camera leaves through the back of a face.
+// Fourteen directions (the cube's faces and corners) leave no way out unseen.
+void check_camera_inside(const Scene& scene, const RayTracer& tracer, std::vector<std::string>& warnings) {
+  std::vector<Vec3> directions;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double s : {-1.0, 1.0}) directions.push_back({axis == 0 ? s : 0, axis == 1 ? s : 0, axis == 2 ? s : 0});
+  for (double x : {-1.0, 1.0})
+    for (double y : {-1.0, 1.0})
+      for (double z : {-1.0, 1.0}) directions.push_back(normalize({x, y, z}));
+  std::vector<int> back_hits(scene.objects.size(), 0);
+  for (const Vec3& d : directions) {
+    const auto hit = tracer.intersect({scene.camera.position, d});
+    if (!hit || dot(hit->geometric_normal, d) <= 0) return;  // a way out, or a front face
+    ++back_hits[hit->mesh_id];
+  }
+  const auto most = std::max_element(back_hits.begin(), back_hits.end());
+  warnings.push_back("the camera is inside a closed mesh (object " +
+                     quoted(scene.objects[static_cast<size_t>(most - back_hits.begin())].name) +
+                     "): every ray from it meets the back of a face");
+}
+
+// A grid of camera rays that all meet one flat surface of one object.
+void check_camera_view(const Scene& scene, const RayTracer& tracer, std::vector<std::string>& warnings) {
+  constexpr int kColumns = 16, kRows = 9;
+  const PinholeCamera camera(scene.camera, kColumns, kRows);
+  std::optional<Hit> first;
+  for (int row = 0; row < kRows; ++row)
+    for (int column = 0; column < kColumns; ++column) {
+      const auto hit = tracer.intersect(camera.ray_through(column + 0.5, row + 0.5));
+      if (!hit) return;
+      if (!first) first = hit;
+      // Within 1° of the first normal: one plane.
+      if (hit->mesh_id != first->mesh_id || dot(hit->geometric_normal, first->geometric_normal) < 0.99985) return;
+    }
+  warnings.push_back("the camera sees nothing but one surface of object " + quoted(scene.objects[first->mesh_id].name) +
+                     ": is it facing a wall from close by?");
+}
+
+}  // namespace
+
+std::string describe_objects(const Scene& scene) {
+  std::string out;
+  for (const SceneObject& object : scene.objects) {
+    const BoundingBox box = object.mesh.bounds();
+    out += "object " + quoted(object.name) + ": ";
+    if (object.source) {
+      const ModelSource& s = *object.source;
+      out += s.file + ", up axis " + s.up_axis + ", units " + s.units;
+      if (s.offset_m.x != 0 || s.offset_m.y != 0 || s.offset_m.z != 0)
+        out += format(", shifted by (%.3f, %.3f, %.3f) m", s.offset_m.x, s.offset_m.y, s.offset_m.z);
+      out += "\n";
+    } else {
+      out += "primitive\n";
+    }
+    out += "  " + std::to_string(object.mesh.triangles.size()) + " triangles";
+    if (!box.empty()) {
+      const Vec3 size = box.size();
+      out += format("; extent %.2f × %.2f", size.x, size.y) + format(" × %.2f m", size.z);
+      out += format(" (x %.2f to %.2f,", box.lo.x, box.hi.x) + format(" y %.2f to %.2f,", box.lo.y, box.hi.y) +
+             format(" z %.2f to %.2f)", box.lo.z, box.hi.z);
+    }
+    out += "\n";
+    if (object.source && !object.source->materials.empty()) {
+      out += "  materials in the file:\n";
+      for (const auto& m : object.source->materials)
+        out += "    " + quoted(m.file_name) + " → " + m.became + (m.overridden ? " (override)" : "") + "\n";
+    }
+    if (object.triangle_materials.empty() || !object.source || object.source->materials.empty())
+      out += "  material: " + scene.materials[object.material_index].name + "\n";
+  }
+  return out;
+}
+
+std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
+  std::vector<std::string> warnings;
+  for (const SceneObject& object : scene.objects) {
+    if (!object.source) continue;  // boxes and planes are where the user put them
+    check_model_placement(object, warnings);
+    for (const std::string& library : object.source->missing_libraries)
+      warnings.push_back("object " + quoted(object.name) + ": material library " + quoted(library) +
+                         " not found beside its file; its faces take the object's material");
+    if (scene.material_override_count > 0)
+      for (const auto& m : object.source->materials)
+        if (!m.overridden)
+          warnings.push_back("object " + quoted(object.name) + ": material " + quoted(m.file_name) +
+                             " matched no override; used as the file describes it");
+  }
+  for (const std::string& pattern : scene.unused_material_overrides)
+    warnings.push_back("material_overrides: pattern " + quoted(pattern) + " matched no material of any file");
+  if (check_camera && !scene.objects.empty()) {
+    RayTracer tracer;
+    for (const SceneObject& object : scene.objects) tracer.add_mesh(object.mesh);
+    tracer.commit();
+    check_camera_inside(scene, tracer, warnings);
+    check_camera_view(scene, tracer, warnings);
+  }
+  return warnings;
+}
+
+}  // namespace skylit
