@@ -1,6 +1,7 @@
 // `skylit render`: a scene file into one or more images.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -28,7 +29,16 @@ struct RenderArguments {
   int threads = 0;
   bool quiet = false;
   bool verbose = false;
+  bool preview = false;
 };
+
+// A quarter of the pixels and the cheapest sampling, for framing and iterating.
+void make_preview(RenderSettings& render) {
+  render.width = std::max(1, render.width / 2);
+  render.height = std::max(1, render.height / 2);
+  render.samples_per_axis = 1;
+  render.samples_per_pixel = std::min(render.samples_per_pixel, 4);
+}
 
 int run_render(const RenderArguments& args) {
   // Check every output's format and folder before the work, so a typo costs nothing.
@@ -38,7 +48,8 @@ int run_render(const RenderArguments& args) {
     image_format_from_path(out);
     check_output_folder(out);
   }
-  const Scene scene = load_scene(args.scene_file, args.overrides);
+  Scene scene = load_scene(args.scene_file, args.overrides);
+  if (args.preview) make_preview(scene.render);
   // Likely mistakes are said before the work; the camera checks build a ray-tracing
   // structure of their own, so only when asked for.
   if (args.verbose) std::fputs(describe_objects(scene).c_str(), stderr);
@@ -81,6 +92,9 @@ CommandRunner add_render_command(CLI::App& app) {
   render->add_option("--threads", args->threads, "Worker threads (0: all cores); the image does not depend on it")
       ->check(CLI::Range(0, 1024));
   render->add_flag("-q,--quiet", args->quiet, "No progress bar");
+  render->add_flag("--preview", args->preview,
+                   "Half the width and height (a quarter of the pixels), 1×1 samples per pixel (path: at most 4): "
+                   "for framing and iteration");
   render->add_flag("-v,--verbose", args->verbose,
                    "Say what the scene loads (as skylit info) and check the camera for likely mistakes, on stderr");
   return [render, args] { return render->parsed() ? run_render(*args) : -1; };

@@ -132,5 +132,14 @@ TEST(Cli, InfoReportsObjectsAndWarnsWithExitStatus0) {
       << r.output;
 }
 
+// --preview: half the width and height.
+TEST(Cli, PreviewRendersAQuarterOfThePixels) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(48, 32));
+  const auto r = run_skylit("render " + quoted(scene) + " --quiet --preview -o " + quoted(dir.path() / "p.pfm"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_EQ(testing::read_file(dir.path() / "p.pfm").rfind("PF\n24 16\n", 0), 0u);
+}
+
 }  // namespace
 }  // namespace skylit

@@ -6,16 +6,21 @@
 #include "skylit/core/text_file.h"
 #include "skylit/io/scene/scene_overrides.h"
 #include "skylit/io/scene/scene_parts.h"
+#include "skylit/scene/camera_framing.h"
 
 namespace skylit {
 
 namespace {
 
 Camera read_camera(const JsonReader& j) {
-  j.allow_only({"position", "look_at", "up", "vertical_fov_deg", "focal_length_mm", "sensor_height_mm"});
+  j.allow_only({"position", "look_at", "up", "vertical_fov_deg", "focal_length_mm", "sensor_height_mm", "frame",
+                "from_azimuth_deg", "elevation_deg"});
   Camera camera;
-  camera.position = j.required("position").vec3();
-  camera.look_at = j.required("look_at").vec3();
+  // A camera framed from a direction has its position found later, as has every
+  // framed camera its look_at; stand-ins meanwhile.
+  const bool framed_by_direction = j.has("frame") && (j.has("from_azimuth_deg") || j.has("elevation_deg"));
+  camera.position = framed_by_direction && !j.has("position") ? Vec3{0, 0, 0} : j.required("position").vec3();
+  camera.look_at = j.has("frame") ? camera.position + Vec3{0, 1, 0} : j.required("look_at").vec3();
   if (auto up = j.optional("up")) camera.up = up->vec3();
   const Vec3 forward = camera.look_at - camera.position;
   if (length(forward) == 0) j.required("look_at").fail("look_at must differ from position");
@@ -37,6 +42,46 @@ Camera read_camera(const JsonReader& j) {
     camera.vertical_fov_deg = degrees(2.0 * std::atan(sensor_mm / (2.0 * focal_mm)));
   }
   return camera;
+}
+
+// `camera.frame`: the named objects shown whole, from a direction (from_azimuth_deg,
+// elevation_deg) or from `position`, looking at their centre (scene/camera_framing.h).
+void frame_camera(const JsonReader& j, Scene& scene) {
+  const auto frame = j.optional("frame");
+  const bool by_direction = j.has("from_azimuth_deg") || j.has("elevation_deg");
+  if (!frame) {
+    if (by_direction) j.fail("from_azimuth_deg and elevation_deg need \"frame\": the objects to show");
+    return;
+  }
+  if (j.has("look_at")) j.required("look_at").fail("give either look_at or frame, not both");
+  if (j.has("up")) j.required("up").fail("a framed camera chooses its own up");
+  BoundingBox box;
+  const auto names = frame->elements();
+  if (names.empty()) frame->fail_expected("an array of object names");
+  for (const JsonReader& n : names) {
+    const std::string name = n.string();
+    bool found = false;
+    std::string known;
+    for (const SceneObject& object : scene.objects) {
+      known += (known.empty() ? "" : ", ") + object.name;
+      if (object.name == name) box.add(object.mesh.bounds()), found = true;
+    }
+    if (!found) n.fail("no object is named '" + name + "'; objects: " + known);
+  }
+  if (box.empty()) frame->fail("the framed objects have no triangles");
+  const double aspect = static_cast<double>(scene.render.width) / scene.render.height;
+  const double fov = scene.camera.vertical_fov_deg;
+  if (by_direction) {
+    if (j.has("position")) j.required("position").fail("give either position or from_azimuth_deg, not both");
+    const double azimuth = j.required("from_azimuth_deg").number_in(-360, 360);
+    const double elevation = j.required("elevation_deg").number_in(-90, 90);
+    scene.camera = frame_from_direction(box, azimuth, elevation, fov, aspect);
+  } else {
+    const bool fov_given = j.has("vertical_fov_deg") || j.has("focal_length_mm");
+    scene.camera = frame_from_position(box, scene.camera.position, fov, aspect, !fov_given);
+    if (length(scene.camera.look_at - scene.camera.position) == 0)
+      j.required("position").fail("the camera stands at the centre of the framed objects");
+  }
 }
 
 RenderSettings read_render(const JsonReader& j) {
@@ -81,6 +126,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
       read_objects(root.required("objects"), scene.materials, overrides, base_dir, scene.unused_material_overrides);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
+  frame_camera(root.required("camera"), scene);
   return scene;
 }
 
