@@ -30,4 +30,7 @@ $skylit render examples/fig9.json --quiet --set render.width=960 --set render.he
 for figure in fig10a fig10b; do
   $skylit render "examples/$figure.json" --quiet --set render.width=960 --set render.height=540 -o "$out/$figure.png"
 done
+# An architect's model with its own materials (examples/models/house.obj, from
+# scripts/make-house-model.py).
+$skylit render examples/house.json --quiet --set render.width=960 --set render.height=540 -o "$out/house.png"
 echo "Remade $out/"
