@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "skylit/geometry/primitives.h"
+#include "skylit/geometry/vertex_normals.h"
+
+#include <cmath>
 
 namespace skylit {
 namespace {
@@ -36,6 +39,49 @@ TEST(PreparedScene, SurfacePointTakesTheMaterialOfTheTriangleHit) {
   }
   const Ray down{{100, 100, 5}, {0, 0, -1}};
   EXPECT_EQ(prepared.surface_point(down, *prepared.tracer().intersect(down)).material, 0u);
+}
+
+// On a smooth-shaded mesh the normal is the interpolation of the corner normals,
+// facing the viewer, and the point is lifted off the flat facet.
+TEST(PreparedScene, SmoothMeshesShadeWithInterpolatedNormals) {
+  Scene scene;
+  scene.camera = Camera{{0, -40, 10}, {0, 0, 5}, {0, 0, 1}, 50.0};
+  scene.materials.push_back({"white", DiffuseMaterial{Spectrum(0.5f)}});
+  SceneObject drum{"drum", TriangleMesh{}, 0};
+  constexpr int kSides = 8;  // facets 45° apart
+  for (int k = 0; k < kSides; ++k) {
+    const double a = 2 * 3.14159265358979323846 * k / kSides;
+    drum.mesh.vertices.push_back({10 * std::cos(a), 10 * std::sin(a), 0});
+    drum.mesh.vertices.push_back({10 * std::cos(a), 10 * std::sin(a), 20});
+  }
+  for (uint32_t k = 0; k < kSides; ++k) {
+    const uint32_t next = (k + 1) % kSides;
+    drum.mesh.triangles.push_back({2 * k, 2 * next, 2 * next + 1});
+    drum.mesh.triangles.push_back({2 * k, 2 * next + 1, 2 * k + 1});
+  }
+  drum.corner_normals = crease_angle_normals(drum.mesh, 60);
+  scene.objects.push_back(drum);
+  const PreparedScene prepared(scene);
+  // Toward the facet between the vertices at 270° and 315°, a quarter of the way
+  // along it: the normal turns a quarter of the 45° from 270° (radial at the corner)
+  // toward 315°, i.e. points at azimuth-angle 270° + 11.25° in the x-y plane.
+  const double a0 = 3 * 3.14159265358979323846 / 2, a1 = a0 + 3.14159265358979323846 / 4;
+  const Vec3 target =
+      0.75 * Vec3{10 * std::cos(a0), 10 * std::sin(a0), 5} + 0.25 * Vec3{10 * std::cos(a1), 10 * std::sin(a1), 5};
+  const Ray ray{target + Vec3{0, -30, 0}, {0, 1, 0}};
+  const auto hit = prepared.tracer().intersect(ray);
+  ASSERT_TRUE(hit);
+  const SurfacePoint point = prepared.surface_point(ray, *hit);
+  // The normalised mean of two unit normals 45° apart weighted 3:1 turns by
+  // atan(sin 45° / (3 + cos 45°)) = 10.8° from the first (float normals: 1e-5).
+  const double expected =
+      a0 + std::atan(std::sin(3.14159265358979323846 / 4) / (3 + std::cos(3.14159265358979323846 / 4)));
+  EXPECT_NEAR(point.normal.x, std::cos(expected), 1e-5);
+  EXPECT_NEAR(point.normal.y, std::sin(expected), 1e-5);
+  EXPECT_NEAR(point.normal.z, 0, 1e-6);
+  // Lifted outward from the facet: farther from the axis than the flat hit point.
+  const Vec3 flat = ray.origin + hit->t * ray.direction;
+  EXPECT_GT(std::hypot(point.position.x, point.position.y), std::hypot(flat.x, flat.y) + 0.05);
 }
 
 }  // namespace

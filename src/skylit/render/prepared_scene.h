@@ -32,15 +32,24 @@ class PreparedScene {
   const SceneLamps* lamps() const { return lamps_.get(); }     // null without lights
 
   // The surface point a ray meets, its normal facing the ray's origin (surfaces are
-  // two-sided), with the material of the triangle it meets.
+  // two-sided), with the material of the triangle it meets. On a smooth-shaded mesh the
+  // normal is the interpolated shading normal and the point is lifted onto the curved
+  // surface it describes, so that shadow rays do not cut the terminator into facets
+  // (geometry/vertex_normals.h).
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const {
-    Vec3 normal = hit.geometric_normal;
-    if (dot(normal, ray.direction) > 0) normal = -normal;
-    return {ray.origin + hit.t * ray.direction, normal, hit.t, scene_.objects[hit.mesh_id].material_of(hit.triangle)};
+    const SceneObject& object = scene_.objects[hit.mesh_id];
+    SurfacePoint point{ray.origin + hit.t * ray.direction, hit.geometric_normal, hit.t,
+                       object.material_of(hit.triangle)};
+    const bool front = dot(point.normal, ray.direction) <= 0;
+    if (!front) point.normal = -point.normal;
+    if (!object.corner_normals.empty()) shade_smooth(object, hit, ray, front, point);
+    return point;
   }
   const Material& material(uint32_t index) const { return scene_.materials[index].material; }
 
  private:
+  static void shade_smooth(const SceneObject& object, const Hit& hit, const Ray& ray, bool front, SurfacePoint& point);
+
   const Scene& scene_;
   RayTracer tracer_;  // mesh ids are the indices of scene_.objects
   Vec3 to_sun_;

@@ -12,6 +12,7 @@
 #include "skylit/clouds/cloud_layer.h"
 #include "skylit/core/vec3.h"
 #include "skylit/geometry/triangle_mesh.h"
+#include "skylit/geometry/vertex_normals.h"
 #include "skylit/lights/luminaire.h"
 #include "skylit/material/material.h"
 #include "skylit/media/fog_settings.h"
@@ -72,6 +73,9 @@ struct SceneObject {
   // ...a material per triangle is given (a model file's own materials), into
   // Scene::materials; empty otherwise.
   std::vector<uint32_t> triangle_materials{};
+  // Smooth shading normals at each triangle's corners (geometry/vertex_normals.h);
+  // empty: shaded flat with the geometric normal.
+  std::vector<CornerNormals> corner_normals{};
   std::optional<ModelSource> source{};  // for mesh files
 
   uint32_t material_of(uint32_t triangle) const {

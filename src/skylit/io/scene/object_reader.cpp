@@ -10,6 +10,7 @@
 
 #include "skylit/geometry/primitives.h"
 #include "skylit/geometry/transform.h"
+#include "skylit/geometry/vertex_normals.h"
 #include "skylit/io/model/mesh_io.h"
 #include "skylit/io/scene/scene_parts.h"
 #include "skylit/material/model_material.h"
@@ -209,6 +210,13 @@ std::vector<SceneObject> read_objects(const JsonReader& j, std::vector<NamedMate
       LoadedModel model = read_mesh(o, base_dir, *object.source);
       assign_model_materials(o, model, materials, overrides, override_used, object);
       object.mesh = std::move(model.mesh);
+      // Smooth normals in the placed mesh's frame; a mesh that is flat everywhere (to
+      // 0.1°) keeps its geometric normals and needs no memory for them.
+      const double crease = o.optional("crease_angle_deg") ? o.required("crease_angle_deg").number_in(0, 180) : 30.0;
+      if (crease > 0) {
+        object.corner_normals = crease_angle_normals(object.mesh, crease);
+        if (!any_smooth_corner(object.mesh, object.corner_normals, 0.1)) object.corner_normals.clear();
+      }
     } else {
       object.material_index = find_material(o.required("material"), materials);
       object.mesh = type == "box" ? read_box(o) : read_plane(o);

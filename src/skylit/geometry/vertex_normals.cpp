@@ -1,0 +1,85 @@
+#include "skylit/geometry/vertex_normals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "skylit/core/angles.h"
+
+namespace skylit {
+namespace {
+
+Vec3 as_vec3(const std::array<float, 3>& n) { return {n[0], n[1], n[2]}; }
+
+std::array<float, 3> as_floats(const Vec3& v) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+}
+
+}  // namespace
+
+std::vector<CornerNormals> crease_angle_normals(const TriangleMesh& mesh, double crease_angle_deg) {
+  const size_t n = mesh.triangles.size();
+  std::vector<Vec3> unit(n);
+  // Each corner's interior angle: the weight of its triangle's normal there.
+  std::vector<std::array<double, 3>> angle(n);
+  for (size_t t = 0; t < n; ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3 a = mesh.vertices[tri[0]];
+    const Vec3 normal = cross(mesh.vertices[tri[1]] - a, mesh.vertices[tri[2]] - a);
+    const double len = length(normal);
+    unit[t] = len > 0 && std::isfinite(len) ? normal / len : Vec3{0, 0, 0};
+    for (int c = 0; c < 3; ++c) {
+      const Vec3 p = mesh.vertices[tri[c]];
+      const Vec3 e1 = mesh.vertices[tri[(c + 1) % 3]] - p, e2 = mesh.vertices[tri[(c + 2) % 3]] - p;
+      angle[t][c] = std::atan2(length(cross(e1, e2)), dot(e1, e2));
+    }
+  }
+  // The corners at each position.
+  std::map<std::array<double, 3>, std::vector<std::pair<uint32_t, int>>> around;
+  for (size_t t = 0; t < n; ++t)
+    for (int c = 0; c < 3; ++c) {
+      const Vec3& p = mesh.vertices[mesh.triangles[t][c]];
+      around[{p.x, p.y, p.z}].push_back({static_cast<uint32_t>(t), c});
+    }
+  const double cos_crease = std::cos(radians(std::clamp(crease_angle_deg, 0.0, 180.0)));
+  std::vector<CornerNormals> out(n);
+  for (const auto& [position, corners] : around)
+    for (const auto& [t, c] : corners) {
+      // Normals weighted by the corner angles (G. Thürmer and C. A. Wüthrich, "Computing
+      // vertex normals from polygonal facets", J. Graphics Tools 3(1), 1998): unlike
+      // area weights, they do not depend on how a facet was cut into triangles.
+      Vec3 sum{0, 0, 0};
+      for (const auto& [other, oc] : corners)
+        if (other == t || dot(unit[t], unit[other]) >= cos_crease) sum += angle[other][oc] * unit[other];
+      const double len = length(sum);
+      out[t][c] = as_floats(len > 0 && std::isfinite(len) ? sum / len : Vec3{0, 0, 1});
+    }
+  return out;
+}
+
+bool any_smooth_corner(const TriangleMesh& mesh, const std::vector<CornerNormals>& normals, double tolerance_deg) {
+  const double cos_tolerance = std::cos(radians(tolerance_deg));
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3 g = cross(mesh.vertices[tri[1]] - mesh.vertices[tri[0]], mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+    const double len = length(g);
+    if (!(len > 0)) continue;
+    for (const auto& corner : normals[t])
+      if (dot(normalize(as_vec3(corner)), g / len) < cos_tolerance) return true;  // float storage: renormalised
+  }
+  return false;
+}
+
+Vec3 shading_point(const std::array<Vec3, 3>& corners, const CornerNormals& normals, double b1, double b2) {
+  const double b[3] = {1 - b1 - b2, b1, b2};
+  const Vec3 p = b[0] * corners[0] + b[1] * corners[1] + b[2] * corners[2];
+  Vec3 lifted{0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 n = as_vec3(normals[i]);
+    const double below = std::min(0.0, dot(p - corners[i], n));
+    lifted += b[i] * (p - below * n);
+  }
+  return lifted;
+}
+
+}  // namespace skylit
