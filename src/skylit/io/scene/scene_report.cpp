@@ -58,7 +58,7 @@ void check_model_placement(const SceneObject& object, std::vector<std::string>& 
 void check_camera_inside(const Scene& scene, const RayTracer& tracer, std::vector<std::string>& warnings) {
   std::vector<Vec3> directions;
   for (int axis = 0; axis < 3; ++axis)
-    for (double s : {-1.0, 1.0}) directions.push_back({axis == 0 ? s : 0, axis == 1 ? s : 0, axis == 2 ? s : 0});
+    for (double s : {-1.0, 1.0}) directions.emplace_back(axis == 0 ? s : 0, axis == 1 ? s : 0, axis == 2 ? s : 0);
   for (double x : {-1.0, 1.0})
     for (double y : {-1.0, 1.0})
       for (double z : {-1.0, 1.0}) directions.push_back(normalize({x, y, z}));
