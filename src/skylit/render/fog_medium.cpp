@@ -27,9 +27,12 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       sun_above_fog_(sky.direct_sun(std::max(0.0, layer_.top_m())).spectrum()),
       shadows_(meshes, sky.to_sun()),
       sky_light_(layer_, sky),
+      min_sigma_(*std::min_element(layer_.unit_density_extinction_bins().begin(),
+                                   layer_.unit_density_extinction_bins().end())),
       camera_(camera),
       row_length_(kElevationRows),
-      row_inscatter_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))) {
+      row_inscatter_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))),
+      row_depth_(row_inscatter_.size()) {
   const Spectrum& open = sky_light_.unattenuated();
   for (int i = 0; i < kShareAltitudes; ++i) {
     const double z = layer_.bottom_m() + (layer_.top_m() - layer_.bottom_m()) * i / (kShareAltitudes - 1);
@@ -51,9 +54,15 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       const double d = length * u * u;
       if (d > previous) sum += sky_light_.in_scattered(camera_, dir, previous, d);
       previous = d;
-      row_inscatter_[static_cast<size_t>(row * (kDistanceSlices + 1) + k)] = sum;
+      const size_t at = static_cast<size_t>(row * (kDistanceSlices + 1) + k);
+      row_inscatter_[at] = sum;
+      row_depth_[at] = clearest_depth(dir.z, d);
     }
   });
+}
+
+double FogMedium::clearest_depth(double z_v, double distance) const {
+  return min_sigma_ * layer_.column(camera_.z, z_v, 0.0, distance);
 }
 
 Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance) const {
@@ -63,28 +72,53 @@ Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance)
   const float w = static_cast<float>(f - row);
   auto at_row = [&](int r) {
     const double length = row_length_[static_cast<size_t>(r)];
-    const Spectrum* slices = &row_inscatter_[static_cast<size_t>(r * (kDistanceSlices + 1))];
+    const size_t first = static_cast<size_t>(r * (kDistanceSlices + 1));
+    const Spectrum* slices = &row_inscatter_[first];
     if (length <= 0) return slices[0];
     if (distance >= length) return slices[kDistanceSlices];
-    // Linear in distance between the two slices around it.
     const double s = std::sqrt(distance / length) * kDistanceSlices;
     const int k = std::min(static_cast<int>(s), kDistanceSlices - 1);
-    const double d0 = length * k * k / (kDistanceSlices * kDistanceSlices);
-    const double d1 = length * (k + 1) * (k + 1) / (kDistanceSlices * kDistanceSlices);
-    const float t = static_cast<float>((distance - d0) / (d1 - d0));
-    return slices[k] * (1 - t) + slices[k + 1] * t;
+    // Linear in the fog's transmittance e^−τ between the two slices around it: the
+    // light gathered grows as 1 − e^−τ, exactly so where the fog and its sources are
+    // uniform (a level ray), so a dense fog that saturates within the first slices is
+    // read right. Linear in distance where the slices hold no fog.
+    const double depth0 = row_depth_[first + static_cast<size_t>(k)];
+    const double depth1 = row_depth_[first + static_cast<size_t>(k) + 1];
+    double t;
+    if (depth1 - depth0 > 1e-9) {
+      const double depth = std::clamp(clearest_depth(std::sin(row_elevation(r)), distance), depth0, depth1);
+      t = std::expm1(-(depth - depth0)) / std::expm1(-(depth1 - depth0));
+    } else {
+      const double d0 = length * k * k / (kDistanceSlices * kDistanceSlices);
+      const double d1 = length * (k + 1) * (k + 1) / (kDistanceSlices * kDistanceSlices);
+      t = (distance - d0) / (d1 - d0);
+    }
+    const auto w = static_cast<float>(std::clamp(t, 0.0, 1.0));
+    return slices[k] * (1 - w) + slices[k + 1] * w;
   };
   return at_row(row) * (1 - w) + at_row(row + 1) * w;
 }
 
-MediumStretch FogMedium::along(const Ray& ray, double distance) const {
+FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   // Only the part of the ray inside the layer matters; an infinite ray (the sky) leaves
   // the layer within a finite distance unless it runs level inside it.
   const double end = std::isfinite(distance) ? distance : std::numeric_limits<double>::max();
   const RaySpan inside = layer_.clip(ray.origin.z, ray.direction.z, 0.0, end);
-  MediumStretch out{Transmittance(layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, 0.0, end))),
-                    Radiance(0.0f)};
+  Along out;
   if (inside.empty()) return out;
+  const double column = layer_.column(ray.origin.z, ray.direction.z, inside.lo, inside.hi);
+  // Where the fog hides the rest: at kSeenDepth in the clearest bin, the column taken as
+  // spread evenly along the piece (exact for a level ray; elsewhere only where the rest
+  // is hidden anyway).
+  const double clearest_depth = column * min_sigma_;
+  const double seen = clearest_depth > kSeenDepth ? inside.lo + (inside.hi - inside.lo) * (kSeenDepth / clearest_depth)
+                                                  : std::min(inside.hi, end);
+  out.entry_distance = inside.lo;
+  out.seen_distance = seen;
+  out.near.transmittance =
+      Transmittance(layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, inside.lo, seen)));
+  if (seen < inside.hi)
+    out.beyond = Transmittance(layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, seen, inside.hi)));
   Spectrum in_scattered(0.0f);
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
   if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
@@ -99,7 +133,7 @@ MediumStretch FogMedium::along(const Ray& ray, double distance) const {
         sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)), std::min(distance, kLongestRayM));
   else
     in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
-  out.in_scattered = Radiance(in_scattered);
+  out.near.in_scattered = Radiance(in_scattered);
   return out;
 }
 

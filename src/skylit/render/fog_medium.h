@@ -26,8 +26,21 @@ class FogMedium {
             const Vec3& camera);
 
   // What the fog does along `ray` (unit direction) from its origin to `distance` (may be
-  // infinite: the sky).
-  MediumStretch along(const Ray& ray, double distance) const;
+  // infinite: the sky), in two parts for the air that shares the layer (view_path.h):
+  // `near` from the origin to `seen_distance`, which holds all the fog's light, and
+  // beyond it only a transmittance. `seen_distance` is where the ray leaves the layer, or
+  // sooner where the fog's optical depth from the ray's entry reaches kSeenDepth in
+  // every bin: the fog hides whatever lies farther to e^−10, and the air mixed with it
+  // there changes nothing visible. [entry_distance, seen_distance] is empty when the
+  // ray misses the layer.
+  struct Along {
+    MediumStretch near;
+    Transmittance beyond{1.0f};
+    double entry_distance = 0, seen_distance = 0;
+    MediumStretch whole() const { return {near.transmittance * beyond, near.in_scattered}; }
+  };
+  static constexpr double kSeenDepth = 10.0;
+  Along along(const Ray& ray, double distance) const;
 
   // The fog's transmittance toward the sun from a point (0 if the sun is down).
   Transmittance sun_transmittance(const Vec3& point) const;
@@ -46,16 +59,21 @@ class FogMedium {
   FogSkyLight sky_light_;
 
   // The sky light scattered toward the camera along rays of elevation row i, up to
-  // distance slice k: slices at length_i·(k/K)², length_i where the ray leaves the layer.
+  // distance slice k: slices at length_i·(k/K)², length_i where the ray leaves the layer,
+  // read between slices by the fog's transmittance.
   static constexpr int kElevationRows = 257, kDistanceSlices = 48;
   // J(z)/J without fog at altitudes evenly spaced through the layer.
   static constexpr int kShareAltitudes = 129;
   std::vector<Spectrum> sky_share_;
   static double row_elevation(int row);  // radians, crowded toward the horizontal
   Spectrum sky_inscatter_from_camera(double elevation, double distance) const;
+  double min_sigma_;  // σ of the clearest bin (m⁻¹ per unit density)
   Vec3 camera_;
   std::vector<double> row_length_;
   std::vector<Spectrum> row_inscatter_;  // [row][slice]
+  std::vector<double> row_depth_;        // [row][slice]: the clearest bin's optical depth from the camera
+  // The clearest bin's optical depth from the camera along a ray of vertical cosine z_v.
+  double clearest_depth(double z_v, double distance) const;
 };
 
 }  // namespace skylit

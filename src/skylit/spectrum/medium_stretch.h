@@ -22,4 +22,19 @@ inline MediumStretch followed_by(const MediumStretch& near, const MediumStretch&
   return {near.transmittance * far.transmittance, near.seen_through(far.in_scattered)};
 }
 
+// The inverse of followed_by: the far stretch that `whole` adds beyond `near`, both
+// measured from the same origin (the air from the camera to two distances). Clamped to
+// a transmittance in [0, 1] and a non-negative in-scatter, since tables interpolated at
+// two distances need not nest exactly; where `near` lets nothing through, nothing of
+// the far stretch would be seen anyway and it is returned empty.
+MediumStretch remainder_after(const MediumStretch& near, const MediumStretch& whole);
+
+// Two media that fill the same stretch of a ray (the air inside a fog layer), each
+// reported as if it were alone there. Each one's in-scattered light is then also dimmed
+// by the other, by as much as it is on average where that light comes from. Exact when
+// both media are uniform along the stretch (a level ray, Koschmieder's setting): with
+// optical depths τa, τb over a length L and sources Sa, Sb per unit length, a alone
+// gives Sa·L·g(τa) and both together Sa·L·g(τa + τb), g(τ) = (1 − e^−τ)/τ.
+MediumStretch mixed(const MediumStretch& a, const MediumStretch& b);
+
 }  // namespace skylit
