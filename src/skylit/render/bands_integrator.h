@@ -37,8 +37,11 @@ class PixelViewPath {
  public:
   template <typename Make>
   const ViewPath& for_distance(double distance, Make&& make) {
-    const bool same =
-        valid_ && (std::isinf(distance) ? std::isinf(distance_) : std::abs(distance - distance_) <= 0.01 * distance_);
+    // A surface never shares the sky's path, nor the sky a surface's: |d − ∞| ≤ 0.01·∞
+    // would hold, and a surface seen through the sky's path (no aerial perspective) made
+    // a one-pixel line where a ground plane's edge meets the sky.
+    const bool same = valid_ && std::isinf(distance) == std::isinf(distance_) &&
+                      (std::isinf(distance) || std::abs(distance - distance_) <= 0.01 * distance_);
     if (!same) {
       path_ = make();
       distance_ = distance;
