@@ -22,12 +22,22 @@ PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {
 ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
   ViewPath path;
   path.to_sky = !std::isfinite(distance);
-  if (!path.to_sky) path.air_to_fog = sky_.aerial_perspective(ray.direction, distance);
+  if (!path.to_sky) path.near = sky_.aerial_perspective(ray.direction, distance);
   if (const FogMedium* fog = scene_.fog()) {
     const FogMedium::Along along = fog->along(ray, distance);
-    path.fog = along.near;
     path.fog_beyond = along.beyond;
-    if (along.seen_distance > along.entry_distance) split_air_at_fog(ray, distance, along, path);
+    path.fog_whole = along.near.transmittance * along.beyond;
+    if (along.seen_distance > along.entry_distance) {
+      // The air cut where the ray enters the fog and where the fog hides the rest; each
+      // later stretch is what the longer one from the camera adds beyond the shorter.
+      const MediumStretch to_entry =
+          along.entry_distance > 0 ? sky_.aerial_perspective(ray.direction, along.entry_distance) : MediumStretch{};
+      const MediumStretch to_seen = sky_.aerial_perspective(ray.direction, along.seen_distance);
+      path.near = followed_by(to_entry, mixed(remainder_after(to_entry, to_seen), along.near));
+      path.air_near = to_seen.in_scattered;
+      if (!path.to_sky && along.seen_distance < distance)
+        path.air_beyond = remainder_after(to_seen, sky_.aerial_perspective(ray.direction, distance));
+    }
   }
   if (const CloudsInSky* clouds = scene_.clouds()) {
     const CloudsInSky::Along along = clouds->along(ray.origin, ray.direction, distance);
@@ -36,19 +46,6 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
       path.air_to_clouds = sky_.aerial_perspective(ray.direction, along.entry_distance);
   }
   return path;
-}
-
-void BandsIntegrator::split_air_at_fog(const Ray& ray, double distance, const FogMedium::Along& fog,
-                                       ViewPath& path) const {
-  // The air's stretches from the camera to the fog, to where the fog is no longer seen
-  // through and (surfaces) to the surface; each later one is what the longer stretch
-  // adds beyond the shorter.
-  const MediumStretch to_entry =
-      fog.entry_distance > 0 ? sky_.aerial_perspective(ray.direction, fog.entry_distance) : MediumStretch{};
-  const MediumStretch to_exit = sky_.aerial_perspective(ray.direction, fog.seen_distance);
-  path.air_to_fog = to_entry;
-  path.air_in_fog = remainder_after(to_entry, to_exit);
-  if (!path.to_sky) path.air_beyond_fog = remainder_after(to_exit, sky_.aerial_perspective(ray.direction, distance));
 }
 
 Transmittance BandsIntegrator::sky_share(double z) const {

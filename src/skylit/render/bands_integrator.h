@@ -84,8 +84,6 @@ class BandsIntegrator {
  private:
   const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
   ViewPath view_path(const Ray& ray, double distance) const;
-  // Cuts the air along the ray where it enters and leaves the fog layer (view_path.h).
-  void split_air_at_fog(const Ray& ray, double distance, const FogMedium::Along& fog, ViewPath& path) const;
   // The sun's direct normal irradiance at a surface point if it reaches it (0 in
   // shadow or behind the surface).
   Irradiance sun_reaching(const SurfacePoint& point) const;

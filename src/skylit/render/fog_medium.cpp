@@ -65,7 +65,7 @@ double FogMedium::clearest_depth(double z_v, double distance) const {
   return min_sigma_ * layer_.column(camera_.z, z_v, 0.0, distance);
 }
 
-Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance) const {
+Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance, double depth) const {
   const double u = std::clamp(elevation / (0.5 * kPi), -1.0, 1.0);
   const double f = (std::copysign(std::sqrt(std::abs(u)), u) + 1.0) * 0.5 * (kElevationRows - 1);
   const int row = std::min(static_cast<int>(f), kElevationRows - 2);
@@ -86,8 +86,8 @@ Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance)
     const double depth1 = row_depth_[first + static_cast<size_t>(k) + 1];
     double t;
     if (depth1 - depth0 > 1e-9) {
-      const double depth = std::clamp(clearest_depth(std::sin(row_elevation(r)), distance), depth0, depth1);
-      t = std::expm1(-(depth - depth0)) / std::expm1(-(depth1 - depth0));
+      const double within = std::clamp(depth, depth0, depth1);
+      t = std::expm1(-(within - depth0)) / std::expm1(-(depth1 - depth0));
     } else {
       const double d0 = length * k * k / (kDistanceSlices * kDistanceSlices);
       const double d1 = length * (k + 1) * (k + 1) / (kDistanceSlices * kDistanceSlices);
@@ -110,15 +110,18 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   // Where the fog hides the rest: at kSeenDepth in the clearest bin, the column taken as
   // spread evenly along the piece (exact for a level ray; elsewhere only where the rest
   // is hidden anyway).
-  const double clearest_depth = column * min_sigma_;
-  const double seen = clearest_depth > kSeenDepth ? inside.lo + (inside.hi - inside.lo) * (kSeenDepth / clearest_depth)
-                                                  : std::min(inside.hi, end);
+  const double clearest = column * min_sigma_;
+  const double seen =
+      clearest > kSeenDepth ? inside.lo + (inside.hi - inside.lo) * (kSeenDepth / clearest) : std::min(inside.hi, end);
   out.entry_distance = inside.lo;
   out.seen_distance = seen;
-  out.near.transmittance =
-      Transmittance(layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, inside.lo, seen)));
-  if (seen < inside.hi)
+  if (seen < inside.hi) {
+    out.near.transmittance =
+        Transmittance(layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, inside.lo, seen)));
     out.beyond = Transmittance(layer_.transmittance(layer_.column(ray.origin.z, ray.direction.z, seen, inside.hi)));
+  } else {
+    out.near.transmittance = Transmittance(layer_.transmittance(column));
+  }
   Spectrum in_scattered(0.0f);
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
   if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
@@ -129,8 +132,8 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   // Sky light, everywhere along it (the paper's assumption: no shadows for sky light);
   // from the camera's table when the ray starts there.
   if (ray.origin == camera_)
-    in_scattered +=
-        sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)), std::min(distance, kLongestRayM));
+    in_scattered += sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)),
+                                              std::min(distance, kLongestRayM), min_sigma_ * column);
   else
     in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
   out.near.in_scattered = Radiance(in_scattered);

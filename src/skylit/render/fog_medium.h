@@ -66,7 +66,10 @@ class FogMedium {
   static constexpr int kShareAltitudes = 129;
   std::vector<Spectrum> sky_share_;
   static double row_elevation(int row);  // radians, crowded toward the horizontal
-  Spectrum sky_inscatter_from_camera(double elevation, double distance) const;
+  // `depth`: the clearest bin's optical depth along the ray up to `distance`, by which
+  // the slices are read (the rows around the ray, a fraction of a degree away, are
+  // taken to have the same).
+  Spectrum sky_inscatter_from_camera(double elevation, double distance, double depth) const;
   double min_sigma_;  // σ of the clearest bin (m⁻¹ per unit density)
   Vec3 camera_;
   std::vector<double> row_length_;

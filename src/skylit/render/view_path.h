@@ -11,43 +11,39 @@ namespace skylit {
 
 struct ViewPath {
   bool to_sky = false;  // the ray meets no object
-  // The air in three stretches around the part of the ray where the fog is seen
-  // (FogMedium::Along): up to where the ray enters the layer, from there on while the
-  // fog is seen through (mixed with it), and beyond, up to a surface. Without fog, all
-  // the air is `air_to_fog`. For the sky only the first two are set: the sky's radiance
-  // already holds the air along the whole ray.
-  MediumStretch air_to_fog;
-  MediumStretch air_in_fog;
-  MediumStretch air_beyond_fog;
-  MediumStretch fog;               // the fog where it is seen: all its light
-  Transmittance fog_beyond{1.0f};  // the rest of the fog, which hides what lies behind it
+  // From the camera to where the fog hides the rest (FogMedium::Along): the air, and
+  // the fog mixed with the air that shares its layer (BandsIntegrator::view_path).
+  // Without fog, the air up to a surface, and nothing for the sky.
+  MediumStretch near;
+  // Sky rays: the air's own in-scattered light over that same stretch, which the sky's
+  // radiance holds and `near` replaces.
+  Radiance air_near{0.0f};
+  // Beyond `near`: the air up to a surface (not for the sky, whose radiance already
+  // holds it), seen through the rest of the fog.
+  MediumStretch air_beyond;
+  Transmittance fog_beyond{1.0f};
+  Transmittance fog_whole{1.0f};  // the fog's own transmittance along the whole ray
   MediumStretch clouds;
   // Sky rays: the air between the camera and the first cloud they enter.
   MediumStretch air_to_clouds;
 
   // What the camera sees of the light leaving the ray's end toward it (a surface's, or
   // the sky's and the sun's). Clouds are farthest from the camera; the fog lies near the
-  // ground, in the air, and dims the air's light inside it as the air dims the fog's.
+  // ground, in the air.
   Radiance seen_from_camera(const Radiance& leaving) const {
-    Radiance through_clouds = clouds.seen_through(leaving);
-    if (to_sky) {
-      // The sky's radiance S holds the air along the whole ray: S = A + T·S_beyond, with
-      // A and T the air's in-scatter and transmittance up to the clouds. The clouds
-      // replace what lies beyond them and are seen through that air:
-      // T·(cloud + t·S_beyond) + A = t·S + (1 − t)·A + T·cloud.
-      through_clouds = leaving * clouds.transmittance +
-                       air_to_clouds.in_scattered * (Transmittance(1.0f) - clouds.transmittance) +
-                       clouds.in_scattered * air_to_clouds.transmittance;
-    }
-    const MediumStretch near = followed_by(air_to_fog, mixed(air_in_fog, fog));
-    if (!to_sky) return near.seen_through(air_beyond_fog.seen_through(through_clouds) * fog_beyond);
-    // The sky (with its clouds) is S = A_out + T_out·S_beyond, A_out and T_out the air's
-    // up to where the fog stops being seen; T_out·S_beyond is what the fog dims, and
-    // A_out is replaced by the air and fog mixed.
-    const Radiance air_out = followed_by(air_to_fog, air_in_fog).in_scattered;
-    Spectrum beyond = (through_clouds - air_out).spectrum();
-    for (int k = 0; k < kSpectralBins; ++k) beyond[k] = std::max(0.0f, beyond[k]);
-    return near.in_scattered + Radiance(beyond) * (fog.transmittance * fog_beyond);
+    if (!to_sky) return near.seen_through(air_beyond.seen_through(clouds.seen_through(leaving)) * fog_beyond);
+    // The sky's radiance S holds the air along the whole ray: S = A + T·S_beyond, with
+    // A and T the air's in-scatter and transmittance up to the clouds. The clouds
+    // replace what lies beyond them and are seen through that air:
+    // T·(cloud + t·S_beyond) + A = t·S + (1 − t)·A + T·cloud.
+    const Radiance through_clouds = leaving * clouds.transmittance +
+                                    air_to_clouds.in_scattered * (Transmittance(1.0f) - clouds.transmittance) +
+                                    clouds.in_scattered * air_to_clouds.transmittance;
+    // That is S' = A_near + T_near·S_rest, A_near and T_near the air's over `near`:
+    // the fog dims T_near·S_rest, and `near` replaces A_near.
+    Spectrum rest = (through_clouds - air_near).spectrum();
+    for (int k = 0; k < kSpectralBins; ++k) rest[k] = std::max(0.0f, rest[k]);
+    return near.in_scattered + Radiance(rest) * fog_whole;
   }
 };
 
