@@ -1,5 +1,5 @@
 // The display transform's parts against their definitions in docs/images.md: the
-// saturation-based exposure, metering by log-average luminance, the tone curve's shape,
+// saturation-based exposure, the tone curve's shape,
 // and gamut mapping that keeps luminance and hue.
 #include "skylit/io/image/tone_map.h"
 
@@ -18,29 +18,6 @@ TEST(ImageToneMap, ExposureIsSaturationBasedIso100) {
   EXPECT_DOUBLE_EQ(exposure_scale(0), 1 / 1.2);
   EXPECT_DOUBLE_EQ(exposure_scale(10) * 1.2 * 1024, 1.0);
   EXPECT_DOUBLE_EQ(exposure_scale(-3) * 1.2 / 8, 1.0);
-}
-
-TEST(ImageToneMap, LogAverageLuminanceSkipsNonFiniteAndCountsNegativeAsZero) {
-  XyzImage image(4, 1);
-  image.set(0, 0, {0, 1, 0});
-  image.set(1, 0, {0, 100, 0});
-  image.set(2, 0, {NAN, 5, 0});  // skipped
-  image.set(3, 0, {0, -50, 0});  // counts as black: log δ
-  const double d = kLogAverageDelta;
-  const double expected = std::exp((std::log(1 + d) + std::log(100 + d) + std::log(d)) / 3);
-  EXPECT_NEAR(log_average_luminance(image), expected, 1e-12 * expected);
-  EXPECT_NEAR(log_average_luminance(XyzImage(2, 2)), d, 1e-12 * d);  // all black
-}
-
-TEST(ImageToneMap, AutomaticExposureMapsLogAverageToKey) {
-  XyzImage image(2, 1);
-  image.set(0, 0, {0, 20, 0});
-  image.set(1, 0, {0, 2000, 0});
-  const double average = log_average_luminance(image);  // ≈ 200 cd/m²
-  EXPECT_NEAR(average, 200, 0.01);
-  const double ev = automatic_exposure_ev(image);
-  EXPECT_NEAR(ev, std::log2(average / (1.2 * 0.18)), 1e-12);
-  EXPECT_NEAR(exposure_scale(ev) * average, 0.18, 1e-12);
 }
 
 TEST(ImageToneMap, CurveIsIdentityToTheKneeThenASmoothShoulderBelowOne) {

@@ -13,8 +13,7 @@ namespace skylit {
 
 // A pixel is "dark" when both A and B are at or below this luminance: its ratio means
 // nothing, so it is left out of the per-pixel ratio statistics and shown grey in the
-// ratio map. The same δ as automatic exposure's (kLogAverageDelta, docs/images.md): far
-// below a lamp-lit street at 0.3–2 cd/m².
+// ratio map. Far below a lamp-lit street at 0.3–2 cd/m².
 inline constexpr double kDarkLuminance_cd_m2 = 1e-4;
 
 // B/A of one pixel's luminances: exact where both are above kDarkLuminance_cd_m2; a

@@ -10,6 +10,7 @@
 #include "skylit/core/error.h"
 #include "skylit/figures/figure_file.h"
 #include "skylit/io/atomic_file.h"
+#include "skylit/io/image/exposure_meter.h"
 #include "skylit/io/image/image_encoders.h"
 #include "skylit/io/image/tone_map.h"
 
@@ -70,21 +71,15 @@ double contact_sheet_exposure_ev(const ContactSheet& sheet) {
       throw InputError("contact sheet: exposure_ev must be a finite number of stops");
     return *sheet.display.exposure_ev;
   }
-  // mean of ln(δ + Y) over all finite pixels of all cells = the per-image means
-  // (ln of log_average_luminance) weighted by each image's count of finite pixels.
-  double sum = 0, count = 0;
+  // One meter over the pixels of every cell, as if they were one image.
+  std::vector<float> luminances;
   for (const auto& row : sheet.cells)
     for (const XyzImage* image : row) {
       if (!has_pixels(image)) continue;
-      check_image_shape(*image);
-      std::size_t finite = 0;
-      for (std::size_t i = 0; i < image->xyz.size() / 3; ++i) finite += pixel_is_finite(*image, i);
-      if (finite == 0) continue;
-      sum += double(finite) * std::log(log_average_luminance(*image));
-      count += double(finite);
+      const std::vector<float> y = pixel_luminances(*image);
+      luminances.insert(luminances.end(), y.begin(), y.end());
     }
-  const double log_average = count > 0 ? std::exp(sum / count) : kLogAverageDelta;
-  return std::log2(log_average / (1.2 * kExposureKey));  // as automatic_exposure_ev (tone_map.h)
+  return exposure_ev_for_metered(metered_luminance(luminances));
 }
 
 ContactSheetLayout contact_sheet_layout(const ContactSheet& sheet) {

@@ -53,9 +53,8 @@ int sheet_reduction_factor(int width, int max_width);
 // of the means. factor ≥ 1.
 XyzImage reduce_by_box_filter(const XyzImage& image, int factor);
 
-// The exposure of all cells: sheet.display.exposure_ev, or the EV that maps the
-// log-average luminance over every pixel of every cell (finite pixels only, as in
-// log_average_luminance) to kExposureKey. InputError if the given EV is not finite.
+// The exposure of all cells: sheet.display.exposure_ev, or automatic exposure's meter
+// (exposure_meter.h) over every pixel of every cell taken together. InputError if the given EV is not finite.
 double contact_sheet_exposure_ev(const ContactSheet& sheet);
 
 // std::invalid_argument for a caller's mistake: no cells, label counts that do not

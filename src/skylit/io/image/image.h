@@ -15,7 +15,7 @@ namespace skylit {
 
 struct DisplayOptions {
   // Photographic exposure value at ISO 100 (EV100, stops); empty = automatic, chosen
-  // from the image's log-average luminance (see docs/images.md).
+  // by the meter of exposure_meter.h (see docs/images.md).
   std::optional<double> exposure_ev;
 };
 
@@ -34,13 +34,5 @@ void write_image(const XyzImage& image, const std::filesystem::path& path, const
 // The display transform used for PNG, exposed for tests and contact sheets: returns
 // 8-bit sRGB, 3 per pixel, rows top to bottom.
 std::vector<uint8_t> display_srgb8(const XyzImage& image, const DisplayOptions& options);
-
-// exp(mean(log(δ + Y))) over the finite pixels, δ = kLogAverageDelta cd/m² (Reinhard et
-// al. 2002, Eq. 1); negative Y counts as 0. An image with no finite pixel gives δ.
-double log_average_luminance(const XyzImage& image);
-
-// δ of log_average_luminance, cd/m²: small next to any lit surface (a lamp-lit street
-// is 0.3–2 cd/m²), so it only keeps black pixels from sending the average to zero.
-inline constexpr double kLogAverageDelta = 1e-4;
 
 }  // namespace skylit

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "skylit/core/error.h"
+#include "skylit/io/image/exposure_meter.h"
 #include "skylit/io/image/image_encoders.h"
 
 namespace skylit {
@@ -15,22 +16,9 @@ namespace skylit {
 // equation H = q L t / N² (q = 0.65), L_sat = 78 / (q S) · N²/t = 1.2 · 2^EV at S = 100.
 double exposure_scale(double exposure_ev) { return 1.0 / (1.2 * std::exp2(exposure_ev)); }
 
-double log_average_luminance(const XyzImage& image) {
-  check_image_shape(image);
-  const std::size_t n = image.xyz.size() / 3;
-  double sum = 0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!pixel_is_finite(image, i)) continue;  // a renderer bug must not set the exposure
-    sum += std::log(kLogAverageDelta + std::max(0.0, double(image.xyz[3 * i + 1])));
-    ++count;
-  }
-  return count == 0 ? kLogAverageDelta : std::exp(sum / double(count));
-}
+double exposure_ev_for_metered(double metered_luminance) { return std::log2(metered_luminance / (1.2 * kExposureKey)); }
 
-double automatic_exposure_ev(const XyzImage& image) {
-  return std::log2(log_average_luminance(image) / (1.2 * kExposureKey));
-}
+double automatic_exposure_ev(const XyzImage& image) { return exposure_ev_for_metered(metered_luminance(image)); }
 
 double tone_curve(double l) {
   if (!(l > 0)) return 0;

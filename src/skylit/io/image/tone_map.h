@@ -2,8 +2,8 @@
 // exactly in docs/images.md):
 //   1. exposure: a saturation-based ISO 100 camera at EV100 maps L_max = 1.2·2^EV cd/m²
 //      to 1 (ISO 12232 saturation speed; Lagarde & de Rousiers, "Moving Frostbite to
-//      PBR", SIGGRAPH 2014 course notes); automatic EV maps the log-average luminance
-//      to the key 0.18 (Reinhard et al., "Photographic tone reproduction", 2002);
+//      PBR", SIGGRAPH 2014 course notes); automatic EV maps the metered luminance
+//      (exposure_meter.h) to the key 0.18 (Reinhard et al., "Photographic tone reproduction", 2002);
 //   2. a tone curve on luminance only, so chromaticity is kept: the identity up to a
 //      knee, then an exponential shoulder that approaches 1 smoothly;
 //   3. colours outside the sRGB gamut are desaturated toward the pixel's own grey,
@@ -25,8 +25,11 @@ inline constexpr double kToneKnee = 0.5;
 // Exposure scale in 1/(cd/m²) for EV100 `exposure_ev`: 1 / (1.2 · 2^EV).
 double exposure_scale(double exposure_ev);
 
-// The EV100 that maps log_average_luminance(image) to kExposureKey:
-// log2(L_avg / (1.2 · kExposureKey)).
+// The EV100 that maps a metered luminance L (cd/m²) to kExposureKey:
+// log2(L / (1.2 · kExposureKey)).
+double exposure_ev_for_metered(double metered_luminance);
+// Automatic exposure: exposure_ev_for_metered(metered_luminance(image)), the meter of
+// exposure_meter.h.
 double automatic_exposure_ev(const XyzImage& image);
 
 // The tone curve on exposed luminance L (dimensionless): 0 for L ≤ 0; L up to the knee
