@@ -10,8 +10,8 @@
 
 #include "commands.h"
 #include "progress_bar.h"
+#include "render_outputs.h"
 #include "skylit/core/error.h"
-#include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/io/scene/scene_report.h"
@@ -44,10 +44,7 @@ int run_render(const RenderArguments& args) {
   // Check every output's format and folder before the work, so a typo costs nothing.
   std::vector<std::string> all_outputs = args.outputs;
   all_outputs.insert(all_outputs.end(), args.standard_error_outputs.begin(), args.standard_error_outputs.end());
-  for (const std::string& out : all_outputs) {
-    image_format_from_path(out);
-    check_output_folder(out);
-  }
+  for (const std::string& out : all_outputs) check_render_output(out);
   Scene scene = load_scene(args.scene_file, args.overrides);
   if (args.preview) make_preview(scene.render);
   // Likely mistakes are said before the work; the camera checks build a ray-tracing
@@ -65,7 +62,7 @@ int run_render(const RenderArguments& args) {
   const Renderer::Result result = renderer.render_with_error(options);
   DisplayOptions display;
   display.exposure_ev = scene.render.exposure_ev;
-  for (const std::string& out : args.outputs) write_image(result.image, out, display);
+  for (const std::string& out : args.outputs) write_render_output(out, result.image, scene, display);
   for (const std::string& out : args.standard_error_outputs) write_image(*result.standard_error, out, display);
   return 0;
 }
@@ -81,7 +78,8 @@ CommandRunner add_render_command(CLI::App& app) {
                    "Output image; repeat for several. By extension: .exr and .pfm hold linear RGB "
                    "(sRGB primaries) scaled so 0.2126R+0.7152G+0.0722B is luminance in cd/m² "
                    "(EXR adds a Y channel in cd/m²); .hdr is Radiance RGBE (luminance = 179 × "
-                   "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image")
+                   "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image; *.falsecolor.png "
+                   "is luminance in false colour with a legend (render.false_colour)")
       ->required();
   render->add_option("--standard-error", args->standard_error_outputs,
                      "With render.integrator \"path\": also write each pixel's standard error of the mean "

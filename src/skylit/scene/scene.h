@@ -16,6 +16,7 @@
 #include "skylit/lights/luminaire.h"
 #include "skylit/material/material.h"
 #include "skylit/media/fog_settings.h"
+#include "skylit/scene/output_settings.h"
 
 namespace skylit {
 
@@ -49,6 +50,7 @@ struct RenderSettings {
   // bands: the clouds' multiple scattering by the two-stream slab, or the paper's Eq. 16
   // as printed (clouds/cloud_scattering.h)
   CloudLightModel cloud_light = CloudLightModel::two_stream;
+  FalseColourSettings false_colour{};  // for *.falsecolor.png outputs
 };
 
 // Where a mesh object came from and what loading did to it (`skylit info`).

@@ -85,8 +85,8 @@ void frame_camera(const JsonReader& j, Scene& scene) {
 }
 
 RenderSettings read_render(const JsonReader& j) {
-  j.allow_only(
-      {"width", "height", "exposure_ev", "samples_per_axis", "integrator", "samples_per_pixel", "seed", "cloud_light"});
+  j.allow_only({"width", "height", "exposure_ev", "samples_per_axis", "integrator", "samples_per_pixel", "seed",
+                "cloud_light", "false_colour"});
   RenderSettings render;
   if (auto w = j.optional("width")) render.width = w->integer_in(1, 16384);
   if (auto h = j.optional("height")) render.height = h->integer_in(1, 16384);
@@ -102,6 +102,7 @@ RenderSettings read_render(const JsonReader& j) {
         c->one_of({"two_stream", "paper"}) == "paper" ? CloudLightModel::paper : CloudLightModel::two_stream;
   if (auto s = j.optional("samples_per_pixel")) render.samples_per_pixel = s->integer_in(1, 1 << 20);
   if (auto s = j.optional("seed")) render.seed = static_cast<uint64_t>(s->integer_in(0, 1 << 30));
+  if (auto f = j.optional("false_colour")) render.false_colour = read_false_colour(*f);
   return render;
 }
 

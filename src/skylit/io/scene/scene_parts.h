@@ -19,6 +19,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
 void read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
 AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
 FogSettings read_fog(const JsonReader& fog);
+FalseColourSettings read_false_colour(const JsonReader& false_colour);
 void read_clouds(const JsonReader& clouds, Scene& scene);
 std::vector<NamedMaterial> read_materials(const JsonReader& materials);
 // One material: a preset's name, {"preset": name, …} or an object with a type.
