@@ -7,6 +7,7 @@
 #include "skylit/figures/false_colour.h"
 #include "skylit/io/atomic_file.h"
 #include "skylit/io/image/exposure_meter.h"
+#include "skylit/io/image/radiance_view.h"
 
 namespace skylit::cli {
 
@@ -18,7 +19,9 @@ void check_render_output(const std::string& path) {
 void write_render_output(const std::string& path, const XyzImage& image, const Scene& scene,
                          const DisplayOptions& display) {
   if (!is_false_colour_path(path)) {
-    write_image(image, path, display);
+    DisplayOptions with_view = display;
+    with_view.radiance_view = radiance_view_options(scene.camera, image.width, image.height);
+    write_image(image, path, with_view);
     return;
   }
   write_false_colour(image, pixel_luminances(image), path, scene.render.false_colour, display);

@@ -109,9 +109,19 @@ TEST(ImageRgbe, HeaderFollowsRadiance) {
   };
   EXPECT_TRUE(has("FORMAT=32-bit_rle_rgbe"));
   EXPECT_TRUE(has("PRIMARIES= 0.6400 0.3300 0.2900 0.6000 0.1500 0.0600 0.3333 0.3333"));
-  for (const std::string& l : hdr.header) EXPECT_NE(l.rfind("EXPOSURE=", 0), 0u) << l;
+  EXPECT_TRUE(has("EXPOSURE=1"));                                                   // absolute values: nothing to undo
+  for (const std::string& l : hdr.header) EXPECT_NE(l.rfind("VIEW=", 0), 0u) << l;  // none given
   EXPECT_EQ(hdr.resolution, "-Y 3 +X 40");
   EXPECT_EQ(hdr.encoded_rows, 3);
+}
+
+TEST(ImageRgbe, ViewLineCarriesTheCamera) {
+  test::ScratchFolder dir("hdr-view");
+  DisplayOptions options;
+  options.radiance_view = "-vta -vp 0 0 1.6 -vd 0 1 0 -vu 0 0 1 -vh 180 -vv 180";
+  write_image(varied_image(), dir / "out.hdr", options);
+  const HdrFile hdr = decode_hdr(test::read_bytes(dir / "out.hdr"));
+  EXPECT_NE(std::find(hdr.header.begin(), hdr.header.end(), "VIEW= " + *options.radiance_view), hdr.header.end());
 }
 
 // Tolerance 1 %: RGBE keeps an 8-bit mantissa under a shared exponent; the largest

@@ -46,7 +46,7 @@ int percentile(std::vector<int> v, double p) {
 // and short of the car: the lit road. (Farther on, the road lies under the lamps' glow
 // in the fog near the horizon.) Found by meeting each pixel centre's ray with the ground.
 std::vector<std::pair<int, int>> lit_road_pixels(const Scene& scene) {
-  const PinholeCamera camera(scene.camera, kWidth, kHeight);
+  const ImageCamera camera(scene.camera, kWidth, kHeight);
   std::vector<std::pair<int, int>> out;
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {

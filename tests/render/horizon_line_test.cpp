@@ -37,7 +37,7 @@ Scene horizon_crop(double height_m, double plane_size_m) {
 double worst_outside_exact_range(const Scene& scene) {
   const Renderer renderer(scene);
   const XyzImage image = renderer.render();
-  const PinholeCamera camera(scene.camera, scene.render.width, scene.render.height);
+  const ImageCamera camera(scene.camera, scene.render.width, scene.render.height);
   const int x = scene.render.width / 2;
   double worst = 0;
   for (int y = 0; y < image.height; ++y) {

@@ -30,7 +30,7 @@ TEST(LampGlowImage, PixelCentresMatchExactGlow) {
   const FogLayer layer(*scene.fog);
   const SceneLamps lamps(scene.lights, tracer, meshes, &layer);
   const int width = 480, height = 270;
-  const PinholeCamera camera(scene.camera, width, height);
+  const ImageCamera camera(scene.camera, width, height);
   const PrimaryHits centre_hits(camera, width, height, [&](const Ray& ray) {
     PrimaryHit primary;
     if (const std::optional<Hit> hit = tracer.intersect(ray)) {

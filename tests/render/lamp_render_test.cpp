@@ -161,7 +161,7 @@ TEST(LampRender, LampSeenDirectlyLightsItsPixel) {
   scene.camera = Camera{{0, -20, 5}, {0, 0, 5}, {0, 0, 1}, 20.0};
   scene.render = RenderSettings{33, 33, std::nullopt, 1};
   const XyzImage image = Renderer(scene).render({1, {}});
-  const PinholeCamera camera(scene.camera, 33, 33);
+  const ImageCamera camera(scene.camera, 33, 33);
   const double solid_angle = camera.pixel_solid_angle(16.5, 16.5);
   const double expected = 1000.0 / (20.0 * 20.0);
   EXPECT_NEAR(image.at(16, 16).y * solid_angle, expected, 0.01 * expected);

@@ -18,7 +18,7 @@ namespace {
 // The largest |offset| of the box's corners from the image centre, as a fraction of
 // the half width or half height, whichever is larger; -1 if a corner is off the image.
 double corner_reach(const Camera& camera, const BoundingBox& box, int width, int height) {
-  const PinholeCamera pinhole(camera, width, height);
+  const ImageCamera pinhole(camera, width, height);
   double reach = 0;
   for (int k = 0; k < 8; ++k) {
     const Vec3 corner{k & 1 ? box.hi.x : box.lo.x, k & 2 ? box.hi.y : box.lo.y, k & 4 ? box.hi.z : box.lo.z};

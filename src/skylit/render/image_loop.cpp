@@ -45,7 +45,7 @@ bool is_edge(const XyzImage& image, const PrimaryHits& hits, int x, int y) {
 XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integrator, const RenderOptions& options) {
   const RenderSettings& settings = scene.scene().render;
   const int width = settings.width, height = settings.height, n = settings.samples_per_axis;
-  const PinholeCamera camera(scene.scene().camera, width, height);
+  const ImageCamera camera(scene.scene().camera, width, height);
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
   // What every pixel's centre sees, then the caches made from it: the sky light at a
@@ -66,6 +66,7 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
   // A pixel's value from a regular grid × grid of samples inside it, averaged with equal
   // weights. Grid 1 is the pixel's centre, whose hit is known already.
   auto pixel_value = [&](int x, int y, int grid) {
+    if (!camera.sees(x + 0.5, y + 0.5)) return Spectrum(0.0f);  // outside a fisheye's circle: black
     PixelViewPath pixel_path;
     if (grid == 1) {
       const SampleContext context{x + 0.5, y + 0.5, caches, &pixel_path};

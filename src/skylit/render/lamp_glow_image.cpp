@@ -42,7 +42,7 @@ bool interpolates(const std::array<Xyz, 4>& c, const Xyz& middle, double u, doub
 
 }  // namespace
 
-LampGlowImage::LampGlowImage(const PinholeCamera& camera, const PrimaryHits& centre_hits, const SceneLamps& lamps)
+LampGlowImage::LampGlowImage(const ImageCamera& camera, const PrimaryHits& centre_hits, const SceneLamps& lamps)
     : camera_(camera),
       lamps_(lamps),
       width_(centre_hits.width()),

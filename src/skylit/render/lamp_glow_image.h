@@ -45,7 +45,7 @@ class LampGlowImage {
  public:
   // Runs the quadtree over the image (in the calling TBB arena, in parallel), given what
   // the ray through each pixel's centre meets.
-  LampGlowImage(const PinholeCamera& camera, const PrimaryHits& centre_hits, const SceneLamps& lamps);
+  LampGlowImage(const ImageCamera& camera, const PrimaryHits& centre_hits, const SceneLamps& lamps);
 
   // The glow's radiance (W m⁻² sr⁻¹ nm⁻¹) at a pixel's centre.
   const Spectrum& centre_glow(int x, int y) const { return centre(x, y).glow; }
@@ -66,7 +66,7 @@ class LampGlowImage {
   const Centre& centre(int x, int y) const { return centres_[static_cast<size_t>(y) * width_ + x]; }
   Centre& centre(int x, int y) { return centres_[static_cast<size_t>(y) * width_ + x]; }
 
-  const PinholeCamera& camera_;
+  const ImageCamera& camera_;
   const SceneLamps& lamps_;
   int width_, height_;
   std::vector<Centre> centres_;

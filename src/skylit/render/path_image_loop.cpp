@@ -26,7 +26,7 @@ PathImage render_path_image(const PreparedScene& scene, const PathIntegrator& in
                             const RenderOptions& options) {
   const RenderSettings& settings = scene.scene().render;
   const int width = settings.width, height = settings.height, samples = settings.samples_per_pixel;
-  const PinholeCamera camera(scene.scene().camera, width, height);
+  const ImageCamera camera(scene.scene().camera, width, height);
   Film film(width, height);
   XyzImage standard_error(width, height);
   const int tasks = (height + kRowsPerTask - 1) / kRowsPerTask;
@@ -38,6 +38,7 @@ PathImage render_path_image(const PreparedScene& scene, const PathIntegrator& in
       for (int task = range.begin(); task != range.end(); ++task) {
         for (int y = task * kRowsPerTask; y < std::min(height, (task + 1) * kRowsPerTask); ++y)
           for (int x = 0; x < width; ++x) {
+            if (!camera.sees(x + 0.5, y + 0.5)) continue;  // outside a fisheye's circle: black
             Spectrum sum(0.0f);
             double y_sum = 0, y_squares = 0;
             for (int s = 0; s < samples; ++s) {

@@ -4,7 +4,7 @@
 
 namespace skylit {
 
-PrimaryHits::PrimaryHits(const PinholeCamera& camera, int width, int height, const Trace& trace)
+PrimaryHits::PrimaryHits(const ImageCamera& camera, int width, int height, const Trace& trace)
     : width_(width), height_(height), hits_(static_cast<size_t>(width) * height) {
   tbb::parallel_for(0, height, [&](int y) {
     for (int x = 0; x < width; ++x)

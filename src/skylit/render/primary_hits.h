@@ -29,7 +29,7 @@ class PrimaryHits {
   using Trace = std::function<PrimaryHit(const Ray& ray)>;
   // Traces the centre of every pixel of a width × height image, in parallel (in the
   // calling TBB arena).
-  PrimaryHits(const PinholeCamera& camera, int width, int height, const Trace& trace);
+  PrimaryHits(const ImageCamera& camera, int width, int height, const Trace& trace);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -6,7 +6,7 @@
 
 namespace skylit {
 
-void add_seen_lamps(const PreparedScene& scene, const PinholeCamera& camera, Film& film) {
+void add_seen_lamps(const PreparedScene& scene, const ImageCamera& camera, Film& film) {
   if (!scene.lamps()) return;
   const SceneLamps& lamps = *scene.lamps();
   const Vec3& eye = scene.scene().camera.position;

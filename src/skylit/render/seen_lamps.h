@@ -9,6 +9,6 @@
 
 namespace skylit {
 
-void add_seen_lamps(const PreparedScene& scene, const PinholeCamera& camera, Film& film);
+void add_seen_lamps(const PreparedScene& scene, const ImageCamera& camera, Film& film);
 
 }  // namespace skylit

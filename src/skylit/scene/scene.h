@@ -20,12 +20,30 @@
 
 namespace skylit {
 
-// A pinhole camera.
+// How directions around the camera map onto the image (docs/scene-format.md, "camera";
+// render/camera.h has the formulas). θ is the angle from the viewing direction.
+enum class Projection {
+  perspective,            // a pinhole: planar, straight lines stay straight
+  fisheye_equidistant,    // angular fisheye: the distance from the centre ∝ θ (Radiance -vta)
+  fisheye_equisolid,      // equal-area fisheye: ∝ sin(θ/2)
+  fisheye_hemispherical,  // orthographic fisheye: ∝ sin θ (Radiance -vth)
+  cylindrical,            // panorama: azimuth linear across, perspective up and down (Radiance -vtc)
+  equirectangular,        // azimuth and elevation both linear: a full sphere in a 2:1 image
+};
+
 struct Camera {
   Vec3 position;
   Vec3 look_at;
   Vec3 up{0, 0, 1};
+  // The angle the image's height spans (perspective, cylindrical: tan-spaced; fisheyes:
+  // the image circle across the height; equirectangular: elevation).
   double vertical_fov_deg = 50.0;
+  Projection projection = Projection::perspective;
+  // cylindrical and equirectangular: the azimuth the image's width spans.
+  double horizontal_fov_deg = 360.0;
+  // perspective: lens shift, the image moved right and up by these fractions of its
+  // width and height (Radiance -vs, -vl), for verticals that stay vertical.
+  double shift_x = 0, shift_y = 0;
 };
 
 // Where the sun stands, seen from the site: given directly, or computed from the
@@ -42,7 +60,7 @@ enum class Integrator { bands, path };
 struct RenderSettings {
   int width = 1280;
   int height = 720;
-  std::optional<double> exposure_ev;  // empty: automatic from the log-average luminance
+  std::optional<double> exposure_ev;  // empty: automatic (io/image/exposure_meter.h)
   int samples_per_axis = 2;           // bands: a regular grid of n × n samples per pixel
   Integrator integrator = Integrator::bands;
   int samples_per_pixel = 64;  // path: paths per pixel, at random places in it

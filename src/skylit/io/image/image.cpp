@@ -62,7 +62,7 @@ void write_image(const XyzImage& image, const std::filesystem::path& path, const
       bytes = encode_pfm(image);
       break;
     case ImageFormat::hdr:
-      bytes = encode_rgbe(image);
+      bytes = encode_rgbe(image, options);
       break;
     case ImageFormat::png:
       bytes = encode_png(image, options);

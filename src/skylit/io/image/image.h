@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "skylit/spectrum/xyz_image.h"
@@ -17,6 +18,9 @@ struct DisplayOptions {
   // Photographic exposure value at ISO 100 (EV100, stops); empty = automatic, chosen
   // by the meter of exposure_meter.h (see docs/images.md).
   std::optional<double> exposure_ev;
+  // .hdr: Radiance's view options for the header's VIEW= line (radiance_view.h); empty
+  // for none.
+  std::optional<std::string> radiance_view{};
 };
 
 enum class ImageFormat { png, exr, pfm, hdr };

@@ -20,8 +20,9 @@ using Bytes = std::vector<uint8_t>;
 Bytes encode_exr(const XyzImage& image);
 // Portable Float Map, little-endian float R, G, B, rows bottom to top.
 Bytes encode_pfm(const XyzImage& image);
-// Radiance RGBE in Radiance's RGB, values in its units (luminance / 179).
-Bytes encode_rgbe(const XyzImage& image);
+// Radiance RGBE in Radiance's RGB, values in its units (luminance / 179), with
+// options.radiance_view as the header's VIEW= line.
+Bytes encode_rgbe(const XyzImage& image, const DisplayOptions& options);
 // PNG of display_srgb8: 8-bit sRGB with an sRGB chunk.
 Bytes encode_png(const XyzImage& image, const DisplayOptions& options);
 // PNG of `width` × `height` 8-bit sRGB pixels (3 per pixel, rows top to bottom), with an

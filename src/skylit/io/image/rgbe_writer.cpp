@@ -68,15 +68,17 @@ void put_component(Bytes& out, const std::vector<uint8_t>& v) {
 
 }  // namespace
 
-Bytes encode_rgbe(const XyzImage& image) {
+Bytes encode_rgbe(const XyzImage& image, const DisplayOptions& options) {
   const int w = image.width, h = image.height;
   const RgbPrimaries& p = kRadiancePrimaries;
   char primaries[128];
   std::snprintf(primaries, sizeof primaries, "PRIMARIES= %.4f %.4f %.4f %.4f %.4f %.4f %.4f %.4f\n", p.red_x, p.red_y,
                 p.green_x, p.green_y, p.blue_x, p.blue_y, p.white_x, p.white_y);
-  // No EXPOSURE line: the pixel values are Radiance's absolute units as they stand.
-  const std::string header = std::string("#?RADIANCE\nSOFTWARE=skylit\n") + primaries +
-                             "FORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(h) + " +X " + std::to_string(w) + "\n";
+  // EXPOSURE=1: the pixel values are Radiance's absolute units as they stand, so tools
+  // that undo a picture's exposure (pvalue -o, evalglare) read them unchanged.
+  std::string header = std::string("#?RADIANCE\nSOFTWARE=skylit\n") + primaries + "EXPOSURE=1\n";
+  if (options.radiance_view) header += "VIEW= " + *options.radiance_view + "\n";
+  header += "FORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(h) + " +X " + std::to_string(w) + "\n";
   Bytes out(header.begin(), header.end());
 
   const Matrix3 radiance_from_xyz = rgb_from_xyz_matrix(kRadiancePrimaries);

@@ -14,7 +14,7 @@ namespace {
 
 Camera read_camera(const JsonReader& j) {
   j.allow_only({"position", "look_at", "up", "vertical_fov_deg", "focal_length_mm", "sensor_height_mm", "frame",
-                "from_azimuth_deg", "elevation_deg"});
+                "from_azimuth_deg", "elevation_deg", "projection", "horizontal_fov_deg", "lens_shift"});
   Camera camera;
   // A camera framed from a direction has its position found later, as has every
   // framed camera its look_at; stand-ins meanwhile.
@@ -33,7 +33,10 @@ Camera read_camera(const JsonReader& j) {
   if (fov && focal) j.fail("give either vertical_fov_deg or focal_length_mm, not both");
   if (auto sensor = j.optional("sensor_height_mm"); sensor && !focal)
     sensor->fail("sensor_height_mm needs focal_length_mm");
-  if (fov) {
+  read_camera_projection(j, camera);
+  if (camera.projection != Projection::perspective) {
+    if (focal) focal->fail("focal_length_mm is for the perspective projection; give vertical_fov_deg");
+  } else if (fov) {
     camera.vertical_fov_deg = fov->number_in(0.01, 179);
   } else if (focal) {
     // A full-frame sensor (24 mm high) unless told otherwise.

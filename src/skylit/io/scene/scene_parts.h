@@ -20,6 +20,9 @@ void read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
 AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
 FogSettings read_fog(const JsonReader& fog);
 FalseColourSettings read_false_colour(const JsonReader& false_colour);
+// The camera's projection, its angles of view and lens shift (all but the perspective
+// projection's vertical_fov_deg and focal length, which read_camera reads).
+void read_camera_projection(const JsonReader& camera_block, Camera& camera);
 void read_clouds(const JsonReader& clouds, Scene& scene);
 std::vector<NamedMaterial> read_materials(const JsonReader& materials);
 // One material: a preset's name, {"preset": name, …} or an object with a type.

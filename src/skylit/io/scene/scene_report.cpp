@@ -77,7 +77,7 @@ void check_camera_inside(const Scene& scene, const RayTracer& tracer, std::vecto
 // A grid of camera rays that all meet one flat surface of one object.
 void check_camera_view(const Scene& scene, const RayTracer& tracer, std::vector<std::string>& warnings) {
   constexpr int kColumns = 16, kRows = 9;
-  const PinholeCamera camera(scene.camera, kColumns, kRows);
+  const ImageCamera camera(scene.camera, kColumns, kRows);
   std::optional<Hit> first;
   for (int row = 0; row < kRows; ++row)
     for (int column = 0; column < kColumns; ++column) {
