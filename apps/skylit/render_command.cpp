@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,7 +63,10 @@ int run_render(const RenderArguments& args) {
   const Renderer::Result result = renderer.render_with_error(options);
   DisplayOptions display;
   display.exposure_ev = scene.render.exposure_ev;
-  for (const std::string& out : args.outputs) write_render_output(out, result.image, scene, display);
+  std::optional<PixelLayers> layers;
+  if (outputs_need_layers(args.outputs, scene)) layers = trace_pixel_layers(renderer.prepared());
+  for (const std::string& out : args.outputs)
+    write_render_output(out, result.image, scene, display, layers ? &*layers : nullptr);
   for (const std::string& out : args.standard_error_outputs) write_image(*result.standard_error, out, display);
   return 0;
 }
@@ -79,7 +83,8 @@ CommandRunner add_render_command(CLI::App& app) {
                    "(sRGB primaries) scaled so 0.2126R+0.7152G+0.0722B is luminance in cd/m² "
                    "(EXR adds a Y channel in cd/m²); .hdr is Radiance RGBE (luminance = 179 × "
                    "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image; *.falsecolor.png "
-                   "is luminance in false colour with a legend (render.false_colour)")
+                   "is luminance in false colour with a legend (render.false_colour); .json or .csv are "
+                   "luminance statistics per object, material and probe, and DGP for a 180° fisheye")
       ->required();
   render->add_option("--standard-error", args->standard_error_outputs,
                      "With render.integrator \"path\": also write each pixel's standard error of the mean "

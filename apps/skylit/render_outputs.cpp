@@ -1,8 +1,10 @@
 // Writing a render's outputs by their names (render_outputs.h).
 #include "render_outputs.h"
 
-#include <vector>
+#include <cctype>
+#include <filesystem>
 
+#include "skylit/assess/render_statistics.h"
 #include "skylit/core/error.h"
 #include "skylit/figures/false_colour.h"
 #include "skylit/io/atomic_file.h"
@@ -11,20 +13,68 @@
 
 namespace skylit::cli {
 
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool is_statistics_path(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".json" || ext == ".csv";
+}
+
+// The EXR data layers: object index (−1 for none), distance (m), normal (x, y, z).
+ExrLayers exr_layers(const PixelLayers& layers, const Scene& scene) {
+  ExrLayers out;
+  std::vector<float> object(layers.object.begin(), layers.object.end());
+  out.channels.emplace_back("object", std::move(object));
+  out.channels.emplace_back("distance", layers.distance_m);
+  const std::size_t n = layers.object.size();
+  for (int c = 0; c < 3; ++c) {
+    std::vector<float> component(n);
+    for (std::size_t i = 0; i < n; ++i) component[i] = layers.normal[3 * i + c];
+    out.channels.emplace_back(std::string("normal.") + "XYZ"[c], std::move(component));
+  }
+  for (const SceneObject& o : scene.objects) out.object_names.push_back(o.name);  // the loader names every object
+  return out;
+}
+
+}  // namespace
+
 void check_render_output(const std::string& path) {
-  image_format_from_path(path);
+  if (!is_statistics_path(path)) image_format_from_path(path);
   check_output_folder(path);
 }
 
+bool outputs_need_layers(const std::vector<std::string>& paths, const Scene& scene) {
+  for (const std::string& p : paths)
+    if (is_statistics_path(p) || (scene.render.exr_layers && lower_extension(p) == ".exr")) return true;
+  return false;
+}
+
 void write_render_output(const std::string& path, const XyzImage& image, const Scene& scene,
-                         const DisplayOptions& display) {
-  if (!is_false_colour_path(path)) {
-    DisplayOptions with_view = display;
-    with_view.radiance_view = radiance_view_options(scene.camera, image.width, image.height);
-    write_image(image, path, with_view);
+                         const DisplayOptions& display, const PixelLayers* layers) {
+  if (is_statistics_path(path)) {
+    const RenderStatistics stats = render_statistics(image, *layers, scene);
+    const std::string text = lower_extension(path) == ".csv" ? statistics_csv(stats) : statistics_json(stats);
+    AtomicFile(path).commit({reinterpret_cast<const uint8_t*>(text.data()), text.size()});
     return;
   }
-  write_false_colour(image, pixel_luminances(image), path, scene.render.false_colour, display);
+  if (is_false_colour_path(path)) {
+    write_false_colour(image, pixel_luminances(image), path, scene.render.false_colour, display);
+    return;
+  }
+  DisplayOptions options = display;
+  options.radiance_view = radiance_view_options(scene.camera, image.width, image.height);
+  ExrLayers data;
+  if (scene.render.exr_layers && layers) {
+    data = exr_layers(*layers, scene);
+    options.exr_layers = &data;
+  }
+  write_image(image, path, options);
 }
 
 }  // namespace skylit::cli

@@ -1,11 +1,14 @@
 // What `skylit render -o FILE` writes, chosen by the file's name: an image (.exr .pfm
-// .hdr .png), or a false-colour image (*.falsecolor.png). The checks run before the
-// render, so that a wrong name costs nothing.
+// .hdr .png), a false-colour image (*.falsecolor.png), or statistics (.json, .csv;
+// docs/statistics.md). The checks run before the render, so that a wrong name costs
+// nothing.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "skylit/io/image/image.h"
+#include "skylit/render/pixel_layers.h"
 #include "skylit/scene/scene.h"
 
 namespace skylit::cli {
@@ -13,8 +16,12 @@ namespace skylit::cli {
 // InputError naming the path if its kind or folder is wrong.
 void check_render_output(const std::string& path);
 
-// Writes one output of a finished render.
+// Whether any of the outputs needs the pixel layers (statistics, or EXR data layers).
+bool outputs_need_layers(const std::vector<std::string>& paths, const Scene& scene);
+
+// Writes one output of a finished render; `layers` may be null when
+// outputs_need_layers said no.
 void write_render_output(const std::string& path, const XyzImage& image, const Scene& scene,
-                         const DisplayOptions& display);
+                         const DisplayOptions& display, const PixelLayers* layers);
 
 }  // namespace skylit::cli

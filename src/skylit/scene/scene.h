@@ -69,6 +69,7 @@ struct RenderSettings {
   // as printed (clouds/cloud_scattering.h)
   CloudLightModel cloud_light = CloudLightModel::two_stream;
   FalseColourSettings false_colour{};  // for *.falsecolor.png outputs
+  bool exr_layers = false;             // .exr: add object, distance and normal layers
 };
 
 // Where a mesh object came from and what loading did to it (`skylit info`).
@@ -131,6 +132,7 @@ struct Scene {
   // material of any file (a typo?).
   size_t material_override_count = 0;
   std::vector<std::string> unused_material_overrides;
+  std::vector<Probe> probes;  // pixels whose luminance the statistics report
 };
 
 }  // namespace skylit

@@ -4,19 +4,24 @@
 // 32-bit FLOAT, not HALF: half tops out at 65504 and the sun's disc is ~1.6e9 cd/m².
 // The standard attributes "chromaticities" (Rec. 709, D65) and "whiteLuminance" = 1
 // ("luminance in cd/m² of RGB (1, 1, 1)", ImfStandardAttributes.h) tell other tools the
-// values are absolute. ZIP compression is lossless and its output deterministic.
+// values are absolute. Optional data layers (object, distance, normal) follow as more
+// FLOAT channels, with the object table as the string attribute "skylit:objects".
+// ZIP compression is lossless and its output deterministic.
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <string>
 
 #include "skylit/io/image/image_encoders.h"
 
 namespace skylit {
 
-Bytes encode_exr(const XyzImage& image) {
+Bytes encode_exr(const XyzImage& image, const DisplayOptions& options) {
   const int w = image.width, h = image.height;
   // Interleaved R, G, B, Y per pixel, rows top to bottom as EXR's INCREASING_Y expects.
   std::vector<float> pixels(4 * static_cast<std::size_t>(w) * h);
@@ -36,11 +41,25 @@ Bytes encode_exr(const XyzImage& image) {
                          Imf::Chromaticities({float(s.red_x), float(s.red_y)}, {float(s.green_x), float(s.green_y)},
                                              {float(s.blue_x), float(s.blue_y)}, {float(s.white_x), float(s.white_y)}));
   Imf::addWhiteLuminance(header, 1.0f);
+  if (options.exr_layers) {
+    for (const auto& layer : options.exr_layers->channels)
+      header.channels().insert(layer.first, Imf::Channel(Imf::FLOAT));
+    std::string table;
+    for (std::size_t i = 0; i < options.exr_layers->object_names.size(); ++i)
+      table += std::to_string(i) + " " + options.exr_layers->object_names[i] + "\n";
+    header.insert("skylit:objects", Imf::StringAttribute(table));
+  }
 
   Imf::FrameBuffer frame;
   const std::size_t x_stride = 4 * sizeof(float), y_stride = x_stride * w;
   for (int c = 0; c < 4; ++c)
     frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c), x_stride, y_stride));
+  if (options.exr_layers)
+    for (const auto& layer : options.exr_layers->channels)
+      // Slice wants a non-const pointer; OutputFile only reads through it.
+      frame.insert(layer.first,
+                   Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(layer.second.data())),
+                              sizeof(float), sizeof(float) * w));
 
   Imf::StdOSStream stream;
   {

@@ -52,11 +52,16 @@ void write_image(const XyzImage& image, const std::filesystem::path& path, const
   if (options.exposure_ev && !std::isfinite(*options.exposure_ev))
     throw InputError("cannot write \"" + path.string() + "\": exposure_ev is not finite");
 
+  if (options.exr_layers)
+    for (const auto& [name, values] : options.exr_layers->channels)
+      if (values.size() != static_cast<std::size_t>(image.width) * image.height)
+        throw std::invalid_argument("write_image: layer " + name + " does not match the image");
+
   AtomicFile file(path);  // checks the folder before the (possibly slow) encoding
   Bytes bytes;
   switch (format) {
     case ImageFormat::exr:
-      bytes = encode_exr(image);
+      bytes = encode_exr(image, options);
       break;
     case ImageFormat::pfm:
       bytes = encode_pfm(image);

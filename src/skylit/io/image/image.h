@@ -8,11 +8,19 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "skylit/spectrum/xyz_image.h"
 
 namespace skylit {
+
+// Extra EXR channels (docs/images.md, "Data layers"): each a name and one float per
+// pixel, rows from the top; and the table that names the values of an "object" channel.
+struct ExrLayers {
+  std::vector<std::pair<std::string, std::vector<float>>> channels;
+  std::vector<std::string> object_names;  // written as the string attribute "skylit:objects"
+};
 
 struct DisplayOptions {
   // Photographic exposure value at ISO 100 (EV100, stops); empty = automatic, chosen
@@ -21,6 +29,8 @@ struct DisplayOptions {
   // .hdr: Radiance's view options for the header's VIEW= line (radiance_view.h); empty
   // for none.
   std::optional<std::string> radiance_view{};
+  // .exr: extra layers, or null for none.
+  const ExrLayers* exr_layers = nullptr;
 };
 
 enum class ImageFormat { png, exr, pfm, hdr };

@@ -16,8 +16,9 @@ namespace skylit {
 
 using Bytes = std::vector<uint8_t>;
 
-// OpenEXR, 32-bit float R, G, B (linear sRGB primaries, absolute) and Y (cd/m²).
-Bytes encode_exr(const XyzImage& image);
+// OpenEXR, 32-bit float R, G, B (linear sRGB primaries, absolute) and Y (cd/m²), and
+// options.exr_layers if given.
+Bytes encode_exr(const XyzImage& image, const DisplayOptions& options);
 // Portable Float Map, little-endian float R, G, B, rows bottom to top.
 Bytes encode_pfm(const XyzImage& image);
 // Radiance RGBE in Radiance's RGB, values in its units (luminance / 179), with

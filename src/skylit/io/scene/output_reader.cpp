@@ -1,5 +1,6 @@
 // The parts of a scene's `render` block that say how the result is shown and measured
-// rather than how it is rendered: `false_colour` (docs/scene-format.md).
+// rather than how it is rendered: `false_colour`; and the top level's `probes`
+// (docs/scene-format.md).
 #include "skylit/io/scene/scene_parts.h"
 
 namespace skylit {
@@ -18,6 +19,29 @@ FalseColourSettings read_false_colour(const JsonReader& j) {
   if (auto c = j.optional("contours")) f.contours = c->boolean();
   if (auto u = j.optional("underlay")) f.underlay = u->boolean();
   return f;
+}
+
+std::vector<Probe> read_probes(const JsonReader& j) {
+  std::vector<Probe> probes;
+  for (const JsonReader& p : j.elements()) {
+    p.allow_only({"name", "pixel", "rect"});
+    Probe probe;
+    probe.name = p.required("name").string();
+    if (p.has("pixel") == p.has("rect")) p.fail("give either pixel [x, y] or rect [x0, y0, x1, y1]");
+    const JsonReader where = p.has("pixel") ? p.required("pixel") : p.required("rect");
+    const std::vector<JsonReader> v = where.elements();
+    if (v.size() != (p.has("pixel") ? 2u : 4u)) where.fail_expected(p.has("pixel") ? "[x, y]" : "[x0, y0, x1, y1]");
+    std::vector<int> n;
+    for (const JsonReader& e : v) n.push_back(e.integer_in(0, 16384));
+    if (n.size() == 2) n = {n[0], n[1], n[0] + 1, n[1] + 1};
+    if (n[2] <= n[0] || n[3] <= n[1]) where.fail("the rectangle is empty: x1 must exceed x0 and y1 exceed y0");
+    probe.x0 = n[0];
+    probe.y0 = n[1];
+    probe.x1 = n[2];
+    probe.y1 = n[3];
+    probes.push_back(probe);
+  }
+  return probes;
 }
 
 }  // namespace skylit

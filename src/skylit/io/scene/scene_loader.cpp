@@ -89,7 +89,7 @@ void frame_camera(const JsonReader& j, Scene& scene) {
 
 RenderSettings read_render(const JsonReader& j) {
   j.allow_only({"width", "height", "exposure_ev", "samples_per_axis", "integrator", "samples_per_pixel", "seed",
-                "cloud_light", "false_colour"});
+                "cloud_light", "false_colour", "exr_layers"});
   RenderSettings render;
   if (auto w = j.optional("width")) render.width = w->integer_in(1, 16384);
   if (auto h = j.optional("height")) render.height = h->integer_in(1, 16384);
@@ -106,6 +106,7 @@ RenderSettings read_render(const JsonReader& j) {
   if (auto s = j.optional("samples_per_pixel")) render.samples_per_pixel = s->integer_in(1, 1 << 20);
   if (auto s = j.optional("seed")) render.seed = static_cast<uint64_t>(s->integer_in(0, 1 << 30));
   if (auto f = j.optional("false_colour")) render.false_colour = read_false_colour(*f);
+  if (auto l = j.optional("exr_layers")) render.exr_layers = l->boolean();
   return render;
 }
 
@@ -116,7 +117,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   const JsonReader root(document, source);
   if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
   root.allow_only({"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "material_overrides",
-                   "objects", "lights", "render"});
+                   "objects", "lights", "render", "probes"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
   read_sun_and_atmosphere(root, scene);
@@ -131,6 +132,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
   frame_camera(root.required("camera"), scene);
+  if (auto probes = root.optional("probes")) scene.probes = read_probes(*probes);
   return scene;
 }
 

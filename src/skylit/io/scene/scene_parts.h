@@ -20,6 +20,7 @@ void read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
 AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
 FogSettings read_fog(const JsonReader& fog);
 FalseColourSettings read_false_colour(const JsonReader& false_colour);
+std::vector<Probe> read_probes(const JsonReader& probes);
 // The camera's projection, its angles of view and lens shift (all but the perspective
 // projection's vertical_fov_deg and focal length, which read_camera reads).
 void read_camera_projection(const JsonReader& camera_block, Camera& camera);
