@@ -26,6 +26,13 @@ for figure in fig8a fig8b fig8c fig8d; do
 done
 # The paper's Fig. 9: a street at night, lamps and headlights in light fog.
 $skylit render examples/fig9.json --quiet --set render.width=960 --set render.height=540 -o "$out/fig9.png"
+# The assessment outputs (docs/images.md, docs/statistics.md): Fig. 9 as a person in the
+# street would see it, in false colour, and the building in a 180° fisheye.
+$skylit render examples/fig9.json --quiet --set render.width=480 --set render.height=270 \
+  --set render.display=human -o "$out/fig9-human.png" -o "$out/fig9.falsecolor.png"
+$skylit render examples/fig9.json --quiet --set render.width=480 --set render.height=270 -o "$out/fig9-photographic.png"
+$skylit render examples/building.json --quiet --set camera.projection=fisheye_equidistant \
+  --set camera.vertical_fov_deg=180 --set render.width=320 --set render.height=320 -o "$out/building-fisheye.png"
 # The paper's Fig. 10: clouds with the sun in front of and behind the camera.
 for figure in fig10a fig10b; do
   $skylit render "examples/$figure.json" --quiet --set render.width=960 --set render.height=540 -o "$out/$figure.png"

@@ -63,6 +63,8 @@ int run_render(const RenderArguments& args) {
   const Renderer::Result result = renderer.render_with_error(options);
   DisplayOptions display;
   display.exposure_ev = scene.render.exposure_ev;
+  display.human = scene.render.human_display;
+  display.degrees_per_pixel = scene.camera.vertical_fov_deg / scene.render.height;
   std::optional<PixelLayers> layers;
   if (outputs_need_layers(args.outputs, scene)) layers = trace_pixel_layers(renderer.prepared());
   for (const std::string& out : args.outputs)

@@ -70,6 +70,7 @@ struct RenderSettings {
   CloudLightModel cloud_light = CloudLightModel::two_stream;
   FalseColourSettings false_colour{};  // for *.falsecolor.png outputs
   bool exr_layers = false;             // .exr: add object, distance and normal layers
+  bool human_display = false;          // .png: as a person would see it (io/image/human_display.h)
 };
 
 // Where a mesh object came from and what loading did to it (`skylit info`).

@@ -29,6 +29,10 @@ struct DisplayOptions {
   // .hdr: Radiance's view options for the header's VIEW= line (radiance_view.h); empty
   // for none.
   std::optional<std::string> radiance_view{};
+  // .png: the human-vision display (human_display.h) instead of the photographic one,
+  // with foveal samples of about 1° at this many degrees per pixel.
+  bool human = false;
+  double degrees_per_pixel = 0.05;
   // .exr: extra layers, or null for none.
   const ExrLayers* exr_layers = nullptr;
 };

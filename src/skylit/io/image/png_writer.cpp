@@ -7,11 +7,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "skylit/io/image/human_display.h"
 #include "skylit/io/image/image_encoders.h"
 
 namespace skylit {
 
 Bytes encode_png(const XyzImage& image, const DisplayOptions& options) {
+  if (options.human)
+    return encode_png_rgb8(image.width, image.height, human_display_srgb8(image, options.degrees_per_pixel));
   return encode_png_rgb8(image.width, image.height, display_srgb8(image, options));
 }
 

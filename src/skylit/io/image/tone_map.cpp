@@ -34,6 +34,10 @@ Rgb display_linear_srgb(const Xyz& exposed) {
   const double yd = tone_curve(y);
   Rgb rgb = linear_srgb_from_xyz(exposed);
   for (double& c : rgb) c *= yd / y;  // scaling all three keeps the chromaticity
+  return desaturate_into_gamut(rgb, yd);
+}
+
+Rgb desaturate_into_gamut(Rgb rgb, double yd) {
   // Move toward the grey of equal luminance (yd, yd, yd), which lies inside the gamut
   // because yd < 1, just far enough to bring every channel into [0, 1]. Luminance is
   // linear in RGB, so it stays yd; and the move is along a line through the white

@@ -41,4 +41,8 @@ double tone_curve(double exposed_luminance);
 // and 3 above. Luminance Y ≤ 0 gives black.
 Rgb display_linear_srgb(const Xyz& exposed);
 
+// Step 3 alone: linear sRGB of luminance yd in [0, 1] moved toward the grey (yd, yd, yd)
+// just far enough to lie in [0, 1]³.
+Rgb desaturate_into_gamut(Rgb rgb, double yd);
+
 }  // namespace skylit

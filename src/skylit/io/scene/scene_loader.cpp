@@ -89,7 +89,7 @@ void frame_camera(const JsonReader& j, Scene& scene) {
 
 RenderSettings read_render(const JsonReader& j) {
   j.allow_only({"width", "height", "exposure_ev", "samples_per_axis", "integrator", "samples_per_pixel", "seed",
-                "cloud_light", "false_colour", "exr_layers"});
+                "cloud_light", "false_colour", "exr_layers", "display"});
   RenderSettings render;
   if (auto w = j.optional("width")) render.width = w->integer_in(1, 16384);
   if (auto h = j.optional("height")) render.height = h->integer_in(1, 16384);
@@ -107,6 +107,7 @@ RenderSettings read_render(const JsonReader& j) {
   if (auto s = j.optional("seed")) render.seed = static_cast<uint64_t>(s->integer_in(0, 1 << 30));
   if (auto f = j.optional("false_colour")) render.false_colour = read_false_colour(*f);
   if (auto l = j.optional("exr_layers")) render.exr_layers = l->boolean();
+  if (auto d = j.optional("display")) render.human_display = d->one_of({"photographic", "human"}) == "human";
   return render;
 }
 
