@@ -32,6 +32,7 @@ std::vector<Probe> read_probes(const JsonReader& j) {
     const std::vector<JsonReader> v = where.elements();
     if (v.size() != (p.has("pixel") ? 2u : 4u)) where.fail_expected(p.has("pixel") ? "[x, y]" : "[x0, y0, x1, y1]");
     std::vector<int> n;
+    n.reserve(4);
     for (const JsonReader& e : v) n.push_back(e.integer_in(0, 16384));
     if (n.size() == 2) n = {n[0], n[1], n[0] + 1, n[1] + 1};
     if (n[2] <= n[0] || n[3] <= n[1]) where.fail("the rectangle is empty: x1 must exceed x0 and y1 exceed y0");
