@@ -1,23 +1,25 @@
 #include "atmosphere_options.h"
 
+#include "number_checks.h"
+
 namespace skylit::cli {
 
 void add_atmosphere_options(CLI::App* command, AtmosphereOptions& o) {
   command->add_option("--sun-altitude", o.sun_altitude_deg, "Sun's altitude above the horizon, degrees (−90 to 90)")
       ->required()
-      ->check(CLI::Range(-90.0, 90.0));
+      ->check(finite_range(-90.0, 90.0));
   command->add_option("--sun-azimuth", o.sun_azimuth_deg, "Sun's azimuth, degrees clockwise from north (default 180)")
-      ->check(CLI::Range(-360.0, 360.0));
+      ->check(finite_range(-360.0, 360.0));
   command->add_option("--aod550", o.settings.aerosol.aod_550, "Aerosol optical depth at 550 nm (default 0.1, clear)")
-      ->check(CLI::Range(0.0, 10.0));
+      ->check(finite_range(0.0, 10.0));
   command
       ->add_option("--angstrom", o.settings.aerosol.angstrom_exponent,
                    "Ångström exponent of the aerosols (default 1.3)")
-      ->check(CLI::Range(-1.0, 4.0));
+      ->check(finite_range(-1.0, 4.0));
   command->add_option("--ozone-du", o.settings.ozone_column_du, "Total ozone column, Dobson units (default 300)")
-      ->check(CLI::Range(0.0, 1000.0));
+      ->check(finite_range(0.0, 1000.0));
   command->add_option("--ground-albedo", o.settings.ground_albedo, "Ground reflectance, 0 to 1 (default 0.15)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finite_range(0.0, 1.0));
   command
       ->add_option("--model", o.model,
                    "full: single and multiple scattering with ozone (default); paper: the paper's single scattering "
@@ -26,7 +28,7 @@ void add_atmosphere_options(CLI::App* command, AtmosphereOptions& o) {
   command
       ->add_option("--observer-altitude", o.observer_altitude_m,
                    "Observer's height above the ground, metres (default 1.6, up to 10000 and more)")
-      ->check(CLI::Range(0.0, 90000.0));
+      ->check(finite_range(0.0, 90000.0));
 }
 
 AtmosphereSettings atmosphere_settings(const AtmosphereOptions& o) {
