@@ -53,6 +53,22 @@ TEST(Fresnel, TendsToOneAtGrazingIncidence) {
   }
 }
 
+TEST(Fresnel, IndexOneIsNoInterfaceAtEveryAngle) {
+  // Issue 19, item 3: η = 1 divided 0 by 0 at grazing incidence (NaN pixels from glass
+  // with "ior": 1). With no interface nothing is reflected, at any angle; the pane then
+  // transmits all but its bulk absorption.
+  for (const double cos_i : {0.0, 1e-300, 1e-8, 0.5, 1.0}) {
+    const FresnelSP r = fresnel_sp(cos_i, 1.0);
+    EXPECT_EQ(r.s, 0.0) << cos_i;
+    EXPECT_EQ(r.p, 0.0) << cos_i;
+    const PaneOptics pane = pane_optics(cos_i, 1.0, 0.0, 0.006, 550.0);
+    EXPECT_TRUE(std::isfinite(pane.reflectance) && std::isfinite(pane.transmittance)) << cos_i;
+    EXPECT_EQ(pane.reflectance, 0.0) << cos_i;
+  }
+  // Continuous with its neighbours away from grazing: η = 1 + 1e-9 reflects ~1e-19 at normal incidence.
+  EXPECT_NEAR(fresnel_reflectance(1.0, 1.0 + 1e-9), 0.0, 1e-15);
+}
+
 TEST(Fresnel, BrewsterAngleHasNoParallelReflectance) {
   const double n = 1.5;
   const double brewster = std::atan(n);  // 56.31°

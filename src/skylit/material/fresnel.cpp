@@ -10,6 +10,9 @@ namespace skylit {
 
 FresnelSP fresnel_sp(double cos_incident, std::complex<double> eta) {
   using C = std::complex<double>;
+  // η = 1 is no interface at all: nothing is reflected at any angle. The formula
+  // below would divide 0 by 0 at grazing incidence (cos θ_i = cos θ_t = 0; issue 19, item 3).
+  if (eta == C(1.0)) return {0.0, 0.0};
   const double cos_i = std::clamp(cos_incident, 0.0, 1.0);
   const double sin2_i = 1.0 - cos_i * cos_i;
   // Snell's law with a complex index: sin θ_t = sin θ_i / η. The principal square
