@@ -1,11 +1,39 @@
 // The `fog` part of a scene file: a fog layer near the ground (docs/fog.md).
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
 
 #include "skylit/core/error.h"
 #include "skylit/io/scene/scene_parts.h"
 #include "skylit/media/fog_layer.h"
 
 namespace skylit {
+
+namespace {
+
+// The densest fog a scene may hold, as extinction at its densest point: 10 m⁻¹ is a
+// visibility of 0.4 m (Koschmieder), a hundred times the thickest natural fog (about
+// 0.1 m⁻¹, 40 m). Past it the density law ρ0·exp(−z/h0) overflows inside the layer (a
+// scale height of −0.001 m, a layer far below the ground) and the light it scatters
+// becomes Inf or NaN (issue 19, item 4).
+constexpr double kMaxFogExtinctionPerM = 10.0;
+
+void check_densest_point(const FogLayer& layer, const JsonReader& j) {
+  const double densest = std::max(layer.density(layer.bottom_m()), layer.density(layer.top_m()));
+  double sigma = 0;
+  for (const double s : layer.unit_density_extinction_bins()) sigma = std::max(sigma, s);
+  if (densest * sigma <= kMaxFogExtinctionPerM) return;
+  char shown[48];
+  std::snprintf(shown, sizeof shown, "%.3g", densest * sigma);
+  j.fail(std::string("the fog's extinction at its densest point (the layer's ") +
+         (layer.density(layer.bottom_m()) >= layer.density(layer.top_m()) ? "bottom" : "top") + ") would be " + shown +
+         " per metre, over the limit of 10 (a visibility of 0.4 m): lower density_at_ground or "
+         "unit_density_extinction_per_m, or move the layer or its scale_height_m");
+}
+
+}  // namespace
 
 FogSettings read_fog(const JsonReader& j) {
   j.allow_only({"density_at_ground", "visibility_m", "scale_height_m", "bottom_m", "top_m",
@@ -32,11 +60,13 @@ FogSettings read_fog(const JsonReader& j) {
   if (auto d = j.optional("droplet_diameter_um")) fog.droplet_diameter_um = d->number_in(5, 50);
   if (auto g = j.optional("asymmetry")) fog.asymmetry = g->number_in(-0.99, 0.99);
   // The layer checks the rest (and names the field) when it is built.
+  std::optional<FogLayer> layer;
   try {
-    const FogLayer layer(fog);
+    layer.emplace(fog);
   } catch (const InputError& e) {
     j.fail(e.what());
   }
+  check_densest_point(*layer, j);
   return fog;
 }
 
