@@ -64,7 +64,7 @@ TEST(RegionsFile, MistakesNameTheFileAndThePlace) {
   EXPECT_NE(error_of("{\"regions\": [\n{]}").find("regions.json:2:2: invalid JSON"), std::string::npos);
   EXPECT_NE(error_of(R"({"regions": []})").find("regions: expected at least one region"), std::string::npos);
   EXPECT_EQ(input_error_of([&] { read_regions_file(dir.path() / "none.json", 4, 3); }),
-            (dir.path() / "none.json").string() + ":1: cannot open the regions file");
+            (dir.path() / "none.json").string() + ":1: cannot open the regions file: No such file or directory");
 }
 
 TEST(RegionMask, EachNonBlackColourIsARegionNamedByItsHex) {

@@ -1,22 +1,68 @@
 #include "skylit/core/text_file.h"
 
-#include <fstream>
-#include <sstream>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include "skylit/core/error.h"
 
 namespace skylit {
 
-std::string read_text_file(const std::filesystem::path& file, const std::string& what) {
-  std::error_code error;
-  // An ifstream opens a directory without complaint on Linux; refuse it here.
-  if (std::filesystem::is_directory(file, error)) throw InputError(file.string() + ":1: cannot read the " + what);
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ":1: cannot open the " + what);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(file.string() + ":1: cannot read the " + what);
-  return text.str();
+namespace {
+
+[[noreturn]] void refuse(const std::filesystem::path& file, const std::string& what, const std::string& why,
+                         const char* verb = "read") {
+  throw InputError(file.string() + ":1: cannot " + verb + " the " + what + ": " + why);
+}
+
+// Opened first and checked through the descriptor, so the file checked is the file read.
+// O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer.
+struct Descriptor {
+  int fd;
+  ~Descriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+std::string read_text_file(const std::filesystem::path& file, const std::string& what, std::uintmax_t max_bytes) {
+  const Descriptor in{::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
+  if (in.fd < 0) refuse(file, what, std::strerror(errno), "open");
+  struct stat status {};
+  if (::fstat(in.fd, &status) != 0) refuse(file, what, std::strerror(errno));
+  if (!S_ISREG(status.st_mode)) refuse(file, what, "not a regular file");
+  if (static_cast<std::uintmax_t>(status.st_size) > max_bytes)
+    refuse(file, what, "larger than the limit of " + std::to_string(max_bytes >> 20) + " MiB");
+  std::string text(static_cast<std::size_t>(status.st_size), '\0');
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::read(in.fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) refuse(file, what, std::strerror(errno));
+    if (n == 0) break;  // shrank while we read: take what is there
+    done += static_cast<std::size_t>(n);
+  }
+  text.resize(done);
+  return text;
+}
+
+void require_regular_file(const std::filesystem::path& file, const std::string& what) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (!std::filesystem::exists(status)) throw InputError(file.string() + ": " + what + " not found");
+  if (!std::filesystem::is_regular_file(status)) throw InputError(file.string() + ": " + what + ": not a regular file");
+}
+
+std::string quote_excerpt(std::string_view text) {
+  constexpr std::size_t kMaxShown = 20;
+  std::string out = "'";
+  for (const char ch : text.substr(0, kMaxShown)) out += (ch >= 32 && ch < 127) ? ch : '?';
+  if (text.size() > kMaxShown) out += "...";
+  return out + "'";
 }
 
 }  // namespace skylit

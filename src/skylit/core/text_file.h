@@ -1,13 +1,33 @@
-// Reading a whole (small) text file a user names: photometric files, spectrum tables.
+// Reading a whole (small) text file a user names: scene files, photometric files,
+// spectrum tables, regions; and quoting a piece of such a file in an error message.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace skylit {
 
-// The file's bytes. Throws InputError "<file>:1: cannot read the <what>" if it cannot
-// be opened or read (missing, a directory, no permission).
-std::string read_text_file(const std::filesystem::path& file, const std::string& what);
+// The largest text file a user may name, bytes: 64 MiB, hundreds of times any real
+// scene, IES or EULUMDAT file or spectrum table. A larger one is refused before it
+// is read, so /dev/zero or a mistaken video file cannot fill the memory (issue 19,
+// item 9). docs/scene-format.md states it.
+inline constexpr std::uintmax_t kMaxTextFileBytes = 64u << 20;
+
+// The file's bytes. Throws InputError "<file>:1: cannot read the <what>: <why>" if it
+// is missing, not a regular file (a folder, a device such as /dev/zero, a FIFO, which
+// would block), larger than max_bytes, or cannot be read.
+std::string read_text_file(const std::filesystem::path& file, const std::string& what,
+                           std::uintmax_t max_bytes = kMaxTextFileBytes);
+
+// Throws InputError "<file>: <what>: not a regular file" (or "not found") unless `file`
+// is a regular file, for the readers that hand a path to a library.
+void require_regular_file(const std::filesystem::path& file, const std::string& what);
+
+// A piece of a user's file for an error message: at most 20 bytes, printable ASCII only
+// (others as '?'), in single quotes, "..." when cut. Messages never quote more, so a
+// file named by mistake (/etc/passwd) is not copied to the terminal (item 16).
+std::string quote_excerpt(std::string_view text);
 
 }  // namespace skylit

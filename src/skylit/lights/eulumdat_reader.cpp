@@ -17,7 +17,6 @@ namespace skylit {
 namespace {
 
 using lights_detail::parse_number;
-using lights_detail::quote_token;
 
 constexpr int kMaxAngles = 10000;
 
@@ -50,7 +49,7 @@ class Lines {
     for (char& ch : t)
       if (ch == ',') ch = '.';
     const auto v = parse_number(t);
-    if (!v) fail("expected " + what + ", found " + quote_token(t));
+    if (!v) fail("expected " + what + ", found " + quote_excerpt(t));
     return *v;
   }
 
@@ -162,6 +161,8 @@ EulumdatPhotometry parse_eulumdat(const std::string& text, const std::string& na
       const double v = in.number("intensity " + std::to_string(g + 1) + " of " + std::to_string(ng) + " in C plane " +
                                  std::to_string(mc1 + p) + " (cd/klm)");
       if (v < 0) in.fail("intensities must not be negative");
+      if (!(v * scale <= kMaxLuminousIntensityCd))
+        in.fail("an intensity times the lumens and the conversion factor is over the limit of 1e9 cd");
       candela[static_cast<std::size_t>(p) * ng + g] = v * scale;
     }
   }

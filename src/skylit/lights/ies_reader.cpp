@@ -19,7 +19,6 @@ namespace skylit {
 namespace {
 
 using lights_detail::parse_number;
-using lights_detail::quote_token;
 
 // Generous bounds: real files have at most a few hundred angles each way, and
 // refusing absurd counts keeps a corrupted file from asking for gigabytes.
@@ -55,7 +54,8 @@ class Numbers {
     const Token& t = tokens_[next_++];
     const auto v = parse_number(t.text);
     if (!v)
-      throw InputError(name_ + ":" + std::to_string(t.line) + ": expected " + what + ", found " + quote_token(t.text));
+      throw InputError(name_ + ":" + std::to_string(t.line) + ": expected " + what + ", found " +
+                       quote_excerpt(t.text));
     return *v;
   }
 
@@ -65,7 +65,7 @@ class Numbers {
     if (v != std::floor(v) || v < lo || v > hi)
       throw InputError(name_ + ":" + std::to_string(line) + ": expected " + what + " (a whole number from " +
                        std::to_string(lo) + " to " + std::to_string(hi) + "), found " +
-                       quote_token(tokens_[next_ - 1].text));
+                       quote_excerpt(tokens_[next_ - 1].text));
     return static_cast<int>(v);
   }
 
@@ -129,7 +129,7 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   else if (first.rfind("IESNA91", 0) == 0)
     out.format = "LM-63-1991", li = 1;
   else if (first.rfind("IESNA", 0) == 0)
-    fail(1, "unknown format identifier " + quote_token(trim(lines[0])) +
+    fail(1, "unknown format identifier " + quote_excerpt(trim(lines[0])) +
                 " (expected IESNA:LM-63-2002, IESNA:LM-63-1995 or IESNA91)");
   else
     out.format = "LM-63-1986";
@@ -163,7 +163,7 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   const std::string tilt = upper(tilt_value);
   if (tilt != "NONE" && tilt != "INCLUDE")
     fail(tilt_line,
-         "TILT=" + tilt_value.substr(0, 40) +
+         "TILT=" + quote_excerpt(tilt_value) +
              ": a separate tilt file is not supported (expected TILT=NONE or TILT=INCLUDE with the tilt data inline)");
 
   // Everything after the TILT line is numbers.
@@ -188,7 +188,9 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
     out.tilt.multipliers = read_list(in, n, "tilt multiplier");
     check_ascending(in, out.tilt.angles_deg, line, "tilt angles", 0, 180);
     for (double m : out.tilt.multipliers)
-      if (m < 0) in.fail(line, "tilt multipliers must not be negative");
+      // A multiplier is the lamp's relative output at a tilt, near 1; 100 bounds the
+      // candela limit's product as well.
+      if (!(m >= 0 && m <= 100)) in.fail(line, "tilt multipliers must be from 0 to 100");
   }
 
   out.number_of_lamps = in.integer("the number of lamps", 1, 1000000);
@@ -240,14 +242,16 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   std::vector<double> gamma = read_list(in, n_vertical, "vertical angle");
   const int h_line = in.current_line();
   std::vector<double> c = read_list(in, n_horizontal, "horizontal angle");
-  const int cd_line = in.current_line();
   std::vector<double> candela(static_cast<std::size_t>(n_vertical) * n_horizontal);
+  const double scale = out.candela_multiplier * out.ballast_factor * out.ballast_lamp_factor;
   for (int h = 0; h < n_horizontal; ++h) {
     for (int v = 0; v < n_vertical; ++v) {
       const int line = in.current_line();
       const double value = in.number("candela value " + std::to_string(v + 1) + " of " + std::to_string(n_vertical) +
                                      " for horizontal angle " + std::to_string(h + 1));
       if (value < 0) in.fail(line, "candela values must not be negative");
+      if (!(value * scale <= kMaxLuminousIntensityCd))
+        in.fail(line, "a candela value (times the multiplier and ballast factors) is over the limit of 1e9 cd");
       candela[static_cast<std::size_t>(h) * n_vertical + v] = value;
     }
   }
@@ -286,11 +290,7 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
     candela = std::move(cd2);
   }
 
-  const double scale = out.candela_multiplier * out.ballast_factor * out.ballast_lamp_factor;
-  for (double& v : candela) {
-    v *= scale;
-    if (!std::isfinite(v)) in.fail(cd_line, "a candela value times the multiplier overflows");
-  }
+  for (double& v : candela) v *= scale;  // each checked against the limit where it was read
   try {
     out.distribution = IntensityDistribution::table(symmetry, std::move(c), std::move(gamma), std::move(candela));
   } catch (const std::invalid_argument& e) {

@@ -27,12 +27,4 @@ inline std::optional<double> parse_number(std::string_view token) {
   return v;
 }
 
-// For quoting a bad token in an error message: printable ASCII only, at most 20 chars.
-inline std::string quote_token(std::string_view token) {
-  std::string out;
-  for (char ch : token.substr(0, 20)) out += (ch >= 32 && ch < 127) ? ch : '?';
-  if (token.size() > 20) out += "...";
-  return "'" + out + "'";
-}
-
 }  // namespace skylit::lights_detail

@@ -30,6 +30,12 @@ struct TiltTable {
   double multiplier(double tilt_deg) const;
 };
 
+// The most intense luminaire a scene may hold, candela, from a shape, a file or a scaling
+// to lumens: a searchlight's beam is of order 1e9 cd, a stadium floodlight 1e6. Beyond
+// it the lamp's light, squared distances and glow overflow single precision (issue 19,
+// item 5: an IES value of 1e308 gave Inf pixels).
+inline constexpr double kMaxLuminousIntensityCd = 1e9;
+
 class IntensityDistribution {
  public:
   enum class Kind { kIsotropic, kCosine, kSpot, kTable };

@@ -20,6 +20,18 @@
 
 namespace skylit {
 
+// How far from the site (metres, on every axis) anything placed in a scene may be:
+// 10,000 km, past any city or horizon. Embree holds coordinates in single precision, and
+// lengths and products of far larger numbers overflow; scene readers check each placed
+// point where it is read (issue 19, items 7 and 17).
+inline constexpr double kSceneExtentM = 1e7;
+
+// The most pixels a frame may have: 8K UHD, 7680 × 4320. The renderer holds about 300
+// bytes per pixel (measured at 1280 × 720 with fog and lamps: the primary hits, the
+// film, the caches), so this is about 10 GB; 16384 × 16384 would need 80 GB and was
+// accepted (issue 19, item 10). Either side may still be up to 16384 (panoramas).
+inline constexpr long long kMaxRenderPixels = 7680LL * 4320LL;
+
 // How directions around the camera map onto the image (docs/scene-format.md, "camera";
 // render/camera.h has the formulas). θ is the angle from the viewing direction.
 enum class Projection {

@@ -6,6 +6,7 @@
 
 #include "skylit/core/embedded_data.h"
 #include "skylit/core/error.h"
+#include "skylit/core/text_file.h"
 
 namespace skylit {
 
@@ -56,8 +57,8 @@ std::vector<std::vector<double>> parse_csv_columns(std::string_view text, std::s
       double value = 0;
       const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
       if (ec != std::errc() || end != field.data() + field.size())
-        throw InputError(std::string(source) + ":" + std::to_string(line_number) + ": expected a number, found '" +
-                         std::string(field) + "'");
+        throw InputError(std::string(source) + ":" + std::to_string(line_number) + ": expected a number, found " +
+                         quote_excerpt(field));
       columns[column].push_back(value);
       ++column;
       field_start = field_end + 1;

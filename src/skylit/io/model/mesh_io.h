@@ -31,6 +31,11 @@ struct LoadedModel {
   std::vector<std::string> missing_libraries;
 };
 
+// The largest mesh file (OBJ, glTF, GLB, or a glTF buffer) read, bytes: 1 GiB, a city
+// model of tens of millions of triangles. Only regular files are read (not folders,
+// devices, FIFOs).
+inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{1} << 30;
+
 // Loads every triangle of the file in metres, in skylit's frame. The format comes
 // from the extension (.gltf, .glb, .obj; any case). For glTF, the node hierarchy
 // of the default scene (else scene 0, else every root node) is applied, and only

@@ -19,6 +19,7 @@
 #include <tiny_obj_loader.h>
 
 #include "skylit/core/error.h"
+#include "skylit/core/text_file.h"
 #include "skylit/geometry/polygon_triangulation.h"
 #include "skylit/io/model/mesh_io.h"
 
@@ -78,6 +79,8 @@ std::string read_material_libraries(const std::string& text, const std::filesyst
                                     std::vector<std::string>& missing) {
   std::string libraries;
   const auto read = [&](const std::string& file) {
+    std::error_code ec;  // a folder, device or FIFO is not read (a FIFO would block)
+    if (!std::filesystem::is_regular_file(dir / file, ec)) return false;
     std::ifstream in(dir / file, std::ios::binary);
     if (!in) return false;
     std::ostringstream buffer;
@@ -132,12 +135,7 @@ ModelMaterial model_material(const tinyobj::material_t& m) {
 
 LoadedModel load_obj_file(const std::filesystem::path& path) {
   const std::string name = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(name + ": cannot open the file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(name + ": cannot read the file");
-  const std::string text = std::move(buffer).str();
+  const std::string text = read_text_file(path, "OBJ file", kMaxMeshFileBytes);
   std::vector<Vec3> positions = read_positions(text, name);
 
   // Parsing from strings: the libraries are read here, so a missing one does not stop

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "skylit/core/error.h"
+#include "skylit/core/text_file.h"
+#include "skylit/scene/scene.h"
 
 namespace skylit {
 
@@ -133,6 +135,13 @@ Vec3 JsonReader::vec3() const {
   return {e[0].number(), e[1].number(), e[2].number()};
 }
 
+Vec3 JsonReader::point_m() const {
+  const Vec3 p = vec3();
+  for (const double c : {p.x, p.y, p.z})
+    if (!(std::abs(c) <= kSceneExtentM)) fail_expected("a point [x, y, z] in metres, each within ±1e7 (10,000 km)");
+  return p;
+}
+
 std::string describe_json_value(const nlohmann::json& value) {
   // A string set by --set can hold bytes that are not UTF-8: shown replaced (U+FFFD),
   // not thrown as nlohmann's type_error (found by the scene fuzz target).
@@ -157,11 +166,23 @@ std::string line_and_column(const std::string& text, size_t offset) {
   return std::to_string(line) + ":" + std::to_string(column);
 }
 
-// nlohmann's description without its "[json.exception...] ...: " prefix.
+// nlohmann's description without its "[json.exception...] ...: " prefix, and with the
+// text it quotes ("last read: '...'", which may be a line of any file named by mistake)
+// cut to a short excerpt (issue 19, item 16).
 std::string description_of(const nlohmann::json::exception& e) {
   std::string what = e.what();
   const size_t detail = what.find(": ");
-  return detail != std::string::npos ? what.substr(detail + 2) : what;
+  if (detail != std::string::npos) what = what.substr(detail + 2);
+  const std::string marker = "last read: '";
+  const size_t start = what.find(marker);
+  if (start == std::string::npos) return what;
+  const size_t token = start + marker.size();
+  size_t end = what.find("'; expected", token);
+  if (end == std::string::npos) end = what.rfind('\'');
+  if (end == std::string::npos || end < token) end = what.size();
+  const std::string rest = end < what.size() ? what.substr(end + 1) : "";
+  return what.substr(0, start) + "last read: " + quote_excerpt(std::string_view(what).substr(token, end - token)) +
+         rest;
 }
 
 }  // namespace

@@ -51,6 +51,8 @@ class JsonReader {
   // One of the given words; the message lists them.
   std::string one_of(std::initializer_list<std::string_view> words) const;
   Vec3 vec3() const;
+  // A point [x, y, z] in metres in the scene, each within ±kSceneExtentM (scene.h).
+  Vec3 point_m() const;
 
   bool is_number() const { return value_->is_number(); }
   bool is_string() const { return value_->is_string(); }

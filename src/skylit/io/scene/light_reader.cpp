@@ -24,7 +24,7 @@ struct Photometry {
 
 Photometry read_shape(const JsonReader& j) {
   const std::string shape = j.required("shape").one_of({"isotropic", "cosine", "spot"});
-  const double candela = j.required("candela").number_in(0, 1e9);
+  const double candela = j.required("candela").number_in(0, kMaxLuminousIntensityCd);
   if (shape == "isotropic") return {IntensityDistribution::isotropic(candela), {}};
   if (shape == "cosine") return {IntensityDistribution::cosine(candela), {}};
   const double inner = j.required("inner_deg").number_in(0, 180);
@@ -80,7 +80,7 @@ SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir
   j.allow_only({"name", "position", "aim", "rotation_deg", "ies", "ldt", "shape", "candela", "inner_deg", "outer_deg",
                 "lumens", "lamp", "temperature_k", "spectrum_file"});
   const std::string name = j.optional("name") ? j.required("name").string() : j.path();
-  const Vec3 position = j.required("position").vec3();
+  const Vec3 position = j.required("position").point_m();
   const Vec3 aim = j.optional("aim") ? j.required("aim").vec3() : Vec3{0, 0, -1};
   if (!(length(aim) > 0) || !std::isfinite(length(aim)))
     j.required("aim").fail("the aim must be a non-zero vector of moderate length");
@@ -93,6 +93,8 @@ SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir
     const double flux = photometry.distribution.luminous_flux();
     if (!(flux > 0)) lumens->fail("the distribution sends out no light to scale");
     photometry.distribution = photometry.distribution.scaled(wanted / flux);
+    if (!(photometry.distribution.peak_candela() <= kMaxLuminousIntensityCd))
+      lumens->fail("this flux from this distribution needs a peak over the limit of 1e9 cd");
   }
   Spectrum spectrum;
   try {
