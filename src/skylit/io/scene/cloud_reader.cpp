@@ -12,7 +12,7 @@ namespace {
 std::pair<double, double> read_xy(const JsonReader& j) {
   const auto xy = j.elements();
   if (xy.size() != 2) j.fail_expected("[x, y] in metres");
-  return {xy[0].number(), xy[1].number()};
+  return {xy[0].number_in(-kSceneExtentM, kSceneExtentM), xy[1].number_in(-kSceneExtentM, kSceneExtentM)};
 }
 
 CloudShape read_cloud(const JsonReader& j) {
@@ -50,6 +50,11 @@ CloudLayerSettings read_layer(const JsonReader& j) {
   if (auto v = j.optional("max_thickness_m")) s.max_thickness = v->number_in(0, 10000);
   if (s.max_thickness < s.min_thickness) j.fail("max_thickness_m must not be below min_thickness_m");
   if (auto e = j.optional("extinction_per_m")) s.extinction = e->number_in(0, 10);
+  if (const double n = expected_generated_cloud_count(s); n > static_cast<double>(kMaxGeneratedClouds))
+    j.fail("this layer would hold about " + std::to_string(static_cast<long long>(n)) + " clouds, over the limit of " +
+           std::to_string(kMaxGeneratedClouds) +
+           " (each cloud seen needs its own table of sunlight, 0.4 MB and about a tenth of a second): "
+           "raise min_semi_axis_m or max_semi_axis_m, or lower half_extent_m or coverage");
   return s;
 }
 

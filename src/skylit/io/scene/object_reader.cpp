@@ -4,6 +4,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,6 +19,10 @@
 namespace skylit {
 
 namespace {
+
+// A mesh's transform may turn millimetres into metres or a model into a city; a million
+// either way is past any such use.
+constexpr double kMaxScaleFactor = 1e6;
 
 std::optional<uint32_t> material_named(const std::string& name, const std::vector<NamedMaterial>& materials) {
   for (size_t i = 0; i < materials.size(); ++i)
@@ -53,7 +58,8 @@ const MaterialOverride* best_override(const std::string& name, const std::vector
 
 Vec3 read_positive_size(const JsonReader& j) {
   const Vec3 size = j.vec3();
-  if (size.x <= 0 || size.y <= 0 || size.z <= 0) j.fail_expected("three sizes greater than 0");
+  for (const double s : {size.x, size.y, size.z})
+    if (!(s > 0 && s <= 2 * kSceneExtentM)) j.fail_expected("three sizes greater than 0 and at most 2e7 m");
   return size;
 }
 
@@ -64,17 +70,17 @@ TriangleMesh read_box(const JsonReader& j) {
   if (corners == centred) j.fail("a box needs either min and max, or center and size");
   if (corners) {
     if (j.has("rotation_z_deg")) j.required("rotation_z_deg").fail("rotation needs center and size");
-    const Vec3 lo = j.required("min").vec3(), hi = j.required("max").vec3();
+    const Vec3 lo = j.required("min").point_m(), hi = j.required("max").point_m();
     if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z)) j.required("max").fail("max must exceed min on every axis");
     return make_box(lo, hi);
   }
   const double rotation = j.optional("rotation_z_deg") ? j.required("rotation_z_deg").number_in(-360, 360) : 0.0;
-  return make_box_centered(j.required("center").vec3(), read_positive_size(j.required("size")), rotation);
+  return make_box_centered(j.required("center").point_m(), read_positive_size(j.required("size")), rotation);
 }
 
 TriangleMesh read_plane(const JsonReader& j) {
   j.allow_only({"type", "name", "material", "center", "size_m"});
-  const Vec3 center = j.optional("center") ? j.required("center").vec3() : Vec3{0, 0, 0};
+  const Vec3 center = j.optional("center") ? j.required("center").point_m() : Vec3{0, 0, 0};
   const double size = j.optional("size_m") ? j.required("size_m").number_in(1e-3, 1e6) : 10000.0;
   return make_ground_plane(center, size);
 }
@@ -84,11 +90,12 @@ Transform read_transform(const JsonReader& j) {
   Transform t = Transform::identity();
   if (auto s = j.optional("scale")) {
     const Vec3 factors = s->is_number() ? Vec3{s->number(), s->number(), s->number()} : s->vec3();
-    if (factors.x == 0 || factors.y == 0 || factors.z == 0) s->fail("scale factors must not be 0");
+    for (const double f : {factors.x, factors.y, factors.z})
+      if (f == 0 || std::abs(f) > kMaxScaleFactor) s->fail("scale factors must not be 0 nor beyond ±1e6");
     t = Transform::scale(factors);
   }
   if (auto r = j.optional("rotate_deg")) t = Transform::rotation_xyz_deg(r->vec3()) * t;
-  if (auto p = j.optional("translate")) t = Transform::translation(p->vec3()) * t;
+  if (auto p = j.optional("translate")) t = Transform::translation(p->point_m()) * t;
   return t;
 }
 
@@ -132,8 +139,16 @@ LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir
   if (auto u = j.optional("units")) source.units = u->one_of({"m", "cm", "mm", "ft", "in"});
   if (const double f = metres_per_unit(source.units); f != 1.0)
     model.mesh = transformed(model.mesh, Transform::scale({f, f, f}));
-  if (auto t = j.optional("transform")) model.mesh = transformed(model.mesh, read_transform(*t));
+  const auto t = j.optional("transform");
+  if (t) model.mesh = transformed(model.mesh, read_transform(*t));
   source.offset_m = place(j, model.mesh);
+  // The file's vertices are finite; placed, they must also lie in the scene's extent.
+  for (std::size_t i = 0; i < model.mesh.vertices.size(); ++i) {
+    const Vec3& v = model.mesh.vertices[i];
+    if (!(std::abs(v.x) <= kSceneExtentM && std::abs(v.y) <= kSceneExtentM && std::abs(v.z) <= kSceneExtentM))
+      (t ? *t : j.required("file"))
+          .fail("vertex " + std::to_string(i) + " of the mesh lies beyond ±1e7 m of the site once placed");
+  }
   return model;
 }
 

@@ -19,9 +19,13 @@ Camera read_camera(const JsonReader& j) {
   // A camera framed from a direction has its position found later, as has every
   // framed camera its look_at; stand-ins meanwhile.
   const bool framed_by_direction = j.has("frame") && (j.has("from_azimuth_deg") || j.has("elevation_deg"));
-  camera.position = framed_by_direction && !j.has("position") ? Vec3{0, 0, 0} : j.required("position").vec3();
-  camera.look_at = j.has("frame") ? camera.position + Vec3{0, 1, 0} : j.required("look_at").vec3();
-  if (auto up = j.optional("up")) camera.up = up->vec3();
+  camera.position = framed_by_direction && !j.has("position") ? Vec3{0, 0, 0} : j.required("position").point_m();
+  camera.look_at = j.has("frame") ? camera.position + Vec3{0, 1, 0} : j.required("look_at").point_m();
+  if (auto up = j.optional("up")) {
+    camera.up = up->vec3();
+    if (!(length(camera.up) > 0) || !std::isfinite(length(camera.up)))
+      up->fail("up must be a non-zero vector of moderate length");
+  }
   const Vec3 forward = camera.look_at - camera.position;
   if (length(forward) == 0) j.required("look_at").fail("look_at must differ from position");
   if (length(cross(forward, camera.up)) <= 1e-9 * length(forward) * length(camera.up))
@@ -93,6 +97,9 @@ RenderSettings read_render(const JsonReader& j) {
   RenderSettings render;
   if (auto w = j.optional("width")) render.width = w->integer_in(1, 16384);
   if (auto h = j.optional("height")) render.height = h->integer_in(1, 16384);
+  if (static_cast<long long>(render.width) * render.height > kMaxRenderPixels)
+    j.fail("width × height is " + std::to_string(static_cast<long long>(render.width) * render.height) +
+           " pixels, over the limit of 33,177,600 (7680 × 4320): a frame needs about 300 bytes per pixel");
   if (auto ev = j.optional("exposure_ev")) {
     // "auto" is the default, accepted explicitly so that --set can restore it.
     if (!(ev->is_string() && ev->string() == "auto")) render.exposure_ev = ev->number_in(-30, 40);
