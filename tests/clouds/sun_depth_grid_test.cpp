@@ -86,11 +86,21 @@ TEST(CloudSunGrid, ScatterWithGridMatchesMarching) {
     EXPECT_LT(sum_rel / n, elev > 40 ? 0.015 : 0.05) << elev;
     EXPECT_LT(max_rel, elev > 40 ? 0.08 : 0.4) << elev;
   }
-  // A layer forwards to its clouds.
-  CloudLayer layer({Cloud(wavy_cloud())});
+  // A layer builds a cloud's grid when a ray first meets that cloud (issue 19, item 11),
+  // and only then: the second cloud, far away, is never met and never pays for one.
+  CloudShape far_away = wavy_cloud();
+  far_away.center_x += 50000;
+  CloudLayer layer({Cloud(wavy_cloud()), Cloud(far_away)});
   const Vec3 to_sun = direction_from_altitude_azimuth(40, 10);
   layer.prepare_sun(to_sun);
+  EXPECT_FALSE(layer.clouds()[0].sun_prepared_for(to_sun));
+  const CloudLighting light = flat_light(to_sun);
+  const CloudShape& near = layer.clouds()[0].shape();
+  const Vec3 below{near.center_x, near.center_y, 0.0};
+  const CloudScattering seen = layer.scatter(below, {0, 0, 1}, 0.0, 1e5, light);
+  EXPECT_LT(seen.transmittance, 1.0);
   EXPECT_TRUE(layer.clouds()[0].sun_prepared_for(to_sun));
+  EXPECT_FALSE(layer.clouds()[1].sun_prepared_for(to_sun));
   layer.clear_sun();
   EXPECT_FALSE(layer.clouds()[0].sun_prepared_for(to_sun));
 }

@@ -5,14 +5,25 @@
 #include <limits>
 #include <random>
 
+#include <tbb/task_arena.h>
+
 namespace skylit {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::size_t kMaxGeneratedClouds = 20000;
 
 double finite_or(double x, double fallback) { return std::isfinite(x) ? x : fallback; }
 }  // namespace
+
+double expected_generated_cloud_count(const CloudLayerSettings& s) {
+  const double coverage = std::clamp(finite_or(s.coverage, 0.0), 0.0, 0.995);
+  const double lo = std::min(s.min_semi_axis, s.max_semi_axis), hi = std::max(s.min_semi_axis, s.max_semi_axis);
+  const double aspect = std::clamp(finite_or(s.min_aspect, 1.0), 0.05, 1.0);
+  const double wide = std::max(0.0, s.half_extent) + hi;
+  const double mean_footprint = kPi * (lo * lo + lo * hi + hi * hi) / 3.0 * (1.0 + aspect) / 2.0;
+  if (!(mean_footprint > 0) || coverage <= 0) return 0.0;
+  return -std::log1p(-coverage) * (2 * wide) * (2 * wide) / mean_footprint;
+}
 
 double cloud_uniform(std::uint64_t draw) { return static_cast<double>(draw >> 11) * 0x1.0p-53; }
 
@@ -36,7 +47,7 @@ CloudLayer CloudLayer::generate(const CloudLayerSettings& in) {
   std::mt19937_64 rng(s.seed);
   auto uniform = [&](double a, double b) { return a + (b - a) * cloud_uniform(rng()); };
   double area = 0;
-  while (area < target && clouds.size() < kMaxGeneratedClouds) {
+  while (area < target && clouds.size() < 2 * kMaxGeneratedClouds) {
     CloudShape c;
     c.center_x = finite_or(s.center_x, 0.0) + uniform(-wide, wide);
     c.center_y = finite_or(s.center_y, 0.0) + uniform(-wide, wide);
@@ -68,17 +79,32 @@ void add_gardner_waves(CloudShape& c, std::uint64_t seed, int waves, double firs
 }
 
 void CloudLayer::prepare_sun(const Vec3& to_sun) {
-  for (Cloud& c : clouds_) c.prepare_sun(to_sun);
+  clear_sun();
+  grid_sun_ = to_sun;
+  grid_built_ = std::make_unique<std::once_flag[]>(clouds_.size());
 }
 
 void CloudLayer::clear_sun() {
+  grid_sun_.reset();
+  grid_built_.reset();
   for (Cloud& c : clouds_) c.clear_sun();
+}
+
+void CloudLayer::ensure_sun_grid(std::size_t index) const {
+  if (!grid_sun_) return;  // Cloud::scatter then uses the grid if light.to_sun is its direction
+  std::call_once(grid_built_[index], [&] {
+    // The grid is filled by a parallel loop; isolated, this thread cannot pick up
+    // another ray's task meanwhile and wait on this same once_flag (a deadlock).
+    tbb::this_task_arena::isolate([&] { clouds_[index].prepare_sun(*grid_sun_); });
+  });
 }
 
 std::vector<CloudLayer::Crossing> CloudLayer::crossings(const Vec3& o, const Vec3& d, double t_min,
                                                         double t_max) const {
   std::vector<Crossing> out;
-  for (std::size_t i = 0; i < clouds_.size(); ++i) {
+  thread_local std::vector<std::uint32_t> candidates;  // reused: this runs for every ray
+  grid_.candidates(o, d, t_min, t_max, candidates);
+  for (const std::uint32_t i : candidates) {
     double t0, t1;
     if (clouds_[i].clip(o, d, t_min, t_max, t0, t1)) out.push_back({i, t0, t1});
   }
@@ -115,6 +141,7 @@ CloudScattering CloudLayer::scatter(const Vec3& o, const Vec3& d, double t_min, 
                                     const CloudLighting& light) const {
   CloudScattering out;
   for (const Crossing& c : crossings(o, d, t_min, t_max)) {
+    ensure_sun_grid(c.index);
     const CloudScattering s = clouds_[c.index].scatter(o, d, c.t_enter, c.t_exit, light);
     if (!std::isfinite(out.distance) && (s.transmittance < 1.0 || !s.in_scattered.is_black()))
       out.distance = std::max(c.t_enter, t_min);

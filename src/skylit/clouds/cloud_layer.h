@@ -3,15 +3,19 @@
 // the C++ standard, and its integers are turned into uniform doubles here (not by
 // std::uniform_real_distribution, whose algorithm each library chooses).
 //
-// Ray queries test each cloud's bounding volume (clouds are few: hundreds at most) and
-// return the crossings in order along the ray.
+// Ray queries test the bounding volumes of the clouds a uniform grid over their
+// footprints lists along the ray (cloud_grid.h) and return the crossings in order
+// along the ray.
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
 #include "skylit/clouds/cloud.h"
+#include "skylit/clouds/cloud_grid.h"
 
 namespace skylit {
 
@@ -29,6 +33,17 @@ struct CloudLayerSettings {
   double first_amplitude = 0.3;                      // then ×1/√2 per wave
 };
 
+// The most clouds a generated layer may hold. Each cloud a view meets builds a sun grid
+// (0.4 MB, about 0.1–0.4 s on one core here), so a layer of many more can take many
+// minutes at any image size (issue 19, item 11): a scene reader refuses settings whose
+// expected count exceeds it, and generate() stops at twice it (the count is random).
+inline constexpr std::size_t kMaxGeneratedClouds = 500;
+
+// How many clouds generate() makes for these settings, on average: the target footprint
+// −ln(1 − coverage)·(2·(half_extent + max_semi_axis))² over the mean footprint
+// π·E[a²]·E[b/a] of the size distribution.
+double expected_generated_cloud_count(const CloudLayerSettings& settings);
+
 // A uniform double in [0, 1) from the top 53 bits of one draw.
 double cloud_uniform(std::uint64_t draw);
 
@@ -40,7 +55,7 @@ void add_gardner_waves(CloudShape& shape, std::uint64_t seed, int waves = 4, dou
 class CloudLayer {
  public:
   CloudLayer() = default;
-  explicit CloudLayer(std::vector<Cloud> clouds) : clouds_(std::move(clouds)) {}
+  explicit CloudLayer(std::vector<Cloud> clouds) : clouds_(std::move(clouds)), grid_(clouds_) {}
 
   // Clouds with centres uniform in the region widened by max_semi_axis, added until their
   // summed footprint reaches −ln(1 − coverage) times the widened area: for randomly
@@ -49,8 +64,12 @@ class CloudLayer {
 
   const std::vector<Cloud>& clouds() const { return clouds_; }
 
-  // Cloud::prepare_sun on every cloud (once per scene / sun direction); scatter() with
-  // light.to_sun equal to to_sun then interpolates t' instead of marching toward the sun.
+  // From now on scatter() with light.to_sun equal to to_sun interpolates t' in each
+  // cloud's sun grid instead of marching toward the sun. A cloud's grid is built
+  // (Cloud::prepare_sun) when the first ray meets it, once, whichever thread asks first:
+  // a grid costs about 0.4 MB and 10^5 marches, and a layer of thousands of clouds of
+  // which a view meets a few must not pay for all (issue 19, item 11). The values do not
+  // depend on when a grid is built, so neither does the image.
   void prepare_sun(const Vec3& to_sun);
   void clear_sun();
   bool empty() const { return clouds_.empty(); }
@@ -74,7 +93,14 @@ class CloudLayer {
   CloudScattering scatter(const Vec3& o, const Vec3& d, double t_min, double t_max, const CloudLighting& light) const;
 
  private:
-  std::vector<Cloud> clouds_;
+  // Builds cloud `index`'s sun grid if prepare_sun asked for grids and it has none yet.
+  void ensure_sun_grid(std::size_t index) const;
+
+  // Mutable only for the sun grids built on demand, each under its own once_flag.
+  mutable std::vector<Cloud> clouds_;
+  CloudGrid grid_;
+  std::optional<Vec3> grid_sun_;                  // the direction prepare_sun asked for
+  std::unique_ptr<std::once_flag[]> grid_built_;  // one per cloud
 };
 
 }  // namespace skylit
