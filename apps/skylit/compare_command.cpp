@@ -77,6 +77,12 @@ int run_compare(const CompareArguments& args) {
     check_output_folder(*args.ratio_map);
   }
   if (args.json) check_output_folder(*args.json);
+  std::vector<std::string> inputs = {args.a, args.b};
+  for (const auto* input : {&args.standard_error_a, &args.standard_error_b, &args.regions_file, &args.mask})
+    if (*input) inputs.push_back(**input);
+  for (const auto* output : {&args.ratio_map, &args.json})
+    if (*output)
+      for (const std::string& input : inputs) check_not_an_input(**output, input);
 
   const XyzImage a = read_image(args.a);
   const XyzImage b = read_image(args.b);

@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "exit_status.h"
+#include "skylit/io/atomic_file.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -19,6 +20,8 @@ int main(int argc, char** argv) {
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     return "skylit: " + std::string(e.what()) + " (see skylit --help)\n";
   });
+  // An interrupted render or sweep leaves no hidden temporary file behind (issue 19, item 14).
+  skylit::remove_temporaries_on_signals();
   const std::vector<skylit::cli::CommandRunner> commands = {
       skylit::cli::add_render_command(app), skylit::cli::add_sun_command(app),
       skylit::cli::add_sky_command(app),    skylit::cli::add_spectrum_command(app),

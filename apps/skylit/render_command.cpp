@@ -14,6 +14,7 @@
 #include "render_outputs.h"
 #include "skylit/core/error.h"
 #include "skylit/io/image/image.h"
+#include "skylit/io/output_files.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/io/scene/scene_report.h"
 #include "skylit/render/renderer.h"
@@ -42,10 +43,12 @@ void make_preview(RenderSettings& render) {
 }
 
 int run_render(const RenderArguments& args) {
-  // Check every output's format and folder before the work, so a typo costs nothing.
-  std::vector<std::string> all_outputs = args.outputs;
+  // Every output's format, folder and name checked, and its temporary file made, before
+  // the work, so that a typo costs nothing; written all or nothing after it.
+  std::vector<std::filesystem::path> all_outputs(args.outputs.begin(), args.outputs.end());
   all_outputs.insert(all_outputs.end(), args.standard_error_outputs.begin(), args.standard_error_outputs.end());
-  for (const std::string& out : all_outputs) check_render_output(out);
+  for (const std::filesystem::path& out : all_outputs) check_render_output(out.string());
+  OutputFiles outputs(all_outputs, {args.scene_file});
   Scene scene = load_scene(args.scene_file, args.overrides);
   if (args.preview) make_preview(scene.render);
   // Likely mistakes are said before the work; the camera checks build a ray-tracing
@@ -67,9 +70,12 @@ int run_render(const RenderArguments& args) {
   display.degrees_per_pixel = scene.camera.vertical_fov_deg / scene.render.height;
   std::optional<PixelLayers> layers;
   if (outputs_need_layers(args.outputs, scene)) layers = trace_pixel_layers(renderer.prepared());
+  std::size_t next = 0;
   for (const std::string& out : args.outputs)
-    write_render_output(out, result.image, scene, display, layers ? &*layers : nullptr);
-  for (const std::string& out : args.standard_error_outputs) write_image(*result.standard_error, out, display);
+    outputs.write(next++, render_output_bytes(out, result.image, scene, display, layers ? &*layers : nullptr));
+  for (const std::string& out : args.standard_error_outputs)
+    outputs.write(next++, encode_image(*result.standard_error, out, display));
+  outputs.publish();
   return 0;
 }
 

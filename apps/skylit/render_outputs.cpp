@@ -55,17 +55,16 @@ bool outputs_need_layers(const std::vector<std::string>& paths, const Scene& sce
   return false;
 }
 
-void write_render_output(const std::string& path, const XyzImage& image, const Scene& scene,
-                         const DisplayOptions& display, const PixelLayers* layers) {
+std::vector<uint8_t> render_output_bytes(const std::string& path, const XyzImage& image, const Scene& scene,
+                                         const DisplayOptions& display, const PixelLayers* layers) {
   if (is_statistics_path(path)) {
     const RenderStatistics stats = render_statistics(image, *layers, scene);
     const std::string text = lower_extension(path) == ".csv" ? statistics_csv(stats) : statistics_json(stats);
-    AtomicFile(path).commit({reinterpret_cast<const uint8_t*>(text.data()), text.size()});
-    return;
+    return {text.begin(), text.end()};
   }
   if (is_false_colour_path(path)) {
-    write_false_colour(image, pixel_luminances(image), path, scene.render.false_colour, display);
-    return;
+    check_pixels_finite(image, path);
+    return encode_false_colour(image, pixel_luminances(image), scene.render.false_colour, display);
   }
   DisplayOptions options = display;
   options.radiance_view = radiance_view_options(scene.camera, image.width, image.height);
@@ -74,7 +73,7 @@ void write_render_output(const std::string& path, const XyzImage& image, const S
     data = exr_layers(*layers, scene);
     options.exr_layers = &data;
   }
-  write_image(image, path, options);
+  return encode_image(image, path, options);
 }
 
 }  // namespace skylit::cli

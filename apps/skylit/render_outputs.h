@@ -4,6 +4,7 @@
 // nothing.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,9 +20,9 @@ void check_render_output(const std::string& path);
 // Whether any of the outputs needs the pixel layers (statistics, or EXR data layers).
 bool outputs_need_layers(const std::vector<std::string>& paths, const Scene& scene);
 
-// Writes one output of a finished render; `layers` may be null when
-// outputs_need_layers said no.
-void write_render_output(const std::string& path, const XyzImage& image, const Scene& scene,
-                         const DisplayOptions& display, const PixelLayers* layers);
+// The bytes of one output of a finished render, for an all-or-nothing set of outputs
+// (io/output_files.h); `layers` may be null when outputs_need_layers said no.
+std::vector<uint8_t> render_output_bytes(const std::string& path, const XyzImage& image, const Scene& scene,
+                                         const DisplayOptions& display, const PixelLayers* layers);
 
 }  // namespace skylit::cli

@@ -76,6 +76,7 @@ std::optional<double> check_combinations(const SweepArguments& args, const Sweep
 int run_sweep(const SweepArguments& args) {
   const std::filesystem::path sheet_path = args.sheet;
   check_sheet_path(sheet_path);
+  check_not_an_input(sheet_path, args.scene_file);
   std::vector<SweepParameter> parameters;
   for (const std::string& vary : args.varies) parameters.push_back(parse_sweep_parameter(vary));
   const SweepPlan plan = plan_sweep(std::move(parameters));

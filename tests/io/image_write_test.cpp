@@ -32,6 +32,25 @@ TEST(ImageWrite, FormatFromExtensionIgnoresCase) {
   EXPECT_THROW(image_format_from_path("png"), InputError);  // a name, not an extension
 }
 
+TEST(ImageWrite, NonFinitePixelsAreAnInternalErrorAndNothingIsWritten) {
+  // Issue 19: the writers turned NaN and Inf black, which hid the renderer's bugs. Now
+  // they are counted, and the image is refused in every format (a logic_error: exit 1).
+  test::ScratchFolder dir("non-finite");
+  XyzImage image = test::grey_image(3, 2, 10.0);
+  image.set(0, 0, {NAN, 1, 1});
+  image.set(2, 1, {1, INFINITY, 1});
+  for (const char* name : {"a.exr", "a.pfm", "a.hdr", "a.png"}) {
+    try {
+      write_image(image, dir / name);
+      ADD_FAILURE() << name << " was written";
+    } catch (const NonFinitePixels& e) {
+      EXPECT_NE(std::string(e.what()).find("2 of 6 pixels are not finite"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), std::filesystem::directory_iterator()), 0);
+  EXPECT_NO_THROW(check_pixels_finite(test::grey_image(3, 2, 1e30), "fine.exr"));
+}
+
 TEST(ImageWrite, UnknownExtensionIsInputErrorAndLeavesNoFile) {
   test::ScratchFolder dir("unknown-extension");
   const std::filesystem::path path = dir / "render.tiff";

@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "skylit/figures/figure_file.h"
+#include "skylit/io/atomic_file.h"
+#include "skylit/io/image/image_encoders.h"
 #include "skylit/figures/viridis.h"
 
 namespace skylit {
@@ -142,12 +144,19 @@ Raster render_false_colour(std::span<const float> values, int width, int height,
   return raster;
 }
 
+std::vector<uint8_t> encode_false_colour(const XyzImage& image, std::span<const float> values,
+                                         const FalseColourSettings& settings, const DisplayOptions& display) {
+  std::vector<uint8_t> underlay;
+  if (settings.underlay) underlay = display_srgb8(image, display);
+  const Raster raster = render_false_colour(values, image.width, image.height, settings, underlay);
+  return encode_png_rgb8(raster.width, raster.height, raster.rgb);
+}
+
 void write_false_colour(const XyzImage& image, std::span<const float> values, const std::filesystem::path& path,
                         const FalseColourSettings& settings, const DisplayOptions& display) {
   figure_extension(path, {".png"}, "a false-colour image");
-  std::vector<uint8_t> underlay;
-  if (settings.underlay) underlay = display_srgb8(image, display);
-  write_png(render_false_colour(values, image.width, image.height, settings, underlay), path);
+  AtomicFile file(path);  // checks the folder before the work
+  file.commit(encode_false_colour(image, values, settings, display));
 }
 
 bool is_false_colour_path(const std::filesystem::path& path) {

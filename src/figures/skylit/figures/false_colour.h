@@ -49,6 +49,10 @@ struct FalseColourLayout {
 Raster render_false_colour(std::span<const float> values, int width, int height, const FalseColourSettings& settings,
                            std::span<const uint8_t> underlay_srgb, FalseColourLayout* layout = nullptr);
 
+// The false-colour PNG's bytes (see write_false_colour).
+std::vector<uint8_t> encode_false_colour(const XyzImage& image, std::span<const float> values,
+                                         const FalseColourSettings& settings, const DisplayOptions& display);
+
 // The false-colour PNG of a render through a temporary file: `values` per pixel of
 // `image` (its luminance, or the illuminance layer), the underlay (if asked) the
 // display image of `image` under `display`. InputError naming the path for a name

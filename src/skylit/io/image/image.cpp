@@ -43,21 +43,34 @@ ImageFormat image_format_from_path(const std::filesystem::path& path) {
                    "; use .png, .exr, .pfm or .hdr");
 }
 
-void write_image(const XyzImage& image, const std::filesystem::path& path, const DisplayOptions& options) {
-  // Everything that can be refused is refused before a temporary file exists.
-  const ImageFormat format = image_format_from_path(path);
+void check_pixels_finite(const XyzImage& image, const std::filesystem::path& path) {
+  check_image_shape(image);
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < pixels; ++i) bad += pixel_is_finite(image, i) ? 0 : 1;
+  if (bad > 0)
+    throw NonFinitePixels("\"" + path.string() + "\": " + std::to_string(bad) + " of " + std::to_string(pixels) +
+                          " pixels are not finite numbers, so nothing was written (a bug in skylit: please report "
+                          "it with the scene)");
+}
+
+namespace {
+
+// Everything about one image that can be refused, before a temporary file exists.
+void check_writable(const XyzImage& image, const std::filesystem::path& path, const DisplayOptions& options) {
   check_image_shape(image);
   if (image.width == 0 || image.height == 0)
     throw std::invalid_argument("write_image: empty image for \"" + path.string() + "\"");
   if (options.exposure_ev && !std::isfinite(*options.exposure_ev))
     throw InputError("cannot write \"" + path.string() + "\": exposure_ev is not finite");
-
   if (options.exr_layers)
     for (const auto& [name, values] : options.exr_layers->channels)
       if (values.size() != static_cast<std::size_t>(image.width) * image.height)
         throw std::invalid_argument("write_image: layer " + name + " does not match the image");
+  check_pixels_finite(image, path);
+}
 
-  AtomicFile file(path);  // checks the folder before the (possibly slow) encoding
+Bytes encode(const XyzImage& image, ImageFormat format, const DisplayOptions& options) {
   Bytes bytes;
   switch (format) {
     case ImageFormat::exr:
@@ -73,7 +86,21 @@ void write_image(const XyzImage& image, const std::filesystem::path& path, const
       bytes = encode_png(image, options);
       break;
   }
-  file.commit(bytes);
+  return bytes;
+}
+
+}  // namespace
+
+Bytes encode_image(const XyzImage& image, const std::filesystem::path& path, const DisplayOptions& options) {
+  const ImageFormat format = image_format_from_path(path);
+  check_writable(image, path, options);
+  return encode(image, format, options);
+}
+
+void write_image(const XyzImage& image, const std::filesystem::path& path, const DisplayOptions& options) {
+  image_format_from_path(path);
+  AtomicFile file(path);  // checks the folder before the (possibly slow) encoding
+  file.commit(encode_image(image, path, options));
 }
 
 }  // namespace skylit

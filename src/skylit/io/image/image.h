@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,9 +46,28 @@ ImageFormat image_format_from_path(const std::filesystem::path& path);
 
 // Writes through a temporary file in the same folder, renamed into place, so that a
 // failed or interrupted write leaves no partial file. InputError (naming the path) if
-// the extension is unknown or the folder is missing or unwritable. Non-finite pixels
-// are written as black. The same image and options give the same bytes.
+// the extension is unknown or the folder is missing or unwritable. An image with a
+// non-finite pixel is not written: NonFinitePixels. The same image and options give
+// the same bytes.
 void write_image(const XyzImage& image, const std::filesystem::path& path, const DisplayOptions& options = {});
+
+// A NaN or Inf in a rendered image is skylit's own bug (a user's input is checked before
+// it can cause one), so it is an internal error, and nothing is written: written as
+// black it would hide the fault (issue 19).
+class NonFinitePixels : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+// Throws NonFinitePixels "<path>: N of M pixels are not finite ..." if any pixel has a
+// non-finite component.
+void check_pixels_finite(const XyzImage& image, const std::filesystem::path& path);
+
+// The bytes write_image would write, with the same checks (NonFinitePixels, a layer of
+// the wrong size, an unknown extension), for writers that gather a set of outputs and
+// publish them all or nothing (io/output_files.h).
+std::vector<uint8_t> encode_image(const XyzImage& image, const std::filesystem::path& path,
+                                  const DisplayOptions& options);
 
 // The display transform used for PNG, exposed for tests and contact sheets: returns
 // 8-bit sRGB, 3 per pixel, rows top to bottom.
