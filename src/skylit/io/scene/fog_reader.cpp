@@ -19,18 +19,23 @@ namespace {
 // scale height of −0.001 m, a layer far below the ground) and the light it scatters
 // becomes Inf or NaN (issue 19, item 4).
 constexpr double kMaxFogExtinctionPerM = 10.0;
+// And the density itself, whatever the extinction per unit density (0 included): the
+// most density_at_ground may be. A density of 1e51 with τ0 = 0 still made NaN pixels
+// (found by tests/render/extreme_scenes_test.cpp).
+constexpr double kMaxFogDensity = 1e6;
 
 void check_densest_point(const FogLayer& layer, const JsonReader& j) {
   const double densest = std::max(layer.density(layer.bottom_m()), layer.density(layer.top_m()));
   double sigma = 0;
   for (const double s : layer.unit_density_extinction_bins()) sigma = std::max(sigma, s);
-  if (densest * sigma <= kMaxFogExtinctionPerM) return;
+  const bool too_dense = !(densest <= kMaxFogDensity);
+  if (!too_dense && densest * sigma <= kMaxFogExtinctionPerM) return;
   char shown[48];
-  std::snprintf(shown, sizeof shown, "%.3g", densest * sigma);
-  j.fail(std::string("the fog's extinction at its densest point (the layer's ") +
+  std::snprintf(shown, sizeof shown, "%.3g", too_dense ? densest : densest * sigma);
+  j.fail(std::string("the fog's ") + (too_dense ? "density" : "extinction") + " at its densest point (the layer's " +
          (layer.density(layer.bottom_m()) >= layer.density(layer.top_m()) ? "bottom" : "top") + ") would be " + shown +
-         " per metre, over the limit of 10 (a visibility of 0.4 m): lower density_at_ground or "
-         "unit_density_extinction_per_m, or move the layer or its scale_height_m");
+         (too_dense ? ", over the limit of 1e6" : " per metre, over the limit of 10 (a visibility of 0.4 m)") +
+         ": lower density_at_ground or unit_density_extinction_per_m, or move the layer or its scale_height_m");
 }
 
 }  // namespace
