@@ -194,7 +194,9 @@ TEST(ExtremeScenes, RenderFiniteOrAreRefusedNeverAnInternalError) {
   std::printf("[ExtremeScenes] scenes %d-%d: %d rendered, %d refused as input errors, slowest %.1f s\n", first,
               first + count - 1, rendered, refused, slowest_s);
   // Most are valid: a generator whose scenes were all refused would test nothing.
-  if (count >= 10) EXPECT_GT(rendered, count / 2);
+  if (count >= 10) {
+    EXPECT_GT(rendered, count / 2);
+  }
 }
 
 }  // namespace
