@@ -42,9 +42,16 @@ TEST(BadInputScene, FogDensityThatOverflowsIsRefusedWhereItIsSet) {
   TempDir dir;
   for (const char* fog : {R"({"scale_height_m": -0.001})", R"({"bottom_m": -10000, "top_m": -9000})"}) {
     const std::string error = load_error(dir, with("fog", fog));
-    EXPECT_NE(error.find("scene.json: fog: the fog's extinction at its densest point"), std::string::npos) << error;
-    EXPECT_NE(error.find("over the limit of 10"), std::string::npos) << error;
+    EXPECT_NE(error.find("scene.json: fog: the fog's density at its densest point"), std::string::npos) << error;
+    EXPECT_NE(error.find("over the limit of 1e6"), std::string::npos) << error;
   }
+  // A density within bounds whose extinction is not: 400 × 1 m⁻¹.
+  const std::string error = load_error(dir, with("fog", R"({"density_at_ground": 400, "scale_height_m": 1e6,
+      "unit_density_extinction_per_m": 1})"));
+  EXPECT_NE(error.find("scene.json: fog: the fog's extinction at its densest point (the layer's bottom) would be 400 "
+                       "per metre, over the limit of 10"),
+            std::string::npos)
+      << error;
   // The paper's dense fog (Fig. 8a) and a thick one at the limit's edge stay accepted.
   EXPECT_EQ(load_error(dir, with("fog", R"({"density_at_ground": 0.59, "scale_height_m": 10})")), "");
   EXPECT_EQ(load_error(dir, with("fog", R"({"density_at_ground": 400, "scale_height_m": 1e6})")), "");

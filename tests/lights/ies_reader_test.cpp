@@ -165,7 +165,7 @@ TEST(IesReader, MalformedFilesNameFileAndLine) {
   {
     std::string t = good;
     t.replace(t.find("TILT=NONE"), 9, "TILT=lamp.tlt");
-    EXPECT_NE(message_of(t).find("lamp.ies:5: TILT=lamp.tlt: a separate tilt file is not supported"),
+    EXPECT_NE(message_of(t).find("lamp.ies:5: TILT='lamp.tlt': a separate tilt file is not supported"),
               std::string::npos);
   }
   EXPECT_NE(message_of("IESNA:LM-63-2002\n[TEST] x\n").find("lamp.ies:2: expected a TILT= line"), std::string::npos);

@@ -111,10 +111,16 @@ AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)
   name += std::to_string(counter++);
   name += ".tmp";
   temporary_ = folder / name;
-  const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) fail(target_, "cannot create a file in folder " + quoted(folder) + ": " + std::strerror(errno));
-  ::close(fd);
+  // Tracked before it exists: a signal between the two must not leave it behind.
   slot_ = track(temporary_.c_str());
+  const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    const int error = errno;
+    untrack(slot_);
+    slot_ = -1;
+    fail(target_, "cannot create a file in folder " + quoted(folder) + ": " + std::strerror(error));
+  }
+  ::close(fd);
 }
 
 AtomicFile::~AtomicFile() {
