@@ -79,6 +79,7 @@ TEST(BadInputScene, PlacedCoordinatesAreCheckedWhereTheyAreRead) {
   // 1), or as "the view is vertical" when the camera's distance overflowed.
   TempDir dir;
   dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  dir.write("wide.obj", "v 0 0 0\nv 1e10 0 0\nv 0 1 0\nf 1 2 3\n");
   const struct {
     std::string scene, place;
   } cases[] = {
@@ -88,7 +89,7 @@ TEST(BadInputScene, PlacedCoordinatesAreCheckedWhereTheyAreRead) {
        "objects[2].center: expected a point"},
       {with_object(R"({"type": "mesh", "material": "white", "file": "tri.obj", "transform": {"scale": 1e39}})"),
        "objects[2].transform.scale: scale factors"},
-      {with_object(R"({"type": "mesh", "material": "white", "file": "tri.obj",
+      {with_object(R"({"type": "mesh", "material": "white", "file": "wide.obj",
                       "transform": {"scale": 1e6, "translate": [9.5e6, 0, 0]}})"),
        "objects[2].transform: vertex 1 of the mesh lies beyond"},
       {with_object(R"({"type": "box", "material": "white", "center": [0, 0, 0], "size": [1, 1, 1e30]})"),

@@ -23,6 +23,10 @@ namespace {
 // A mesh's transform may turn millimetres into metres or a model into a city; a million
 // either way is past any such use.
 constexpr double kMaxScaleFactor = 1e6;
+// Mesh vertices, once placed, within ±1e15 m: wider than kSceneExtentM for points, since a
+// model in survey coordinates or read in the wrong unit is accepted with a warning
+// (scene_report.cpp), but far inside what single precision and squared lengths hold.
+constexpr double kMaxMeshCoordinateM = 1e15;
 
 std::optional<uint32_t> material_named(const std::string& name, const std::vector<NamedMaterial>& materials) {
   for (size_t i = 0; i < materials.size(); ++i)
@@ -145,9 +149,10 @@ LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir
   // The file's vertices are finite; placed, they must also lie in the scene's extent.
   for (std::size_t i = 0; i < model.mesh.vertices.size(); ++i) {
     const Vec3& v = model.mesh.vertices[i];
-    if (!(std::abs(v.x) <= kSceneExtentM && std::abs(v.y) <= kSceneExtentM && std::abs(v.z) <= kSceneExtentM))
+    if (!(std::abs(v.x) <= kMaxMeshCoordinateM && std::abs(v.y) <= kMaxMeshCoordinateM &&
+          std::abs(v.z) <= kMaxMeshCoordinateM))
       (t ? *t : j.required("file"))
-          .fail("vertex " + std::to_string(i) + " of the mesh lies beyond ±1e7 m of the site once placed");
+          .fail("vertex " + std::to_string(i) + " of the mesh lies beyond ±1e15 m of the site once placed");
   }
   return model;
 }
