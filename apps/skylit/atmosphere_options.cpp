@@ -1,6 +1,9 @@
 #include "atmosphere_options.h"
 
+#include <vector>
+
 #include "number_checks.h"
+#include "skylit/atmosphere/aerosol_types.h"
 
 namespace skylit::cli {
 
@@ -13,8 +16,12 @@ void add_atmosphere_options(CLI::App* command, AtmosphereOptions& o) {
   command->add_option("--aod550", o.settings.aerosol.aod_550, "Aerosol optical depth at 550 nm (default 0.1, clear)")
       ->check(finite_range(0.0, 10.0));
   command
-      ->add_option("--angstrom", o.settings.aerosol.angstrom_exponent,
-                   "Ångström exponent of the aerosols (default 1.3)")
+      ->add_option("--aerosol-type", o.aerosol_type,
+                   "OPAC aerosol type (default continental_average; docs/atmosphere.md)")
+      ->check(CLI::IsMember(std::vector<std::string>(aerosol_type_names().begin(), aerosol_type_names().end())));
+  command
+      ->add_option("--angstrom", o.angstrom_exponent,
+                   "Ångström exponent of the aerosols (default: the type's, 1.42 above 500 nm for continental)")
       ->check(finite_range(-1.0, 4.0));
   command->add_option("--ozone-du", o.settings.ozone_column_du, "Total ozone column, Dobson units (default 300)")
       ->check(finite_range(0.0, 1000.0));
@@ -34,6 +41,9 @@ void add_atmosphere_options(CLI::App* command, AtmosphereOptions& o) {
 AtmosphereSettings atmosphere_settings(const AtmosphereOptions& o) {
   AtmosphereSettings settings = o.settings;
   settings.model = o.model == "paper" ? AtmosphereModel::paper : AtmosphereModel::full;
+  settings.aerosol = with_aerosol_type(settings.aerosol, *aerosol_type_from_name(o.aerosol_type));
+  if (o.angstrom_exponent)
+    settings.aerosol.angstrom_exponent = settings.aerosol.angstrom_exponent_short = *o.angstrom_exponent;
   return settings;
 }
 

@@ -100,10 +100,10 @@ TEST(AerialPerspective, LongNearlyHorizontalPathApproachesTheHorizonSky) {
   // 0.1° above the horizontal, 80 km of air near the ground (optical depth 3.6–12
   // across the bins) hide most of what lies beyond: the air's own light is the sky's
   // in that direction, less what the rest of the path adds — up to T(80 km) = 2.6 %
-  // of it in the far red, nothing in the violet — and less the difference of two tables
-  // that sample the horizon differently (32 × 32 directions vs 96 × 128). Measured: the
-  // worst bin (775 nm) −2.1 … −3.0 %, luminance within 0.2 %. Tolerance 4 %. (Exactly
-  // horizontal the table is wrong: DISABLED_HorizontalViewsFarAway… below.)
+  // of it in the far red (3.0 % with continental average aerosol, α = 1.42), nothing in the violet — and less the
+  // difference of two tables that sample the horizon differently (32 × 32 directions vs 96 × 128). Measured: the worst
+  // bin (775 nm) −2.1 … −3.0 %, luminance within 0.2 %. Tolerance 4 %. (Exactly horizontal the table is wrong:
+  // DISABLED_HorizontalViewsFarAway… below.)
   const SkyModel& sky = default_sky(kSunDeg, kEyeHeightM);
   for (double azimuth : {20.0, 90.0, 180.0}) {
     const Vec3 view = world_direction(0.1, azimuth);
@@ -115,7 +115,7 @@ TEST(AerialPerspective, LongNearlyHorizontalPathApproachesTheHorizonSky) {
       std::printf("80 km at 0.1 deg, %.0f deg from the sun: worst bin %.2f %%, luminance %.2f %%\n", azimuth,
                   100 * worst, 100 * (luminance(air.in_scattered) / luminance(horizon) - 1));
     EXPECT_LT(worst, 0.04) << azimuth;
-    EXPECT_LT(air.transmittance[kSpectralBins - 1], 0.03f);
+    EXPECT_LT(air.transmittance[kSpectralBins - 1], 0.035f);
   }
 }
 

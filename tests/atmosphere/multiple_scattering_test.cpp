@@ -55,6 +55,7 @@
 #include <vector>
 
 #include "sky_reference.h"
+#include "skylit/atmosphere/aerosol_types.h"
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/atmosphere/phase_functions.h"
 #include "skylit/atmosphere/shell_geometry.h"
@@ -141,7 +142,8 @@ class MonteCarloSky {
   // with isotropic scattering after the first event, and orders ≥ 6.
   static constexpr size_t kSlots = kMaxOrder + 6;
 
-  explicit MonteCarloSky(const Atmosphere& atmosphere) : atmosphere_(atmosphere) {}
+  explicit MonteCarloSky(const Atmosphere& atmosphere)
+      : atmosphere_(atmosphere), aerosol_phase_(atmosphere.settings().aerosol) {}
 
   ViewResult run(int bin, int view_index) const {
     const View& view = kViews[static_cast<size_t>(view_index)];
@@ -201,10 +203,7 @@ class MonteCarloSky {
  private:
   // The mixed phase function at a point with Rayleigh and aerosol scattering coefficients.
   double phase(double sigma_r, double sigma_a, double cos_theta) const {
-    const AerosolSettings& aerosol = atmosphere_.settings().aerosol;
-    const double p_a = aerosol.phase == AerosolPhase::cornette_shanks
-                           ? cornette_shanks_phase(cos_theta, aerosol.asymmetry)
-                           : henyey_greenstein_phase(cos_theta, aerosol.asymmetry);
+    const double p_a = aerosol_phase_(cos_theta);
     return (sigma_r * rayleigh_phase(cos_theta, atmosphere_.medium().rayleigh_gamma) + sigma_a * p_a) /
            (sigma_r + sigma_a);
   }
@@ -308,6 +307,7 @@ class MonteCarloSky {
   }
 
   const Atmosphere& atmosphere_;
+  AerosolPhaseFunction aerosol_phase_;
 };
 
 // The model's radiance for a view, or its diffuse horizontal irradiance by a midpoint

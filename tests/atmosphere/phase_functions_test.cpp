@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "skylit/atmosphere/aerosol_types.h"
 #include "skylit/atmosphere/phase_functions.h"
 #include "skylit/clouds/cloud_scattering.h"
 #include "skylit/core/counter_random.h"
@@ -57,6 +58,15 @@ std::vector<Case> cases() {
   for (double g : {0.5, 0.75})
     out.push_back({"Cornette-Shanks", [=](double c) { return cornette_shanks_phase(c, g); },
                    3 * g * (4 + g * g) / (5 * (2 + g * g))});
+  // The aerosol types' phase functions: the mean cosine stated is OPAC's asymmetry
+  // parameter of each type (data/aerosol_types.csv), for both shapes.
+  for (const std::string_view name : aerosol_type_names())
+    for (AerosolPhase shape : {AerosolPhase::cornette_shanks, AerosolPhase::henyey_greenstein}) {
+      AerosolSettings aerosol = with_aerosol_type({}, *aerosol_type_from_name(name));
+      aerosol.phase = shape;
+      out.push_back({"aerosol " + std::string(name), [=](double c) { return AerosolPhaseFunction(aerosol)(c); },
+                     aerosol.asymmetry});
+    }
   for (double d : {5.0, 15.0, 50.0}) {
     const DropletPhaseParameters p = DropletPhaseParameters::for_diameter(d);
     out.push_back({"fog droplets", [=](double c) { return droplet_phase(c, p); }, droplet_phase_mean_cosine(p)});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../test_support.h"
+#include "skylit/atmosphere/aerosol_types.h"
 #include "skylit/atmosphere/optical_properties.h"
 #include "skylit/core/error.h"
 #include "skylit/io/scene/scene_loader.h"
@@ -52,9 +53,27 @@ TEST(SceneAtmosphere, AtmosphereSettingsAreRead) {
   EXPECT_EQ(scene.atmosphere.model, AtmosphereModel::paper);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.aod_550, 0.3);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.angstrom_exponent, 1.0);
+  EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.angstrom_exponent_short, 1.0);
   EXPECT_DOUBLE_EQ(scene.atmosphere.ozone_column_du, 250);
   EXPECT_DOUBLE_EQ(scene.atmosphere.ground_albedo, 0.3);
   EXPECT_EQ(scene.atmosphere.aerosol.phase, AerosolPhase::henyey_greenstein);
+}
+
+TEST(SceneAtmosphere, AerosolTypeSetsOpticalPropertiesNotTheAmount) {
+  testing::TempDir dir;
+  const Scene scene = load_scene(dir.write(
+      "scene.json", testing::small_scene_json().replace(
+                        1, 0, R"( "atmosphere": {"aerosol_type": "desert", "aod_550": 0.4, "asymmetry": 0.65},)")));
+  const AerosolSettings desert = with_aerosol_type({}, AerosolType::desert);
+  EXPECT_EQ(scene.atmosphere.aerosol.type, AerosolType::desert);
+  EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.aod_550, 0.4);
+  EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.single_scattering_albedo, desert.single_scattering_albedo);
+  EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.angstrom_exponent, desert.angstrom_exponent);
+  EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.asymmetry, 0.65);  // an explicit value wins over the type's
+  const std::string error =
+      load_error(testing::small_scene_json().replace(1, 0, R"( "atmosphere": {"aerosol_type": "volcanic"},)"));
+  EXPECT_NE(error.find("atmosphere.aerosol_type"), std::string::npos) << error;
+  EXPECT_NE(error.find("continental_average"), std::string::npos) << error;
 }
 
 TEST(SceneAtmosphere, VisibilityBecomesAnOpticalDepth) {

@@ -12,11 +12,29 @@ enum class AtmosphereModel {
 
 enum class AerosolPhase { cornette_shanks, henyey_greenstein };
 
+// The aerosol types of OPAC (Hess, Koepke & Schult 1998), data/aerosol_types.csv.
+enum class AerosolType {
+  continental_clean,
+  continental_average,
+  continental_polluted,
+  urban,
+  maritime_clean,
+  maritime_polluted,
+  desert,
+};
+
+// The defaults are OPAC's continental average at 80 % relative humidity (its Table 4;
+// a test checks them against data/aerosol_types.csv); `aerosol_settings(type)` gives
+// the others. The amount, aod_550, is set apart from the type.
 struct AerosolSettings {
-  double aod_550 = 0.1;                   // optical depth at 550 nm of the column above the site
-  double angstrom_exponent = 1.3;         // Ångström's law: τ(λ) = τ(550)·(λ/550 nm)^−α
-  double single_scattering_albedo = 0.9;  // scattering / extinction
-  double asymmetry = 0.75;                // g of the phase function
+  AerosolType type = AerosolType::continental_average;
+  double aod_550 = 0.1;  // optical depth at 550 nm of the column above the site
+  // Ångström's law in two pieces, as OPAC tabulates it: τ(λ) = τ(550)·(λ/550 nm)^−α
+  // from 500 nm up, and τ(500)·(λ/500 nm)^−α_short below 500 nm.
+  double angstrom_exponent = 1.42;          // 500–800 nm
+  double angstrom_exponent_short = 1.11;    // 350–500 nm
+  double single_scattering_albedo = 0.925;  // scattering / extinction at 550 nm
+  double asymmetry = 0.703;                 // the phase function's mean cosine ⟨cos θ⟩ at 550 nm
   AerosolPhase phase = AerosolPhase::cornette_shanks;
   double scale_height_m = 1200.0;  // the paper's §3.1 after Sekine (1987)
 };

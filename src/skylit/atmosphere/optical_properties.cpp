@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skylit/atmosphere/aerosol_types.h"
 #include "skylit/core/angles.h"
 #include "skylit/spectrum/illuminants.h"
 #include "skylit/spectrum/tabulated.h"
@@ -121,7 +122,7 @@ AtmosphereMedium::AtmosphereMedium(const AtmosphereSettings& settings, const Spe
     // The scale height fixes the sea-level coefficient: τ = β₀·H (issue 3; docs/atmosphere.md).
     rayleigh_scattering[i] = static_cast<float>(tau_r / rayleigh_scale_height_m_);
     const double lambda = 0.5 * (lo + hi);
-    const double aerosol_tau = aerosol.aod_550 * std::pow(lambda / 550.0, -aerosol.angstrom_exponent);
+    const double aerosol_tau = aerosol.aod_550 * aerosol_relative_optical_depth(aerosol, lambda);
     aerosol_extinction[i] = static_cast<float>(aerosol_tau / aerosol_scale_height_m_);
     aerosol_scattering[i] =
         static_cast<float>(aerosol.single_scattering_albedo * aerosol_tau / aerosol_scale_height_m_);

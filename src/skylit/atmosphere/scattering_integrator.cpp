@@ -27,14 +27,11 @@ ScatteringIntegrator::ScatteringIntegrator(const AtmosphereMedium& medium, const
       transmittance_(transmittance),
       multiple_(multiple),
       ground_sky_(ground_sky),
-      aerosol_(aerosol),
+      aerosol_phase_(aerosol),
       ground_albedo_(ground_albedo) {}
 
 ScatteringIntegrator::Phases ScatteringIntegrator::phases(double nu) const {
-  const double aerosol = aerosol_.phase == AerosolPhase::cornette_shanks
-                             ? cornette_shanks_phase(nu, aerosol_.asymmetry)
-                             : henyey_greenstein_phase(nu, aerosol_.asymmetry);
-  return {static_cast<float>(rayleigh_phase(nu, medium_.rayleigh_gamma)), static_cast<float>(aerosol)};
+  return {static_cast<float>(rayleigh_phase(nu, medium_.rayleigh_gamma)), static_cast<float>(aerosol_phase_(nu))};
 }
 
 double ScatteringIntegrator::ray_length(double r, double mu, bool& ends_on_ground) const {

@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "skylit/atmosphere/aerosol_types.h"
 #include "skylit/atmosphere/multiple_scattering_table.h"
 #include "skylit/atmosphere/transmittance_table.h"
 
@@ -78,7 +79,7 @@ class ScatteringIntegrator {
   const TransmittanceTable& transmittance_;
   const MultipleScatteringTable* multiple_;
   const GroundIrradianceTable* ground_sky_;
-  AerosolSettings aerosol_;
+  AerosolPhaseFunction aerosol_phase_;
   double ground_albedo_;
 };
 

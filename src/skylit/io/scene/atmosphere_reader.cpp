@@ -2,6 +2,7 @@
 // scene is, where the sun stands, and what the air is like.
 #include <cmath>
 
+#include "skylit/atmosphere/aerosol_types.h"
 #include "skylit/atmosphere/optical_properties.h"
 #include "skylit/io/scene/scene_parts.h"
 #include "skylit/sun/solar_position.h"
@@ -53,11 +54,15 @@ void read_sun_and_atmosphere(const JsonReader& root, Scene& scene) {
 }
 
 AtmosphereSettings read_atmosphere(const JsonReader& j) {
-  j.allow_only({"model", "aod_550", "visibility_km", "linke_turbidity", "angstrom_exponent", "single_scattering_albedo",
-                "asymmetry", "aerosol_phase", "aerosol_scale_height_m", "ozone_du", "ground_albedo"});
+  j.allow_only({"model", "aerosol_type", "aod_550", "visibility_km", "linke_turbidity", "angstrom_exponent",
+                "single_scattering_albedo", "asymmetry", "aerosol_phase", "aerosol_scale_height_m", "ozone_du",
+                "ground_albedo"});
   AtmosphereSettings a;
   if (auto m = j.optional("model"))
     a.model = m->one_of({"full", "paper"}) == "paper" ? AtmosphereModel::paper : AtmosphereModel::full;
+  if (auto t = j.optional("aerosol_type")) {
+    a.aerosol = with_aerosol_type(a.aerosol, *aerosol_type_from_name(t->one_of(aerosol_type_names())));
+  }
   if (auto h = j.optional("aerosol_scale_height_m")) a.aerosol.scale_height_m = h->number_in(100, 20000);
   const int turbidity_keys = j.has("aod_550") + j.has("visibility_km") + j.has("linke_turbidity");
   if (turbidity_keys > 1) j.fail("give one of aod_550, visibility_km, linke_turbidity");
@@ -65,7 +70,9 @@ AtmosphereSettings read_atmosphere(const JsonReader& j) {
   if (auto v = j.optional("visibility_km"))
     a.aerosol.aod_550 = aod_550_from_visibility(v->number_in(0.05, 1000), a.aerosol.scale_height_m);
   if (auto l = j.optional("linke_turbidity")) a.aerosol.aod_550 = aod_550_from_linke_turbidity(l->number_in(1, 12));
-  if (auto e = j.optional("angstrom_exponent")) a.aerosol.angstrom_exponent = e->number_in(-1, 4);
+  // One exponent given replaces both of the type's pieces.
+  if (auto e = j.optional("angstrom_exponent"))
+    a.aerosol.angstrom_exponent = a.aerosol.angstrom_exponent_short = e->number_in(-1, 4);
   if (auto w = j.optional("single_scattering_albedo")) a.aerosol.single_scattering_albedo = w->number_in(0, 1);
   if (auto g = j.optional("asymmetry")) a.aerosol.asymmetry = g->number_in(0, 0.95);
   if (auto p = j.optional("aerosol_phase"))

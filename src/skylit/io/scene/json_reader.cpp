@@ -11,7 +11,7 @@
 namespace skylit {
 
 namespace {
-std::string join_words(std::initializer_list<std::string_view> words) {
+std::string join_words(std::span<const std::string_view> words) {
   std::string out;
   for (std::string_view w : words) {
     if (!out.empty()) out += ", ";
@@ -65,7 +65,8 @@ void JsonReader::allow_only(std::initializer_list<std::string_view> allowed) con
     bool known = false;
     for (std::string_view a : allowed) known = known || a == key;
     if (!known)
-      JsonReader(unused, source_, child_path(path_, key)).fail("unknown key; expected one of: " + join_words(allowed));
+      JsonReader(unused, source_, child_path(path_, key))
+          .fail("unknown key; expected one of: " + join_words({allowed.begin(), allowed.size()}));
   }
 }
 
@@ -121,6 +122,10 @@ std::string JsonReader::string() const {
 }
 
 std::string JsonReader::one_of(std::initializer_list<std::string_view> words) const {
+  return one_of(std::span<const std::string_view>(words.begin(), words.size()));
+}
+
+std::string JsonReader::one_of(std::span<const std::string_view> words) const {
   if (value_->is_string()) {
     std::string s = value_->get<std::string>();  // not const: returned by move
     for (std::string_view w : words)

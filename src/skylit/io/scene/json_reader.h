@@ -6,6 +6,7 @@
 
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,6 +51,7 @@ class JsonReader {
   std::string string() const;
   // One of the given words; the message lists them.
   std::string one_of(std::initializer_list<std::string_view> words) const;
+  std::string one_of(std::span<const std::string_view> words) const;
   Vec3 vec3() const;
   // A point [x, y, z] in metres in the scene, each within ±kSceneExtentM (scene.h).
   Vec3 point_m() const;
