@@ -144,6 +144,35 @@ double band_rayleigh_optical_depth(double lo, double hi) {
   return sum / (3.0 * n);
 }
 
+TEST(PublishedValues, TwilightIlluminanceOnTheHorizontalPlane) {
+  // Horizontal illuminance (sun and sky) as the sun sets, against the clear-sky values
+  // of the AMS Glossary of Meteorology (entries "civil twilight", "astronomical
+  // twilight"): ~585–410 lx at sunset, ~3.5–2 lx at −6°, ~0.008 lx at −12°. Measured
+  // (docs/atmosphere.md): 13.5 klx at +10°, 893 lx at 0°, 124 lx at −3°, 5.2 lx at −6°,
+  // 0.0081 lx at −12°, 6.5e-5 lx at −18°. The −12° value agrees within 30 %; at 0° and
+  // −6° the model is 1.5–2.6 times the published range, which the Monte Carlo reference
+  // of the same air does not explain (multiple_scattering_test.cpp finds the model's
+  // horizontal plane 7–24 % *below* the physical paths there; see docs/atmosphere.md
+  // for what may). Asserted: the −12° value within 30 %, and at 0° and −6° at most 3
+  // times the published range's middle, which the linearly interpolated table of
+  // before (9.1 lx at −6°, 0.0148 lx at −12°) failed.
+  const auto horizontal_lx = [](double sun_deg) {
+    const SkyModel& sky = default_sky(sun_deg);
+    return illuminance(sky.direct_sun(0.0)) * std::max(0.0, std::sin(radians(sun_deg))) +
+           illuminance(sky.diffuse_horizontal_at_observer());
+  };
+  const double at_0 = horizontal_lx(0.0), at_6 = horizontal_lx(-6.0), at_12 = horizontal_lx(-12.0);
+  if (report())
+    for (double sun : {10.0, 0.0, -3.0, -6.0, -12.0, -18.0})
+      std::printf("sun %+.0f deg: horizontal illuminance %.4g lx, zenith %.3g cd/m2\n", sun, horizontal_lx(sun),
+                  luminance(default_sky(sun).sky_radiance({0, 0, 1})));
+  EXPECT_NEAR(at_12, 0.008, 0.3 * 0.008);
+  EXPECT_GT(at_0, 410.0);
+  EXPECT_LT(at_0, 3.0 * 585.0);
+  EXPECT_GT(at_6, 2.0);
+  EXPECT_LT(at_6, 3.0 * 2.75);
+}
+
 TEST(PublishedValues, RayleighOnlyAtmosphereAttenuatesTheZenithSunByItsOpticalDepth) {
   // Without aerosols and ozone, the zenith sun loses e^(−τ_R) per bin, τ_R Bodhaine's
   // sea-level optical depth (averaged over the bin) times the fraction of the

@@ -38,6 +38,13 @@ double unit_from_mu_sun(double mu_sun) {
   return 0.5 * (1.0 + (mu_sun < 0 ? -s : s));
 }
 
+// Ψ_ms falls by orders of magnitude as the sun sets past the point's horizon, nearly
+// exponentially: the table holds its logarithm, so that interpolating between rows
+// follows the fall instead of overshooting it (linear interpolation of a convex
+// curve), which made twilight skies too bright. Below the floor Ψ_ms is taken as 0.
+constexpr float kPsiFloor = 1e-30f;
+const float kLogPsiFloor = std::log(kPsiFloor) + 1.0f;
+
 }  // namespace
 
 MultipleScatteringTable::Factors MultipleScatteringTable::factors_at(const AtmosphereMedium& medium,
@@ -112,7 +119,8 @@ MultipleScatteringTable::MultipleScatteringTable(const AtmosphereMedium& medium,
       const double mu_sun = mu_sun_from_unit(static_cast<double>(i) / (kMuSunSize - 1));
       const Factors f = factors_at(medium, transmittance, ground_albedo, r, mu_sun);
       Spectrum psi;
-      for (int k = 0; k < kSpectralBins; ++k) psi[k] = f.second_order[k] / (1.0f - std::min(f.transfer[k], 0.999f));
+      for (int k = 0; k < kSpectralBins; ++k)
+        psi[k] = std::log(std::max(f.second_order[k] / (1.0f - std::min(f.transfer[k], 0.999f)), kPsiFloor));
       table_.at(i, j) = psi;
     }
   });
@@ -121,7 +129,10 @@ MultipleScatteringTable::MultipleScatteringTable(const AtmosphereMedium& medium,
 Spectrum MultipleScatteringTable::psi(double r, double mu_sun) const {
   const double fi = unit_from_mu_sun(mu_sun) * (kMuSunSize - 1);
   const double fj = unit_from_altitude(r - ground_radius_, top_radius_ - ground_radius_) * (kAltitudeSize - 1);
-  return table_.interpolate(fi, fj);
+  const Spectrum log_psi = table_.interpolate(fi, fj);
+  Spectrum out;
+  for (int k = 0; k < kSpectralBins; ++k) out[k] = log_psi[k] <= kLogPsiFloor ? 0.0f : std::exp(log_psi[k]);
+  return out;
 }
 
 }  // namespace skylit

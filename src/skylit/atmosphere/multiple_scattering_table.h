@@ -16,7 +16,7 @@ namespace skylit {
 
 class MultipleScatteringTable {
  public:
-  static constexpr int kMuSunSize = 20, kAltitudeSize = 12;
+  static constexpr int kMuSunSize = 40, kAltitudeSize = 16;
   static constexpr int kDirections = 64;  // Hillaire's 64 directions over the sphere
   static constexpr int kSegments = 20;
 
