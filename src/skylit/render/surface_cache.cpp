@@ -22,7 +22,7 @@ SurfaceCache::Grid::Grid(int width, int height, int spacing)
       spacing_(spacing),
       grid_width_((width - 1 + spacing - 1) / spacing + 1),
       grid_height_((height - 1 + spacing - 1) / spacing + 1),
-      entries_(static_cast<size_t>(grid_width_ * grid_height_)) {}
+      slots_(static_cast<size_t>(grid_width_) * grid_height_, kNone) {}
 
 void SurfaceCache::Grid::cell(double x, double y, int& gx, int& gy, double& tx, double& ty) const {
   // Grid point g stands at the centre of pixel min(g·spacing, size − 1).
@@ -45,12 +45,12 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
   double total = 0;
   for (int dy = 0; dy <= 1; ++dy) {
     for (int dx = 0; dx <= 1; ++dx) {
-      const Entry& e = entries_[index(std::min(gx + dx, grid_width_ - 1), std::min(gy + dy, grid_height_ - 1))];
-      if (!e.valid || !same_surface(e.point, point)) continue;
+      const Stored* e = stored(std::min(gx + dx, grid_width_ - 1), std::min(gy + dy, grid_height_ - 1));
+      if (!e || !same_surface(e->point, point)) continue;
       // Bilinear weights, kept off zero so that a lone compatible corner still counts.
       const double w = std::max(dx ? tx : 1.0 - tx, 1e-3) * std::max(dy ? ty : 1.0 - ty, 1e-3);
-      sum.diffuse_irradiance += e.value.diffuse_irradiance * static_cast<float>(w);
-      sum.specular_radiance += e.value.specular_radiance * static_cast<float>(w);
+      sum.diffuse_irradiance += e->value.diffuse_irradiance * static_cast<float>(w);
+      sum.specular_radiance += e->value.specular_radiance * static_cast<float>(w);
       total += w;
     }
   }
@@ -64,15 +64,15 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, co
   int gx, gy;
   double tx, ty;
   cell(x, y, gx, gy, tx, ty);
-  const Entry* best = nullptr;
+  const Stored* best = nullptr;
   double best_distance = 0;
   for (int cy = std::max(0, gy - cells + 1); cy <= std::min(grid_height_ - 1, gy + cells); ++cy) {
     for (int cx = std::max(0, gx - cells + 1); cx <= std::min(grid_width_ - 1, gx + cells); ++cx) {
-      const Entry& e = entries_[index(cx, cy)];
-      if (!e.valid || !same_surface(e.point, point)) continue;
+      const Stored* e = stored(cx, cy);
+      if (!e || !same_surface(e->point, point)) continue;
       const double d = std::hypot(pixel_x(cx) + 0.5 - x, pixel_y(cy) + 0.5 - y);
       if (!best || d < best_distance) {  // ties keep the first in scan order: deterministic
-        best = &e;
+        best = e;
         best_distance = d;
       }
     }
@@ -81,59 +81,73 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, co
   return best->value;
 }
 
-void SurfaceCache::Grid::set(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value) {
-  Entry& e = entries_[index(gx, gy)];
-  e.valid = true;
-  e.point = point;
-  e.value = value;
-}
-
-int SurfaceCache::Grid::computed() const {
-  int n = 0;
-  for (const Entry& e : entries_) n += e.valid ? 1 : 0;
-  return n;
-}
-
-void SurfaceCache::compute_wanted(Grid& grid, const PrimaryHits& hits, const Compute& compute) {
-  tbb::parallel_for(0, grid.grid_height(), [&](int gy) {
-    for (int gx = 0; gx < grid.grid_width(); ++gx) {
-      if (!grid.wanted(gx, gy)) continue;
-      if (const SurfacePoint* p = hits.surface(grid.pixel_x(gx), grid.pixel_y(gy))) grid.set(gx, gy, *p, compute(*p));
+void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute) {
+  // Slots in scan order, then the values in parallel: deterministic.
+  for (int gy = 0; gy < grid_height_; ++gy)
+    for (int gx = 0; gx < grid_width_; ++gx) {
+      int32_t& slot = slots_[index(gx, gy)];
+      if (slot != kWanted) continue;
+      slot = kNone;
+      if (const SurfacePoint* p = hits.surface(pixel_x(gx), pixel_y(gy))) {
+        slot = static_cast<int32_t>(stored_.size());
+        stored_.push_back({*p, {}});
+      }
     }
-  });
+  tbb::parallel_for(size_t{0}, stored_.size(), [&](size_t i) { stored_[i].value = compute(stored_[i].point); });
 }
+
+namespace {
+
+// The pixels whose centre's surface `covered` has no value for, row by row (checked in
+// parallel).
+template <typename Covered>
+std::vector<std::vector<int>> uncovered_pixels(const PrimaryHits& hits, const Covered& covered) {
+  std::vector<std::vector<int>> rows(static_cast<size_t>(hits.height()));
+  tbb::parallel_for(0, hits.height(), [&](int y) {
+    for (int x = 0; x < hits.width(); ++x)
+      if (const SurfacePoint* p = hits.surface(x, y); p && !covered(x + 0.5, y + 0.5, *p))
+        rows[static_cast<size_t>(y)].push_back(x);
+  });
+  return rows;
+}
+
+}  // namespace
 
 SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute)
-    : coarse_(hits.width(), hits.height(), kCoarseSpacing), fine_(hits.width(), hits.height(), kFineSpacing) {
-  const int width = hits.width(), height = hits.height();
+    : coarse_(hits.width(), hits.height(), kCoarseSpacing),
+      fine_(hits.width(), hits.height(), kFineSpacing),
+      pixel_(hits.width(), hits.height(), kPixelSpacing) {
   for (int gy = 0; gy < coarse_.grid_height(); ++gy)
     for (int gx = 0; gx < coarse_.grid_width(); ++gx) coarse_.want(gx, gy);
-  compute_wanted(coarse_, hits, compute);
-  // The fine grid around every pixel whose surface the coarse grid does not cover: the
-  // rows are checked in parallel, each listing its fine cells, then marked in order.
-  std::vector<std::vector<std::pair<int, int>>> cells(static_cast<size_t>(height));
-  tbb::parallel_for(0, height, [&](int y) {
-    for (int x = 0; x < width; ++x) {
-      const SurfacePoint* p = hits.surface(x, y);
-      if (!p || coarse_.interpolate(x + 0.5, y + 0.5, *p)) continue;
+  coarse_.compute_wanted(hits, compute);
+  // The fine grid around every pixel whose surface the coarse grid does not cover.
+  const auto not_by_coarse =
+      uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) { return coarse_.interpolate(x, y, p); });
+  for (size_t y = 0; y < not_by_coarse.size(); ++y)
+    for (const int x : not_by_coarse[y]) {
       int gx, gy;
       double tx, ty;
-      fine_.cell(x + 0.5, y + 0.5, gx, gy, tx, ty);
-      cells[static_cast<size_t>(y)].emplace_back(gx, gy);
-    }
-  });
-  for (const auto& row : cells)
-    for (const auto& [gx, gy] : row)
+      fine_.cell(x + 0.5, static_cast<double>(y) + 0.5, gx, gy, tx, ty);
       for (int dy = 0; dy <= 1; ++dy)
         for (int dx = 0; dx <= 1; ++dx)
           fine_.want(std::min(gx + dx, fine_.grid_width() - 1), std::min(gy + dy, fine_.grid_height() - 1));
-  compute_wanted(fine_, hits, compute);
+    }
+  fine_.compute_wanted(hits, compute);
+  // The centres of the pixels that neither grid covers.
+  const auto not_by_grids = uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) {
+    return coarse_.interpolate(x, y, p) || fine_.interpolate(x, y, p) || fine_.nearest(x, y, p, 2);
+  });
+  for (size_t y = 0; y < not_by_grids.size(); ++y)
+    for (const int x : not_by_grids[y]) pixel_.want(x, static_cast<int>(y));
+  pixel_.compute_wanted(hits, compute);
 }
 
 std::optional<CachedSkyLight> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {
   if (auto value = coarse_.interpolate(x, y, point)) return value;
   if (auto value = fine_.interpolate(x, y, point)) return value;
-  return fine_.nearest(x, y, point, 2);
+  if (auto value = fine_.nearest(x, y, point, 2)) return value;
+  if (auto value = pixel_.interpolate(x, y, point)) return value;
+  return pixel_.nearest(x, y, point, 2);
 }
 
 }  // namespace skylit

@@ -2,10 +2,12 @@
 // surfaces): computed exactly at the surface points seen through a sparse grid of pixel
 // centres, then interpolated for the samples in between from the grid points that lie
 // on the same surface. Where a pixel's surface has no such grid point around it (edges,
-// small objects), a finer grid is computed there; a sample that still finds none gets
-// its own exact value from the caller. Sky light changes slowly along a surface, so this
-// costs no visible accuracy, makes no noise, and is deterministic: every value is a
-// function of its surface point alone.
+// small objects), a finer grid is computed there, and where that finds none either, the
+// pixel's centre itself (so the antialiasing samples of a pixel share its centre's value
+// instead of each computing its own: on a model of many small parts nearly every pixel is
+// an edge); a sample that still finds none gets its own exact value from the caller. Sky light changes slowly along a
+// surface, so this costs no visible accuracy, makes no noise, and is deterministic: every value is a function of its
+// surface point alone.
 #pragma once
 
 #include <cstdint>
@@ -34,21 +36,24 @@ class SurfaceCache {
  public:
   using Compute = std::function<CachedSkyLight(const SurfacePoint&)>;
 
-  // Coarse and fine grid spacings in pixels.
-  static constexpr int kCoarseSpacing = 16, kFineSpacing = 4;
+  // Coarse and fine grid spacings in pixels; the last level is every pixel's centre.
+  static constexpr int kCoarseSpacing = 16, kFineSpacing = 4, kPixelSpacing = 1;
 
-  // From the surfaces seen at every pixel centre: computes the coarse grid, and the fine
-  // grid where the coarse one does not cover a pixel's surface; in parallel.
+  // From the surfaces seen at every pixel centre: computes the coarse grid, the fine
+  // grid where the coarse one does not cover a pixel's surface, and the pixel's own
+  // centre where neither does; in parallel.
   SurfaceCache(const PrimaryHits& hits, const Compute& compute);
 
   // The value for a surface point seen at image position (x, y) in pixels: interpolated
   // from the coarse grid or else the fine one; else the nearest fine grid point within 8
-  // pixels on the same surface; none if there is none.
+  // pixels on the same surface; else interpolated from the pixel centres computed, or
+  // the nearest of them within 2 pixels on the same surface; none if there is none.
   std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point) const;
 
-  // Grid points computed, coarse and fine (for the benchmark and tests).
+  // Grid points computed, coarse, fine and per pixel (for the benchmark and tests).
   int coarse_points() const { return coarse_.computed(); }
   int fine_points() const { return fine_.computed(); }
+  int pixel_points() const { return pixel_.computed(); }
 
  private:
   class Grid {
@@ -65,25 +70,30 @@ class SurfaceCache {
     // the same surface: for slivers of a surface next to an edge, which no corner of
     // their own cell sees.
     std::optional<CachedSkyLight> nearest(double x, double y, const SurfacePoint& point, int cells) const;
-    void set(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value);
-    bool wanted(int gx, int gy) const { return entries_[index(gx, gy)].wanted; }
-    void want(int gx, int gy) { entries_[index(gx, gy)].wanted = true; }
-    int computed() const;
+    void want(int gx, int gy) { slots_[index(gx, gy)] = kWanted; }
+    // Computes the wanted points that see a surface, in parallel.
+    void compute_wanted(const PrimaryHits& hits, const Compute& compute);
+    int computed() const { return static_cast<int>(stored_.size()); }
 
    private:
-    struct Entry {
-      bool wanted = false, valid = false;
+    // Computed points are stored densely, the grid holding their slots: the per-pixel
+    // level has as many cells as the image but few computed points.
+    static constexpr int32_t kNone = -1, kWanted = -2;
+    struct Stored {
       SurfacePoint point;
       CachedSkyLight value;
     };
-    size_t index(int gx, int gy) const { return static_cast<size_t>(gy * grid_width_ + gx); }
+    size_t index(int gx, int gy) const { return static_cast<size_t>(gy) * grid_width_ + gx; }
+    const Stored* stored(int gx, int gy) const {
+      const int32_t slot = slots_[index(gx, gy)];
+      return slot >= 0 ? &stored_[static_cast<size_t>(slot)] : nullptr;
+    }
     int width_, height_, spacing_, grid_width_, grid_height_;
-    std::vector<Entry> entries_;
+    std::vector<int32_t> slots_;
+    std::vector<Stored> stored_;
   };
 
-  static void compute_wanted(Grid& grid, const PrimaryHits& hits, const Compute& compute);
-
-  Grid coarse_, fine_;
+  Grid coarse_, fine_, pixel_;
 };
 
 }  // namespace skylit

@@ -1,0 +1,91 @@
+// The sky-light cache on surfaces broken into pieces smaller than its grids (a model of
+// many small parts seen from afar): every pixel centre still gets a value of its own
+// surface from the cache, and the antialiasing samples inside a pixel share it instead
+// of each needing an exact computation.
+#include "skylit/render/surface_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+
+#include "skylit/render/camera.h"
+
+namespace skylit {
+namespace {
+
+constexpr int kWidth = 64, kHeight = 48;
+
+// A camera 100 m above the plane z = 0, looking straight down; the plane's material
+// changes every `tile_m` metres in x and y among `materials` materials.
+PrimaryHits hits_of_tiled_plane(double tile_m, int materials) {
+  const ImageCamera camera(Camera{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 50.0}, kWidth, kHeight);
+  return PrimaryHits(camera, kWidth, kHeight, [&](const Ray& ray) {
+    const double t = -ray.origin.z / ray.direction.z;
+    const Vec3 p = ray.origin + t * ray.direction;
+    const auto ix = static_cast<long>(std::floor(p.x / tile_m)), iy = static_cast<long>(std::floor(p.y / tile_m));
+    const auto material = static_cast<uint32_t>(((ix * 7 + iy * 13) % materials + materials) % materials);
+    return PrimaryHit{0, SurfacePoint{p, {0, 0, 1}, t, material}};
+  });
+}
+
+// A value that differs from point to point, so a look-up shows which point it came from.
+CachedSkyLight value_at(const SurfacePoint& p) {
+  return {Irradiance(static_cast<float>(1000 + p.position.x + 0.01 * p.position.y)), Radiance(0.0f)};
+}
+
+TEST(SurfaceCache, PixelsOfSurfacesSmallerThanTheGridsGetTheirCentresValue) {
+  // Tiles of about one pixel (the footprint is 2·100·tan 25° / 48 ≈ 1.94 m) among 64
+  // materials: the coarse and fine grids cover almost nothing.
+  const PrimaryHits hits = hits_of_tiled_plane(1.9, 64);
+  std::atomic<int> computed{0};
+  const SurfaceCache cache(hits, [&](const SurfacePoint& p) {
+    ++computed;
+    return value_at(p);
+  });
+  EXPECT_GT(cache.pixel_points(), kWidth * kHeight / 2);
+  EXPECT_EQ(computed.load(), cache.coarse_points() + cache.fine_points() + cache.pixel_points());
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const SurfacePoint& centre = *hits.surface(x, y);
+      const std::optional<CachedSkyLight> at_centre = cache.interpolate(x + 0.5, y + 0.5, centre);
+      ASSERT_TRUE(at_centre) << x << ", " << y;
+      // A sample a quarter pixel away on the centre's surface (the same material and
+      // plane) gets a value of that surface: from its own centre or another point of the
+      // same material on the plane, as the cache's same_surface allows, within one
+      // coarse cell (16 px ≈ 31 m, so value_at differs by at most ≈ 31.4).
+      SurfacePoint sample = centre;
+      sample.position += Vec3{0.4, 0.4, 0};
+      const std::optional<CachedSkyLight> at_sample = cache.interpolate(x + 0.75, y + 0.75, sample);
+      ASSERT_TRUE(at_sample) << x << ", " << y;
+      EXPECT_NEAR(at_sample->diffuse_irradiance[0], value_at(centre).diffuse_irradiance[0], 32.0f);
+    }
+  // The centres that no grid covers are computed exactly at that centre: the value is
+  // the centre's own (the other corners of its cell, on other tiles, do not count, or
+  // with the 1e-3 weight floor when they share its tile: at most 1e-3 · 4 off).
+  int own = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const SurfacePoint& centre = *hits.surface(x, y);
+      const float expected = value_at(centre).diffuse_irradiance[0];
+      if (std::abs(cache.interpolate(x + 0.5, y + 0.5, centre)->diffuse_irradiance[0] - expected) < 0.02f) ++own;
+    }
+  EXPECT_GE(own, cache.pixel_points());
+  // A surface that no pixel centre sees has no value: the caller computes it exactly.
+  SurfacePoint elsewhere = *hits.surface(10, 10);
+  elsewhere.material = 1000;
+  EXPECT_FALSE(cache.interpolate(10.5, 10.5, elsewhere));
+}
+
+TEST(SurfaceCache, OneLargeSurfaceNeedsNoPerPixelPoints) {
+  // One material over the whole view: the coarse grid covers every pixel.
+  const PrimaryHits hits = hits_of_tiled_plane(1000.0, 1);
+  const SurfaceCache cache(hits, value_at);
+  EXPECT_EQ(cache.fine_points(), 0);
+  EXPECT_EQ(cache.pixel_points(), 0);
+  const SurfacePoint& p = *hits.surface(20, 30);
+  ASSERT_TRUE(cache.interpolate(20.5, 30.5, p));
+}
+
+}  // namespace
+}  // namespace skylit
