@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "skylit/figures/figure_file.h"
+#include "skylit/figures/viridis.h"
 #include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image_encoders.h"
-#include "skylit/figures/viridis.h"
 
 namespace skylit {
 namespace {
