@@ -137,7 +137,7 @@ class MonteCarloSky {
   // estimate per chunk; standard errors come from the spread of the 64 chunk means.
   static constexpr int kStrataCosine = 25, kStrataAzimuth = 32;
   static constexpr int kPathsPerChunk = kStrataCosine * kStrataAzimuth;
-  static constexpr int kPaths = kChunks * kPathsPerChunk;  // 51,200
+  static_assert(kChunks * kPathsPerChunk == 51'200, "the paths the docs quote");
 
   // Tally slots per sun: orders 1..kMaxOrder, then orders ≥ 2, all orders, both again
   // with isotropic scattering after the first event, and orders ≥ 6.

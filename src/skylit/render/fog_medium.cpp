@@ -22,7 +22,6 @@ double FogMedium::row_elevation(int row) {
 FogMedium::FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes, const SkyModel& sky,
                      const Vec3& camera)
     : layer_(settings),
-      sky_(sky),
       to_sun_(sky.to_sun()),
       sun_above_fog_(sky.direct_sun(std::max(0.0, layer_.top_m())).spectrum()),
       shadows_(meshes, sky.to_sun()),

@@ -52,7 +52,6 @@ class FogMedium {
 
  private:
   FogLayer layer_;
-  const SkyModel& sky_;
   Vec3 to_sun_;
   Spectrum sun_above_fog_;  // the sun's direct normal irradiance at the layer's top
   SunShadowVolumes shadows_;
