@@ -7,7 +7,6 @@
 #include "skylit/assess/render_statistics.h"
 #include "skylit/core/error.h"
 #include "skylit/figures/false_colour.h"
-#include "skylit/io/atomic_file.h"
 #include "skylit/io/image/exposure_meter.h"
 #include "skylit/io/image/radiance_view.h"
 
@@ -46,7 +45,6 @@ ExrLayers exr_layers(const PixelLayers& layers, const Scene& scene) {
 
 void check_render_output(const std::string& path) {
   if (!is_statistics_path(path)) image_format_from_path(path);
-  check_output_folder(path);
 }
 
 bool outputs_need_layers(const std::vector<std::string>& paths, const Scene& scene) {

@@ -14,7 +14,8 @@
 
 namespace skylit::cli {
 
-// InputError naming the path if its kind or folder is wrong.
+// InputError naming the path if its kind (extension) is not one render writes; its
+// folder is checked by the OutputFiles that reserve it (io/output_files.h).
 void check_render_output(const std::string& path);
 
 // Whether any of the outputs needs the pixel layers (statistics, or EXR data layers).
