@@ -1,11 +1,11 @@
 // Writing a render's outputs by their names (render_outputs.h).
 #include "render_outputs.h"
 
-#include <cctype>
 #include <filesystem>
 
 #include "skylit/assess/render_statistics.h"
 #include "skylit/core/error.h"
+#include "skylit/core/file_names.h"
 #include "skylit/figures/false_colour.h"
 #include "skylit/io/image/exposure_meter.h"
 #include "skylit/io/image/radiance_view.h"
@@ -14,14 +14,8 @@ namespace skylit::cli {
 
 namespace {
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 bool is_statistics_path(const std::string& path) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = lower_case_extension(path);
   return ext == ".json" || ext == ".csv";
 }
 
@@ -49,7 +43,7 @@ void check_render_output(const std::string& path) {
 
 bool outputs_need_layers(const std::vector<std::string>& paths, const Scene& scene) {
   for (const std::string& p : paths)
-    if (is_statistics_path(p) || (scene.render.exr_layers && lower_extension(p) == ".exr")) return true;
+    if (is_statistics_path(p) || (scene.render.exr_layers && lower_case_extension(p) == ".exr")) return true;
   return false;
 }
 
@@ -57,7 +51,7 @@ std::vector<uint8_t> render_output_bytes(const std::string& path, const XyzImage
                                          const DisplayOptions& display, const PixelLayers* layers) {
   if (is_statistics_path(path)) {
     const RenderStatistics stats = render_statistics(image, *layers, scene);
-    const std::string text = lower_extension(path) == ".csv" ? statistics_csv(stats) : statistics_json(stats);
+    const std::string text = lower_case_extension(path) == ".csv" ? statistics_csv(stats) : statistics_json(stats);
     return {text.begin(), text.end()};
   }
   if (is_false_colour_path(path)) {

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -16,6 +15,7 @@
 #include "commands.h"
 #include "progress_bar.h"
 #include "skylit/core/error.h"
+#include "skylit/core/file_names.h"
 #include "skylit/figures/contact_sheet.h"
 #include "skylit/figures/sweep.h"
 #include "skylit/io/atomic_file.h"
@@ -39,10 +39,7 @@ struct SweepArguments {
 };
 
 void check_sheet_path(const std::filesystem::path& sheet) {
-  std::string extension = sheet.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".png")
+  if (lower_case_extension(sheet) != ".png")
     throw InputError("cannot write \"" + sheet.string() + "\": a contact sheet is written as .png");
   check_output_folder(sheet);
 }

@@ -2,11 +2,11 @@
 #include "skylit/figures/false_colour.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
+#include "skylit/core/file_names.h"
 #include "skylit/figures/figure_file.h"
 #include "skylit/figures/viridis.h"
 #include "skylit/io/atomic_file.h"
@@ -160,8 +160,7 @@ void write_false_colour(const XyzImage& image, std::span<const float> values, co
 }
 
 bool is_false_colour_path(const std::filesystem::path& path) {
-  std::string name = path.filename().string();
-  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string name = lower_case(path.filename().string());
   for (const std::string suffix : {".falsecolor.png", ".falsecolour.png"})
     if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
       return true;

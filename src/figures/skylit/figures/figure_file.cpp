@@ -1,16 +1,14 @@
 // figure_extension (figure_file.h).
 #include "skylit/figures/figure_file.h"
 
-#include <cctype>
-
 #include "skylit/core/error.h"
+#include "skylit/core/file_names.h"
 
 namespace skylit {
 
 std::string figure_extension(const std::filesystem::path& path, std::initializer_list<std::string_view> allowed,
                              std::string_view what) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lower_case_extension(path);
   std::string list;
   std::size_t i = 0;
   for (std::string_view a : allowed) {

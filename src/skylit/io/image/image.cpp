@@ -2,12 +2,12 @@
 // memory and writes through an AtomicFile (the encoders live in *_writer.cpp).
 #include "skylit/io/image/image.h"
 
-#include <cctype>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "skylit/core/error.h"
+#include "skylit/core/file_names.h"
 #include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image_encoders.h"
 
@@ -32,8 +32,7 @@ Xyz finite_pixel_or_black(const XyzImage& image, std::size_t index) {
 }
 
 ImageFormat image_format_from_path(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lower_case_extension(path);
   if (ext == ".png") return ImageFormat::png;
   if (ext == ".exr") return ImageFormat::exr;
   if (ext == ".pfm") return ImageFormat::pfm;

@@ -2,23 +2,17 @@
 // refused here, before any library sees it, so the message is ours and says what is wrong.
 #include "skylit/io/image/image_reader.h"
 
-#include <cctype>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <system_error>
 
 #include "skylit/core/error.h"
+#include "skylit/core/file_names.h"
 #include "skylit/io/image/image_decoders.h"
 
 namespace skylit {
 namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 std::string read_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -30,7 +24,7 @@ std::string read_bytes(const std::filesystem::path& path) {
 }  // namespace
 
 XyzImage read_image(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = lower_case_extension(path);
   if (ext != ".exr" && ext != ".pfm")
     throw InputError("cannot read \"" + path.string() +
                      "\": " + (ext.empty() ? std::string("no file extension") : "unknown extension \"" + ext + "\"") +

@@ -2,22 +2,16 @@
 // loaded mesh must pass before it reaches the ray tracer (see mesh_io.h).
 #include "skylit/io/model/mesh_io.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
 #include "skylit/core/error.h"
+#include "skylit/core/file_names.h"
 
 namespace skylit {
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 // Embree stores single-precision coordinates, so a double that overflows float is
 // as unusable as a NaN.
@@ -50,7 +44,7 @@ LoadedModel load_model_file(const std::filesystem::path& path, UpAxis up_axis) {
   if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": mesh file not found");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
 
-  const std::string ext = lower(path.extension().string());
+  const std::string ext = lower_case_extension(path);
   LoadedModel model;
   if (ext == ".obj")
     model = load_obj_file(path);
