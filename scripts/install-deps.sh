@@ -12,6 +12,7 @@ packages=(
   libembree-dev libtbb-dev libopenexr-dev libpng-dev
   nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev libcli11-dev
   libgtest-dev libbenchmark-dev
+  libproj-dev proj-bin
 )
 if [ "${1:-}" = "--clang" ]; then
   packages+=(clang-14 libclang-rt-14-dev clang-format clang-tidy)

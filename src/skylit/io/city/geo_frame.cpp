@@ -1,0 +1,118 @@
+#include "skylit/io/city/geo_frame.h"
+
+#include <proj.h>
+
+#include <cmath>
+#include <cstdio>
+#include <regex>
+
+#include "skylit/core/error.h"
+
+namespace skylit {
+
+namespace {
+
+constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
+
+// A PROJ context and one operation, freed together. Each object has its own context,
+// so that frames on different threads never share PROJ's state.
+struct ProjHandle {
+  PJ_CONTEXT* context = proj_context_create();
+  PJ* operation = nullptr;
+  ProjHandle() { proj_log_level(context, PJ_LOG_NONE); }
+  ~ProjHandle() {
+    if (operation) proj_destroy(operation);
+    proj_context_destroy(context);
+  }
+  ProjHandle(const ProjHandle&) = delete;
+  ProjHandle& operator=(const ProjHandle&) = delete;
+  std::string last_error() const { return proj_context_errno_string(context, proj_context_errno(context)); }
+};
+
+bool finite(const PJ_COORD& c) { return std::isfinite(c.v[0]) && std::isfinite(c.v[1]) && std::isfinite(c.v[2]); }
+
+std::string describe(const Vec3& p) {
+  char text[120];
+  std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", p.x, p.y, p.z);
+  return text;
+}
+
+}  // namespace
+
+double curvature_drop_m(double distance_m, double refraction_k) {
+  return distance_m * distance_m / (2.0 * kEarthMeanRadiusM) * (1.0 - refraction_k);
+}
+
+std::string normalized_crs_name(const std::string& name) {
+  static const std::regex url(R"(^https?://www\.opengis\.net/def/crs/EPSG/[0-9.]+/([0-9]+)$)");
+  static const std::regex urn(R"(^urn:ogc:def:crs:EPSG:[0-9.]*:([0-9]+)$)");
+  static const std::regex epsg(R"(^EPSG:+([0-9]+)$)", std::regex::icase);
+  std::smatch m;
+  if (std::regex_match(name, m, url) || std::regex_match(name, m, urn) || std::regex_match(name, m, epsg))
+    return "EPSG:" + m[1].str();
+  return name;
+}
+
+struct CrsToWgs84::Proj : ProjHandle {};
+
+CrsToWgs84::CrsToWgs84(const std::string& crs, const std::string& source)
+    : proj_(std::make_unique<Proj>()), crs_(normalized_crs_name(crs)), source_(source) {
+  PJ* given = proj_create(proj_->context, crs_.c_str());
+  const bool is_crs = given && proj_is_crs(given);
+  if (given) proj_destroy(given);
+  if (!is_crs) throw InputError(source_ + ": the coordinate reference system '" + crs + "' is unknown to PROJ");
+  // The best operation PROJ has (with its grids where installed) for each point's area.
+  proj_->operation = proj_create_crs_to_crs(proj_->context, crs_.c_str(), "EPSG:4979", nullptr);
+  if (!proj_->operation)
+    throw InputError(source_ + ": PROJ cannot transform '" + crs + "' to WGS 84: " + proj_->last_error());
+}
+
+CrsToWgs84::~CrsToWgs84() = default;
+
+std::vector<GeoPoint> CrsToWgs84::transform(const std::vector<Vec3>& points) const {
+  std::vector<GeoPoint> out(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    // EPSG:4979 in its own axis order: latitude, longitude (degrees), height.
+    const PJ_COORD c = proj_trans(proj_->operation, PJ_FWD, proj_coord(points[i].x, points[i].y, points[i].z, 0));
+    if (!finite(c))
+      throw InputError(source_ + ": PROJ cannot transform the point " + describe(points[i]) + " of " + crs_ +
+                       " to WGS 84 (outside the CRS's area?)");
+    out[i] = {c.v[0], c.v[1], c.v[2]};
+  }
+  return out;
+}
+
+GeoPoint CrsToWgs84::transform(const Vec3& point) const { return transform(std::vector<Vec3>{point})[0]; }
+
+struct LocalFrame::Proj : ProjHandle {};
+
+LocalFrame::LocalFrame(const GeoPoint& origin) : proj_(std::make_unique<Proj>()), origin_(origin) {
+  char definition[200];
+  std::snprintf(definition, sizeof definition, "+proj=aeqd +lat_0=%.12f +lon_0=%.12f +x_0=0 +y_0=0 +ellps=WGS84",
+                origin.latitude_deg, origin.longitude_deg);
+  proj_->operation = proj_create(proj_->context, definition);
+  if (!proj_->operation) throw std::runtime_error("LocalFrame: PROJ refused " + std::string(definition));
+}
+
+LocalFrame::~LocalFrame() = default;
+
+Vec3 LocalFrame::to_local(const GeoPoint& p) const {
+  const PJ_COORD c = proj_trans(
+      proj_->operation, PJ_FWD,
+      proj_coord(p.longitude_deg / kDegreesPerRadian, p.latitude_deg / kDegreesPerRadian, 0, 0));
+  return {c.v[0], c.v[1], p.height_m - origin_.height_m};
+}
+
+std::vector<Vec3> LocalFrame::to_local(const std::vector<GeoPoint>& points) const {
+  std::vector<Vec3> out;
+  out.reserve(points.size());
+  for (const GeoPoint& p : points) out.push_back(to_local(p));
+  return out;
+}
+
+GeoPoint LocalFrame::to_geographic(const Vec3& local) const {
+  const PJ_COORD c = proj_trans(proj_->operation, PJ_INV, proj_coord(local.x, local.y, 0, 0));
+  return {c.v[1] * kDegreesPerRadian, c.v[0] * kDegreesPerRadian, local.z + origin_.height_m};
+}
+
+}  // namespace skylit
