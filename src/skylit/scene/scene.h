@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "skylit/atmosphere/atmosphere_settings.h"
@@ -100,6 +101,26 @@ struct ModelSource {
   std::vector<std::string> missing_libraries;
 };
 
+// Where a city model came from and how it was placed (`skylit info`).
+struct CitySource {
+  std::string file;
+  std::string crs;
+  // The local frame's origin, WGS 84 (the site; or the model's centre, which then
+  // became the site), and the height that became z = 0 (the model's ground level).
+  double latitude_deg = 0, longitude_deg = 0, ground_height_m = 0;
+  bool site_from_model = false;
+  bool curvature_applied = false;
+  std::vector<std::pair<std::string, size_t>> objects_by_type;  // city objects placed
+  struct ClassUse {
+    std::string name;  // "Building.RoofSurface"
+    size_t triangles = 0;
+    std::string material;  // the scene material's name
+  };
+  std::vector<ClassUse> classes;
+  size_t objects_outside_region = 0;
+  size_t degenerate_surfaces = 0;
+};
+
 struct SceneObject {
   std::string name;
   TriangleMesh mesh;        // in world coordinates
@@ -111,6 +132,7 @@ struct SceneObject {
   // empty: shaded flat with the geometric normal.
   std::vector<CornerNormals> corner_normals{};
   std::optional<ModelSource> source{};  // for mesh files
+  std::optional<CitySource> city{};     // for city models
 
   uint32_t material_of(uint32_t triangle) const {
     return triangle_materials.empty() ? material_index : triangle_materials[triangle];

@@ -97,9 +97,9 @@ LocalFrame::LocalFrame(const GeoPoint& origin) : proj_(std::make_unique<Proj>())
 LocalFrame::~LocalFrame() = default;
 
 Vec3 LocalFrame::to_local(const GeoPoint& p) const {
-  const PJ_COORD c = proj_trans(
-      proj_->operation, PJ_FWD,
-      proj_coord(p.longitude_deg / kDegreesPerRadian, p.latitude_deg / kDegreesPerRadian, 0, 0));
+  const PJ_COORD c =
+      proj_trans(proj_->operation, PJ_FWD,
+                 proj_coord(p.longitude_deg / kDegreesPerRadian, p.latitude_deg / kDegreesPerRadian, 0, 0));
   return {c.v[0], c.v[1], p.height_m - origin_.height_m};
 }
 

@@ -22,18 +22,21 @@ SiteLocation read_site(const JsonReader& j) {
 
 }  // namespace
 
-void read_sun_and_atmosphere(const JsonReader& root, Scene& scene) {
+std::optional<SiteLocation> read_scene_site(const JsonReader& root) {
+  if (auto site = root.optional("site")) return read_site(*site);
+  return std::nullopt;
+}
+
+void read_sun_and_atmosphere(const JsonReader& root, Scene& scene,
+                             const std::optional<SiteLocation>& site_from_objects) {
   const auto sun = root.optional("sun");
   const auto site = root.optional("site");
   const auto time = root.optional("time");
   if (auto a = root.optional("atmosphere")) scene.atmosphere = read_atmosphere(*a);
 
-  std::optional<SiteLocation> location;
-  if (site) {
-    location = read_site(*site);
-    scene.atmosphere.site_elevation_m = location->elevation_m;
-  }
-  if (time && !site) time->fail("a time needs a site (latitude_deg, longitude_deg) to place the sun");
+  std::optional<SiteLocation> location = site ? read_site(*site) : site_from_objects;
+  if (location) scene.atmosphere.site_elevation_m = location->elevation_m;
+  if (time && !location) time->fail("a time needs a site (latitude_deg, longitude_deg) to place the sun");
   if (sun && time) sun->fail("give either the sun's position or a site and a time, not both");
   if (!sun && !time) root.fail("missing 'sun' (altitude_deg, azimuth_deg), or 'site' and 'time'");
 

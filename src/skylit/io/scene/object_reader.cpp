@@ -217,12 +217,16 @@ std::vector<MaterialOverride> read_material_overrides(const JsonReader& j, std::
 
 std::vector<SceneObject> read_objects(const JsonReader& j, std::vector<NamedMaterial>& materials,
                                       const std::vector<MaterialOverride>& overrides,
-                                      const std::filesystem::path& base_dir,
-                                      std::vector<std::string>& unused_overrides) {
+                                      const std::filesystem::path& base_dir, std::vector<std::string>& unused_overrides,
+                                      std::optional<SiteLocation>& site) {
   std::vector<SceneObject> out;
   std::vector<bool> override_used(overrides.size(), false);
   for (const JsonReader& o : j.elements()) {
-    const std::string type = o.required("type").one_of({"box", "plane", "mesh"});
+    const std::string type = o.required("type").one_of({"box", "plane", "mesh", "city"});
+    if (type == "city") {
+      out.push_back(read_city(o, base_dir, materials, site));
+      continue;
+    }
     SceneObject object;
     object.name = o.optional("name") ? o.required("name").string() : o.path();
     if (type == "mesh") {

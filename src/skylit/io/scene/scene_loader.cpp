@@ -128,15 +128,18 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
                    "objects", "lights", "render", "probes"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
-  read_sun_and_atmosphere(root, scene);
-  if (auto fog = root.optional("fog")) scene.fog = read_fog(*fog);
-  if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
+  // A city model without a site becomes the site: objects are read before the sun.
+  std::optional<SiteLocation> site = read_scene_site(root);
+  const bool site_given = site.has_value();
   scene.materials = read_materials(root.required("materials"));
   std::vector<MaterialOverride> overrides;
   if (auto o = root.optional("material_overrides")) overrides = read_material_overrides(*o, scene.materials);
   scene.material_override_count = overrides.size();
-  scene.objects =
-      read_objects(root.required("objects"), scene.materials, overrides, base_dir, scene.unused_material_overrides);
+  scene.objects = read_objects(root.required("objects"), scene.materials, overrides, base_dir,
+                               scene.unused_material_overrides, site);
+  read_sun_and_atmosphere(root, scene, site_given ? std::nullopt : site);
+  if (auto fog = root.optional("fog")) scene.fog = read_fog(*fog);
+  if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
   frame_camera(root.required("camera"), scene);

@@ -7,6 +7,7 @@
 
 #include "skylit/io/scene/json_reader.h"
 #include "skylit/scene/scene.h"
+#include "skylit/sun/solar_position.h"
 
 namespace skylit {
 
@@ -15,8 +16,12 @@ namespace skylit {
 // its nlohmann::json parameter must not reach the installed headers.
 Scene scene_from_json(const nlohmann::json& document, const std::string& source, const std::filesystem::path& base_dir);
 
-// `sun`, or `site` and `time`, and `atmosphere`, from the scene's top level.
-void read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
+// `sun`, or `site` and `time`, and `atmosphere`, from the scene's top level. A site
+// found by a city model (`site_from_objects`) stands in for a missing `site`.
+void read_sun_and_atmosphere(const JsonReader& root, Scene& scene,
+                             const std::optional<SiteLocation>& site_from_objects = std::nullopt);
+// The scene's `site`, if it gives one.
+std::optional<SiteLocation> read_scene_site(const JsonReader& root);
 AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
 FogSettings read_fog(const JsonReader& fog);
 FalseColourSettings read_false_colour(const JsonReader& false_colour);
@@ -42,10 +47,14 @@ std::vector<MaterialOverride> read_material_overrides(const JsonReader& override
 Spectrum read_reflectance(const JsonReader& reflectance);
 std::vector<SceneLight> read_lights(const JsonReader& lights, const std::filesystem::path& base_dir);
 // Materials of model files are added to `materials`; override patterns that matched
-// no file material are listed in `unused_overrides`.
+// no file material are listed in `unused_overrides`. `site`: the scene's; a city
+// model sets it to its centre when the scene gives none.
 std::vector<SceneObject> read_objects(const JsonReader& objects, std::vector<NamedMaterial>& materials,
                                       const std::vector<MaterialOverride>& overrides,
-                                      const std::filesystem::path& base_dir,
-                                      std::vector<std::string>& unused_overrides);
+                                      const std::filesystem::path& base_dir, std::vector<std::string>& unused_overrides,
+                                      std::optional<SiteLocation>& site);
+// An object of type "city" (city_reader.cpp).
+SceneObject read_city(const JsonReader& city, const std::filesystem::path& base_dir,
+                      std::vector<NamedMaterial>& materials, std::optional<SiteLocation>& site);
 
 }  // namespace skylit

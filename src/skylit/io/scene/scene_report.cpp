@@ -91,6 +91,27 @@ void check_camera_view(const Scene& scene, const RayTracer& tracer, std::vector<
                      ": is it facing a wall from close by?");
 }
 
+// The city model's file, CRS, site, city objects by type and surface classes with
+// their materials.
+std::string describe_city(const CitySource& c) {
+  std::string out = c.file + ", CRS " + c.crs + "\n";
+  out += format("  site %.7f° N, %.7f° E", c.latitude_deg, c.longitude_deg) +
+         (c.site_from_model ? " (the model's centre: no site given)" : " (the scene's site)") +
+         format("; ground level %.2f m (z = 0)", c.ground_height_m) +
+         (c.curvature_applied ? "; earth curvature and refraction applied" : "") + "\n";
+  out += "  city objects:";
+  for (const auto& [type, count] : c.objects_by_type)
+    out.append(" ").append(std::to_string(count)).append(" ").append(type).append(",");
+  out.back() = '\n';
+  if (c.objects_outside_region > 0) out += "  " + std::to_string(c.objects_outside_region) + " outside the region\n";
+  if (c.degenerate_surfaces > 0)
+    out += "  " + std::to_string(c.degenerate_surfaces) + " surfaces of zero area skipped\n";
+  out += "  surfaces:\n";
+  for (const auto& k : c.classes)
+    out += "    " + k.name + ": " + std::to_string(k.triangles) + " triangles → " + k.material + "\n";
+  return out;
+}
+
 }  // namespace
 
 std::string describe_objects(const Scene& scene) {
@@ -104,6 +125,8 @@ std::string describe_objects(const Scene& scene) {
       if (s.offset_m.x != 0 || s.offset_m.y != 0 || s.offset_m.z != 0)
         out += format(", shifted by (%.3f, %.3f, %.3f) m", s.offset_m.x, s.offset_m.y, s.offset_m.z);
       out += "\n";
+    } else if (object.city) {
+      out += describe_city(*object.city);
     } else {
       out += "primitive\n";
     }
@@ -120,7 +143,7 @@ std::string describe_objects(const Scene& scene) {
       for (const auto& m : object.source->materials)
         out += "    " + quoted(m.file_name) + " → " + m.became + (m.overridden ? " (override)" : "") + "\n";
     }
-    if (object.triangle_materials.empty() || !object.source || object.source->materials.empty())
+    if (!object.city && (object.triangle_materials.empty() || !object.source || object.source->materials.empty()))
       out += "  material: " + scene.materials[object.material_index].name + "\n";
   }
   return out;

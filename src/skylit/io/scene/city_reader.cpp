@@ -1,0 +1,176 @@
+// A scene object of type "city": a city model file (CityJSON; CityGML) placed around
+// the scene's site by its coordinate reference system, its surfaces given materials by
+// their class: the object's `city_materials`, else the default palette
+// (io/city/city_palette.h). docs/city-models.md describes it.
+#include <map>
+#include <string>
+
+#include "skylit/io/city/city_palette.h"
+#include "skylit/io/city/city_placement.h"
+#include "skylit/io/city/cityjson_reader.h"
+#include "skylit/io/scene/scene_parts.h"
+
+namespace skylit {
+
+namespace {
+
+bool has_suffix(const std::string& name, const std::string& suffix) {
+  return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The model in the file, by its kind. A CityGML reader joins here.
+CityModel read_city_file(const JsonReader& file_value, const std::filesystem::path& file,
+                         const CityJsonOptions& options) {
+  const std::string name = file.filename().string();
+  if (has_suffix(name, ".json") || has_suffix(name, ".jsonl")) return read_cityjson_file(file, options);
+  file_value.fail("unknown city model file '" + name + "': expected CityJSON (.json, .city.json, .city.jsonl)");
+}
+
+std::optional<int> read_lod(const JsonReader& j) {
+  std::optional<int> lod;
+  if (j.is_string()) lod = parse_lod(j.string());
+  if (j.is_number()) lod = parse_lod(std::to_string(j.number()));
+  if (!lod) j.fail_expected("a level of detail from 0 to 4.3 (\"2.2\", 2, 1.3)");
+  return lod;
+}
+
+CityRegion read_region(const JsonReader& j) {
+  j.allow_only({"center_lonlat", "radius_m", "bbox_lonlat"});
+  CityRegion region;
+  if (j.has("center_lonlat") == j.has("bbox_lonlat")) j.fail("give either center_lonlat and radius_m, or bbox_lonlat");
+  if (auto c = j.optional("center_lonlat")) {
+    const auto lonlat = c->elements();
+    if (lonlat.size() != 2) c->fail_expected("[longitude, latitude] in degrees");
+    region.center_lonlat_deg = {lonlat[0].number_in(-180, 180), lonlat[1].number_in(-90, 90)};
+    region.radius_m = j.required("radius_m").number_in(0, 1e7);
+  } else {
+    if (j.has("radius_m")) j.required("radius_m").fail("radius_m goes with center_lonlat");
+    const JsonReader b = j.required("bbox_lonlat");
+    const auto values = b.elements();
+    if (values.size() != 4) b.fail_expected("[west, south, east, north] in degrees");
+    region.bbox_lonlat_deg = {values[0].number_in(-180, 180), values[1].number_in(-90, 90),
+                              values[2].number_in(-180, 180), values[3].number_in(-90, 90)};
+    const auto& box = *region.bbox_lonlat_deg;
+    if (!(box[2] > box[0] && box[3] > box[1])) b.fail("east must exceed west and north exceed south");
+  }
+  return region;
+}
+
+EarthCurvature read_curvature(const JsonReader& j) {
+  if (j.is_string()) {
+    j.one_of({"auto"});
+    return EarthCurvature::automatic;
+  }
+  return j.boolean() ? EarthCurvature::on : EarthCurvature::off;
+}
+
+std::optional<uint32_t> material_index(const std::string& name, const std::vector<NamedMaterial>& materials) {
+  for (size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<uint32_t>(i);
+  return std::nullopt;
+}
+
+// The scene material for each class: the object's city_materials (the class, its type
+// or its semantic), else the palette's (added once per scene as "city/<entry>").
+class CityMaterials {
+ public:
+  CityMaterials(const std::optional<JsonReader>& given, const std::string& object_name,
+                std::vector<NamedMaterial>& materials)
+      : given_(given), object_name_(object_name), materials_(materials) {}
+
+  uint32_t material_for(const std::string& class_key) {
+    const size_t dot = class_key.find('.');
+    const std::string type = class_key.substr(0, dot);
+    const std::string semantic = dot == std::string::npos ? "" : class_key.substr(dot + 1);
+    if (given_)
+      for (const std::string& key : {class_key, type, semantic})
+        if (!key.empty() && given_->has(key)) return scene_material(given_->required(key), key);
+    const CityPaletteEntry& entry = city_palette_entry(class_key);
+    const std::string name = "city/" + std::string(entry.key);
+    if (auto index = material_index(name, materials_)) return *index;
+    // A preset's name is a JSON string once quoted.
+    std::string text(entry.material_json);
+    if (text.front() != '{') text = std::string(1, '"').append(text).append(1, '"');
+    const nlohmann::json definition = parse_json_text(text, "the city palette");
+    materials_.push_back({name, read_material(JsonReader(definition, "the city palette", name))});
+    return static_cast<uint32_t>(materials_.size() - 1);
+  }
+
+ private:
+  // A scene material's name, a preset, or a material defined inline.
+  uint32_t scene_material(const JsonReader& value, const std::string& key) {
+    if (value.is_string())
+      if (auto index = material_index(value.string(), materials_)) return *index;
+    const std::string name = object_name_ + "/" + key;
+    if (auto index = material_index(name, materials_)) return *index;
+    materials_.push_back({name, read_material(value)});
+    return static_cast<uint32_t>(materials_.size() - 1);
+  }
+
+  std::optional<JsonReader> given_;
+  std::string object_name_;
+  std::vector<NamedMaterial>& materials_;
+};
+
+}  // namespace
+
+SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir, std::vector<NamedMaterial>& materials,
+                      std::optional<SiteLocation>& site) {
+  j.allow_only({"type", "name", "file", "crs", "lod", "region", "city_materials", "earth_curvature", "refraction_k"});
+  SceneObject object;
+  object.name = j.optional("name") ? j.required("name").string() : j.path();
+  const JsonReader file_value = j.required("file");
+  const std::filesystem::path file = base_dir / file_value.string();
+
+  CityJsonOptions read_options;
+  if (auto lod = j.optional("lod")) read_options.lod = read_lod(*lod);
+  const CityModel model = read_city_file(file_value, file, read_options);
+
+  CityPlacementOptions options;
+  if (auto crs = j.optional("crs")) options.crs = crs->string();
+  if (site) options.origin = GeoPoint{site->latitude_deg, site->longitude_deg, 0};
+  if (auto region = j.optional("region")) options.region = read_region(*region);
+  if (auto c = j.optional("earth_curvature")) options.curvature = read_curvature(*c);
+  if (auto k = j.optional("refraction_k")) options.refraction_k = k->number_in(0, 1);
+  PlacedCity placed = place_city_model(model, options, file.string());
+  if (placed.objects.empty()) file_value.fail("the city model has no surfaces to show (in the region, at the LoD)");
+  if (!site)  // the model's centre becomes the site, for the sun
+    site = SiteLocation{placed.origin.latitude_deg, placed.origin.longitude_deg,
+                        std::clamp(placed.origin.height_m, -500.0, 9000.0)};
+
+  CitySource source;
+  source.file = file.string();
+  source.crs = placed.crs;
+  source.latitude_deg = placed.origin.latitude_deg;
+  source.longitude_deg = placed.origin.longitude_deg;
+  source.ground_height_m = placed.origin.height_m;
+  source.site_from_model = placed.origin_from_model;
+  source.curvature_applied = placed.curvature_applied;
+  source.objects_outside_region = placed.objects_outside_region;
+  source.degenerate_surfaces = placed.degenerate_surfaces;
+
+  CityMaterials city_materials(j.optional("city_materials"), object.name, materials);
+  std::vector<uint32_t> class_material;
+  for (const std::string& key : placed.classes) {
+    class_material.push_back(city_materials.material_for(key));
+    source.classes.push_back({key, 0, materials[class_material.back()].name});
+  }
+  std::map<std::string, size_t> by_type;
+  for (const PlacedCityObject& city_object : placed.objects) {
+    ++by_type[city_object.type];
+    for (const Vec3& v : city_object.mesh.vertices)
+      if (!(std::abs(v.x) <= kSceneExtentM && std::abs(v.y) <= kSceneExtentM && std::abs(v.z) <= kSceneExtentM))
+        file_value.fail("object '" + city_object.id + "' lies beyond ±1e7 m of the site once placed");
+    object.mesh.append(city_object.mesh);
+    for (const uint32_t c : city_object.triangle_class) {
+      object.triangle_materials.push_back(class_material[c]);
+      ++source.classes[c].triangles;
+    }
+  }
+  source.objects_by_type.assign(by_type.begin(), by_type.end());
+  object.material_index = object.triangle_materials.front();
+  object.city = std::move(source);
+  return object;
+}
+
+}  // namespace skylit
