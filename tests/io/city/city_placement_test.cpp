@@ -1,0 +1,199 @@
+// Placement of city models on the earth (io/city/city_placement.h): the real samples
+// in ../shared/data/models against PROJ's command-line tools, true north in a map
+// grid whose north is not, the curvature drop, the region.
+#include "skylit/io/city/city_placement.h"
+
+#include <geodesic.h>
+#include <gtest/gtest.h>
+#include <proj.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "../../test_support.h"
+#include "skylit/core/angles.h"
+#include "skylit/geometry/ray_tracer.h"
+#include "skylit/io/city/cityjson_reader.h"
+#include "skylit/sun/solar_position.h"
+
+namespace skylit {
+namespace {
+
+const std::filesystem::path kModels = std::filesystem::path(SKYLIT_SOURCE_DIR) / "../shared/data/models";
+
+// Where the model's vertices were placed: the one nearest to `expected`, and how far.
+double distance_to_nearest_vertex(const PlacedCity& city, const Vec3& expected) {
+  double nearest = INFINITY;
+  for (const PlacedCityObject& o : city.objects)
+    for (const Vec3& v : o.mesh.vertices) nearest = std::min(nearest, length(v - expected));
+  return nearest;
+}
+
+// A point at geodesic distance s and true azimuth az from the origin, in the local
+// frame: the independent answer that `geod -I` gives (below).
+Vec3 from_azimuth(double azimuth_deg, double distance_m, double z) {
+  return {distance_m * std::sin(radians(azimuth_deg)), distance_m * std::cos(radians(azimuth_deg)), z};
+}
+
+// The tolerances are the issue's: 1 cm and 1e-6° (about 0.1 m); PROJ's transformation
+// and geodesics are exact to far better (nanometres), so any miss is our frame's.
+constexpr double kPositionToleranceM = 0.01;
+constexpr double kAngleToleranceDeg = 1e-6;
+
+TEST(CityPlacement, RotterdamSiteAndVerticesAgreeWithCs2csAndGeod) {
+  const auto file = kModels / "rotterdam_one.city.json";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no shared models";
+  const PlacedCity city = place_city_model(read_cityjson_file(file), {}, file.string());
+  // The centre of the vertices' box in RD, (90938.528, 435647.363), by
+  //   echo 90938.528 435647.363 0 | cs2cs -f %.10f EPSG:7415 EPSG:4979
+  //   → 51.9065947350 4.4565822844 0
+  ASSERT_TRUE(city.origin_from_model);
+  EXPECT_NEAR(city.origin.latitude_deg, 51.9065947350, kAngleToleranceDeg);
+  EXPECT_NEAR(city.origin.longitude_deg, 4.4565822844, kAngleToleranceDeg);
+  // Vertices 0 and 7 (the file's first roof vertex, a wall's) by cs2cs as above, then
+  //   echo 51.9065947350 4.4565822844 LAT LON | geod -I +ellps=WGS84 -f %.10f
+  // giving the true azimuth and the distance from the site. The ground level is 0 m.
+  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(-68.2955979780, 5.595, 15.311)), kPositionToleranceM);
+  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(-154.6661805169, 3.400, 11.136)), kPositionToleranceM);
+  EXPECT_NEAR(city.origin.height_m, 0.0, 1e-9);
+}
+
+TEST(CityPlacement, DelftSiteAndVerticesAgreeWithCs2csAndGeod) {
+  const auto file = kModels / "delft.city.json";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no shared models";
+  const PlacedCity city = place_city_model(read_cityjson_file(file), {}, file.string());
+  // echo 84878.6535 447586.8175 0 | cs2cs -f %.10f EPSG:7415 EPSG:4979
+  EXPECT_NEAR(city.origin.latitude_deg, 52.0131769079, kAngleToleranceDeg);
+  EXPECT_NEAR(city.origin.longitude_deg, 4.3660822931, kAngleToleranceDeg);
+  // Vertices 0 (85027.751, 447448.180, 0.120) and 5000 (85046.828, 447447.892, 13.672)
+  // by cs2cs and geod -I as in the Rotterdam test; heights above the ground level.
+  const double ground = city.origin.height_m;
+  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(132.1118992973, 203.630, 0.120 - ground)),
+            kPositionToleranceM);
+  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(128.7532670217, 218.174, 13.672 - ground)),
+            kPositionToleranceM);
+  EXPECT_FALSE(city.curvature_applied);  // all within 1 km of the centre
+}
+
+// A vertical pole (0.1 m square, 200 m tall) and a marker 100 m from it along the
+// sun's true shadow azimuth, computed on the ellipsoid (GeographicLib's direct
+// problem, PROJ's geodesic.h), both written in UTM zone 31N 2.9° east of the zone's
+// central meridian at 60° N, where grid north lies 2.5° west of true north.
+TEST(CityPlacement, ShadowsFallAlongTheSunsTrueAzimuthInAMapGrid) {
+  const double pole_lat = 60.0, pole_lon = 5.9;
+  const OffsetDateTime when = parse_offset_date_time("2026-06-21T17:00:00+02:00", "test");
+  const SolarPosition sun = solar_position(SiteLocation{pole_lat, pole_lon, 0}, when);
+  ASSERT_GT(sun.altitude_deg, 10);
+  ASSERT_LT(sun.altitude_deg, 60);  // the ray from the marker meets the pole below 200 m
+  const double shadow_azimuth = sun.azimuth_deg + 180;
+
+  geod_geodesic g;
+  geod_init(&g, 6378137, 1 / 298.257223563);
+  double marker_lat = 0, marker_lon = 0;
+  geod_direct(&g, pole_lat, pole_lon, shadow_azimuth, 100.0, &marker_lat, &marker_lon, nullptr);
+  PJ_CONTEXT* context = proj_context_create();
+  PJ* to_utm = proj_create_crs_to_crs(context, "EPSG:4326", "EPSG:32631", nullptr);
+  const PJ_COORD pole = proj_trans(to_utm, PJ_FWD, proj_coord(pole_lat, pole_lon, 0, 0));
+  const PJ_COORD marker = proj_trans(to_utm, PJ_FWD, proj_coord(marker_lat, marker_lon, 0, 0));
+  // The grid convergence here, to be sure the test could fail: true and grid north
+  // differ by far more than the tolerance.
+  const double grid_azimuth = degrees(std::atan2(marker.v[0] - pole.v[0], marker.v[1] - pole.v[1]));
+  ASSERT_GT(std::abs(std::remainder(grid_azimuth - shadow_azimuth, 360.0)), 2.0);
+  proj_destroy(to_utm);
+  proj_context_destroy(context);
+
+  CityModel model{"EPSG:32631", {}};
+  const double e = pole.v[0], n = pole.v[1], h = 0.05;
+  const Vec3 c[8] = {{e - h, n - h, 0},   {e + h, n - h, 0},   {e + h, n + h, 0},   {e - h, n + h, 0},
+                     {e - h, n - h, 200}, {e + h, n - h, 200}, {e + h, n + h, 200}, {e - h, n + h, 200}};
+  CityObject pole_object{"pole", "GenericCityObject", 20, {}};
+  for (const auto& face : {std::array{0, 1, 5, 4}, std::array{1, 2, 6, 5}, std::array{2, 3, 7, 6},
+                           std::array{3, 0, 4, 7}, std::array{4, 5, 6, 7}})
+    pole_object.surfaces.push_back({{{c[face[0]], c[face[1]], c[face[2]], c[face[3]]}}, "", std::nullopt});
+  const double me = marker.v[0], mn = marker.v[1];
+  CityObject marker_object{"marker", "GenericCityObject", 20, {}};
+  marker_object.surfaces.push_back(
+      {{{{me - 0.01, mn - 0.01, 0}, {me + 0.01, mn - 0.01, 0}, {me, mn + 0.01, 0}}}, "", {}});
+  model.objects = {pole_object, marker_object};
+
+  CityPlacementOptions options;
+  options.origin = GeoPoint{pole_lat, pole_lon, 0};
+  const PlacedCity city = place_city_model(model, options, "pole");
+  ASSERT_EQ(city.objects.size(), 2u);
+  Vec3 spot{0, 0, 0};
+  for (const Vec3& v : city.objects[1].mesh.vertices) spot += v / 3.0;
+  // The marker's azimuth from the pole, in the local frame, is the true one (0.1°).
+  EXPECT_NEAR(std::remainder(degrees(std::atan2(spot.x, spot.y)) - shadow_azimuth, 360.0), 0.0, 0.1);
+
+  // And the renderer's shadow test: the ray toward the sun from the marker meets the
+  // pole; the pole subtends ±0.03° from there, so this holds the direction to that.
+  RayTracer tracer;
+  tracer.add_mesh(city.objects[0].mesh);
+  tracer.commit();
+  const auto toward_sun = [&](double azimuth_deg) {
+    const double alt = radians(sun.altitude_deg), az = radians(azimuth_deg);
+    return Vec3{std::sin(az) * std::cos(alt), std::cos(az) * std::cos(alt), std::sin(alt)};
+  };
+  EXPECT_TRUE(tracer.intersect({spot + Vec3{0, 0, 0.001}, toward_sun(sun.azimuth_deg)}).has_value());
+  // A sun 0.1° either side casts the pole's shadow beside the marker.
+  EXPECT_FALSE(tracer.intersect({spot + Vec3{0, 0, 0.001}, toward_sun(sun.azimuth_deg + 0.1)}).has_value());
+  EXPECT_FALSE(tracer.intersect({spot + Vec3{0, 0, 0.001}, toward_sun(sun.azimuth_deg - 0.1)}).has_value());
+}
+
+// A triangle far away: its drop below the plane is d²/(2R)(1 − k), the geometric
+// drop of a sphere's surface below its tangent plane lessened by the refraction of
+// the line of sight (to 1e-4 relative at 10 km: the sphere's exact drop R(1 − cos(d/R))
+// differs from d²/2R by d⁴/24R³).
+TEST(CityPlacement, FarGeometryDropsByTheCurvatureLessRefraction) {
+  const double d = 10000;
+  CityModel model{"EPSG:32631", {}};
+  CityObject far{"far", "GenericCityObject", 20, {}};
+  // UTM 31N at 3° E: x 500 km is the central meridian, where grid and true north agree.
+  far.surfaces.push_back({{{{500000, 6650000 + d, 0}, {500001, 6650000 + d, 0}, {500000, 6650001 + d, 0}}}, "", {}});
+  CityObject near{"near", "GenericCityObject", 20, {}};
+  near.surfaces.push_back({{{{500000, 6650000, 0}, {500001, 6650000, 0}, {500000, 6650001, 0}}}, "", {}});
+  model.objects = {near, far};
+  CityPlacementOptions options;
+  const auto origin = CrsToWgs84("EPSG:32631", "t").transform(Vec3{500000, 6650000, 0});
+  options.origin = origin;
+  const PlacedCity city = place_city_model(model, options, "far");
+  ASSERT_TRUE(city.curvature_applied);  // automatic: past 1 km
+  const double drop = -city.objects[1].mesh.vertices[0].z;
+  const double distance = std::hypot(city.objects[1].mesh.vertices[0].x, city.objects[1].mesh.vertices[0].y);
+  EXPECT_NEAR(drop, distance * distance / (2 * 6371008.8) * (1 - 0.13), 1e-3);
+  EXPECT_NEAR(drop, 6.8, 0.1);  // the textbook figure for 10 km
+  options.curvature = EarthCurvature::off;
+  EXPECT_NEAR(place_city_model(model, options, "far").objects[1].mesh.vertices[0].z, 0.0, 1e-6);
+}
+
+TEST(CityPlacement, RegionTakesTheObjectsWhoseCentreLiesInIt) {
+  const auto file = kModels / "delft.city.json";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no shared models";
+  const CityModel model = read_cityjson_file(file);
+  const PlacedCity all = place_city_model(model, {}, file.string());
+  CityPlacementOptions options;
+  options.region = CityRegion{std::array{all.origin.longitude_deg, all.origin.latitude_deg}, 100.0, std::nullopt};
+  const PlacedCity part = place_city_model(model, options, file.string());
+  EXPECT_GT(part.objects.size(), 10u);
+  EXPECT_LT(part.objects.size(), all.objects.size());
+  EXPECT_EQ(part.objects.size() + part.objects_outside_region, model.objects.size());
+  for (const PlacedCityObject& o : part.objects) {
+    Vec3 mean{0, 0, 0};
+    for (const Vec3& v : o.mesh.vertices) mean += v / static_cast<double>(o.mesh.vertices.size());
+    EXPECT_LE(std::hypot(mean.x, mean.y), 100.5) << o.id;  // the region's centre is the origin
+  }
+}
+
+TEST(CityPlacement, UnknownOrMissingCrsIsOneLocatedError) {
+  CityModel model{"EPSG:999999", {}};
+  EXPECT_NE(testing::input_error_of([&] {
+              place_city_model(model, {}, "town.city.json");
+            }).find("town.city.json: the coordinate reference system 'EPSG:999999' is unknown"),
+            std::string::npos);
+  model.crs = "";
+  EXPECT_NE(testing::input_error_of([&] { place_city_model(model, {}, "town.city.json"); }).find("\"crs\""),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace skylit
