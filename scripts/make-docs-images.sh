@@ -40,4 +40,7 @@ done
 # An architect's model with its own materials (examples/models/house.obj, from
 # scripts/make-house-model.py).
 $skylit render examples/house.json --quiet --set render.width=960 --set render.height=540 -o "$out/house.png"
+# A city block read from CityJSON in its own CRS (examples/models/city_block.city.json,
+# from scripts/make-city-block.py).
+$skylit render examples/city_block.json --quiet --set render.width=960 --set render.height=540 -o "$out/city-block.png"
 echo "Remade $out/"
