@@ -3,11 +3,11 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include "skylit/core/error.h"
+#include "skylit/core/file_names.h"
 #include "skylit/core/text_file.h"
 #include "skylit/io/city/geo_frame.h"
 #include "skylit/io/scene/json_reader.h"
@@ -414,10 +414,6 @@ CityModel read_sequence(const std::string& text, const std::string& source, cons
   return model;
 }
 
-bool ends_with(const std::string& s, std::string_view suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 }  // namespace
 
 std::optional<int> parse_lod(const std::string& text) {
@@ -438,7 +434,8 @@ std::optional<int> parse_lod(const std::string& text) {
 }
 
 CityModel read_cityjson_text(const std::string& text, const std::string& source, const CityJsonOptions& options) {
-  return ends_with(source, ".jsonl") ? read_sequence(text, source, options) : read_document(text, source, options);
+  return lower_case_extension(source) == ".jsonl" ? read_sequence(text, source, options)
+                                                  : read_document(text, source, options);
 }
 
 CityModel read_cityjson_file(const std::filesystem::path& file, const CityJsonOptions& options) {

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "skylit/core/file_names.h"
 #include "skylit/io/city/city_palette.h"
 #include "skylit/io/city/city_placement.h"
 #include "skylit/io/city/cityjson_reader.h"
@@ -14,16 +15,13 @@ namespace skylit {
 
 namespace {
 
-bool has_suffix(const std::string& name, const std::string& suffix) {
-  return name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 // The model in the file, by its kind. A CityGML reader joins here.
 CityModel read_city_file(const JsonReader& file_value, const std::filesystem::path& file,
                          const CityJsonOptions& options) {
-  const std::string name = file.filename().string();
-  if (has_suffix(name, ".json") || has_suffix(name, ".jsonl")) return read_cityjson_file(file, options);
-  file_value.fail("unknown city model file '" + name + "': expected CityJSON (.json, .city.json, .city.jsonl)");
+  const std::string extension = lower_case_extension(file);
+  if (extension == ".json" || extension == ".jsonl") return read_cityjson_file(file, options);
+  file_value.fail("unknown city model file '" + file.filename().string() +
+                  "': expected CityJSON (.json, .city.json, .city.jsonl)");
 }
 
 std::optional<int> read_lod(const JsonReader& j) {
