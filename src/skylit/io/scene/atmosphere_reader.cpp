@@ -27,16 +27,13 @@ std::optional<SiteLocation> read_scene_site(const JsonReader& root) {
   return std::nullopt;
 }
 
-void read_sun_and_atmosphere(const JsonReader& root, Scene& scene,
-                             const std::optional<SiteLocation>& site_from_objects) {
+bool read_sun_and_atmosphere(const JsonReader& root, Scene& scene) {
   const auto sun = root.optional("sun");
   const auto site = root.optional("site");
   const auto time = root.optional("time");
   if (auto a = root.optional("atmosphere")) scene.atmosphere = read_atmosphere(*a);
 
-  std::optional<SiteLocation> location = site ? read_site(*site) : site_from_objects;
-  if (location) scene.atmosphere.site_elevation_m = location->elevation_m;
-  if (time && !location) time->fail("a time needs a site (latitude_deg, longitude_deg) to place the sun");
+  if (site) scene.atmosphere.site_elevation_m = read_site(*site).elevation_m;
   if (sun && time) sun->fail("give either the sun's position or a site and a time, not both");
   if (!sun && !time) root.fail("missing 'sun' (altitude_deg, azimuth_deg), or 'site' and 'time'");
 
@@ -44,13 +41,23 @@ void read_sun_and_atmosphere(const JsonReader& root, Scene& scene,
     sun->allow_only({"altitude_deg", "azimuth_deg"});
     scene.sun.altitude_deg = sun->required("altitude_deg").number_in(-90, 90);
     scene.sun.azimuth_deg = sun->required("azimuth_deg").number_in(-360, 360);
-    return;
+    return false;
   }
   const OffsetDateTime when = parse_offset_date_time(time->string(), time->source() + ": " + time->path());
   if (when.year < kSolarPositionFirstYear || when.year > kSolarPositionLastYear)
     time->fail_expected("a year from " + std::to_string(kSolarPositionFirstYear) + " to " +
                         std::to_string(kSolarPositionLastYear));
-  const SolarPosition position = solar_position(*location, when);
+  if (!site) return true;  // a city model may give the site
+  place_sun(root, read_site(*site), scene);
+  return false;
+}
+
+void place_sun(const JsonReader& root, const std::optional<SiteLocation>& site, Scene& scene) {
+  const JsonReader time = root.required("time");
+  if (!site) time.fail("a time needs a site (latitude_deg, longitude_deg) to place the sun");
+  scene.atmosphere.site_elevation_m = site->elevation_m;
+  const SolarPosition position =
+      solar_position(*site, parse_offset_date_time(time.string(), time.source() + ": " + time.path()));
   scene.sun.altitude_deg = position.altitude_deg;
   scene.sun.azimuth_deg = position.azimuth_deg;
   scene.atmosphere.earth_sun_distance_au = position.earth_sun_distance_au;

@@ -128,18 +128,17 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
                    "objects", "lights", "render", "probes"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
-  // A city model without a site becomes the site: objects are read before the sun.
-  std::optional<SiteLocation> site = read_scene_site(root);
-  const bool site_given = site.has_value();
+  const bool sun_needs_site = read_sun_and_atmosphere(root, scene);
+  if (auto fog = root.optional("fog")) scene.fog = read_fog(*fog);
+  if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
+  std::optional<SiteLocation> site = read_scene_site(root);  // a city model without one gives it
   scene.materials = read_materials(root.required("materials"));
   std::vector<MaterialOverride> overrides;
   if (auto o = root.optional("material_overrides")) overrides = read_material_overrides(*o, scene.materials);
   scene.material_override_count = overrides.size();
   scene.objects = read_objects(root.required("objects"), scene.materials, overrides, base_dir,
                                scene.unused_material_overrides, site);
-  read_sun_and_atmosphere(root, scene, site_given ? std::nullopt : site);
-  if (auto fog = root.optional("fog")) scene.fog = read_fog(*fog);
-  if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
+  if (sun_needs_site) place_sun(root, site, scene);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
   frame_camera(root.required("camera"), scene);

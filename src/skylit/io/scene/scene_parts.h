@@ -16,10 +16,12 @@ namespace skylit {
 // its nlohmann::json parameter must not reach the installed headers.
 Scene scene_from_json(const nlohmann::json& document, const std::string& source, const std::filesystem::path& base_dir);
 
-// `sun`, or `site` and `time`, and `atmosphere`, from the scene's top level. A site
-// found by a city model (`site_from_objects`) stands in for a missing `site`.
-void read_sun_and_atmosphere(const JsonReader& root, Scene& scene,
-                             const std::optional<SiteLocation>& site_from_objects = std::nullopt);
+// `sun`, or `site` and `time`, and `atmosphere`, from the scene's top level. Returns
+// true when the sun waits for a site: a `time` without `site`, which a city model's
+// centre may give (place_sun, once the objects are read).
+bool read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
+// The sun at the scene's `time` seen from `site`; fails on `time` without a site.
+void place_sun(const JsonReader& root, const std::optional<SiteLocation>& site, Scene& scene);
 // The scene's `site`, if it gives one.
 std::optional<SiteLocation> read_scene_site(const JsonReader& root);
 AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
