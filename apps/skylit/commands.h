@@ -34,6 +34,9 @@ CommandRunner add_compare_command(CLI::App& app);
 // `skylit info SCENE [--set PATH=VALUE ...]`: what the scene loads, and warnings
 CommandRunner add_info_command(CLI::App& app);
 
+// `skylit road SCENE [--set PATH=VALUE ...] [--json]`: EN 13201-3 figures (docs/road-lighting.md)
+CommandRunner add_road_command(CLI::App& app);
+
 // The scene's warnings (io/scene/scene_report.h) on stderr, one "skylit: warning:" line each.
 void print_scene_warnings(const Scene& scene, bool check_camera);
 

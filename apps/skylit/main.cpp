@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
       skylit::cli::add_render_command(app), skylit::cli::add_sun_command(app),
       skylit::cli::add_sky_command(app),    skylit::cli::add_spectrum_command(app),
       skylit::cli::add_sweep_command(app),  skylit::cli::add_compare_command(app),
-      skylit::cli::add_info_command(app),
+      skylit::cli::add_info_command(app),   skylit::cli::add_road_command(app),
   };
   try {
     app.parse(argc, argv);

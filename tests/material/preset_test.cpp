@@ -178,9 +178,14 @@ TEST(MaterialReader, MistakesNameTheirPath) {
   EXPECT_EQ(error_of(R"({"type": "layered", "reflectance": 0.5, "metal": "aluminium"})"),
             "scene.json: materials.walls.metal: unknown key; expected one of: type, reflectance, roughness, ior, "
             "dielectric");
-  EXPECT_EQ(
-      error_of(R"({"type": "plastic"})"),
-      "scene.json: materials.walls.type: expected one of: diffuse, cook_torrance, layered, glass, found \"plastic\"");
+  EXPECT_EQ(error_of(R"({"type": "plastic"})"),
+            "scene.json: materials.walls.type: expected one of: diffuse, cook_torrance, layered, glass, road, found "
+            "\"plastic\"");
+  EXPECT_EQ(error_of(R"({"type": "road", "r_table": "R5"})"),
+            "scene.json: materials.walls.r_table: unknown r-table 'R5'; known: R1, R2, R3, R4, C1, C2");
+  EXPECT_EQ(error_of(R"({"type": "road", "r_table": "R3", "q0": 0.5})"),
+            "scene.json: materials.walls.q0: expected a number from 0.01 to 0.3, found 0.5");
+  EXPECT_EQ(error_of(R"({"type": "road", "q0": 0.07})"), "scene.json: materials.walls: missing required key 'r_table'");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 //   lobe and spectral Fresnel reflectance: a metal, or a dielectric coat over an
 //   optional Lambertian base (scene types `cook_torrance` and `layered`).
 // - GlassMaterial: a window pane with the dark room behind it (scene type `glass`).
+// - RoadMaterial: a dry road by the CIE r-tables (scene type `road`; road_reflection.h).
 //
 // What the renderer needs from them is in reflection.h; the classes precompute
 // their Fresnel tables once, so copies share them and shading stays cheap.
@@ -16,6 +17,7 @@
 
 #include "skylit/material/angular_table.h"
 #include "skylit/material/optical_constants.h"
+#include "skylit/material/road_reflection.h"
 #include "skylit/spectrum/spectrum.h"
 
 namespace skylit {
@@ -107,7 +109,7 @@ class GlassMaterial {
   Spectrum interior_albedo_factor_;
 };
 
-using Material = std::variant<DiffuseMaterial, CookTorranceMaterial, GlassMaterial>;
+using Material = std::variant<DiffuseMaterial, CookTorranceMaterial, GlassMaterial, RoadMaterial>;
 
 struct NamedMaterial {
   std::string name;

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "skylit/core/angles.h"
+
 #include "skylit/material/microfacet.h"
 
 namespace skylit {
@@ -35,6 +37,8 @@ std::optional<SpecularPart> glossy_part(const Material& material) {
 
 Reflectance diffuse_albedo(const Material& material, double cos_view) {
   if (const auto* d = std::get_if<DiffuseMaterial>(&material)) return Reflectance(d->reflectance);
+  if (const auto* road = std::get_if<RoadMaterial>(&material))  // Lambertian with f = Q0
+    return Reflectance(Spectrum(static_cast<float>(kPi * road->q0())));
   if (const auto* ct = std::get_if<CookTorranceMaterial>(&material)) {
     if (!ct->has_diffuse()) return Reflectance();
     Spectrum out = ct->diffuse_factor();
@@ -60,6 +64,33 @@ CosineWeightedBrdf specular_reflection(const Material& material, const Vec3& n, 
 }
 
 bool has_specular(const Material& material) { return glossy_part(material).has_value(); }
+
+namespace {
+
+// (f_road − Q0)(n·l): the road table's part beyond its Lambertian mean.
+double road_excess(const RoadMaterial& road, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer) {
+  const double cos_light = dot(n, to_light);
+  if (!(cos_light > 0) || !(dot(n, to_viewer) > 0)) return 0;
+  return (road.brdf(n, to_light, to_viewer) - road.q0()) * cos_light;
+}
+
+}  // namespace
+
+bool has_point_light_lobe(const Material& material) {
+  return has_specular(material) || std::holds_alternative<RoadMaterial>(material);
+}
+
+CosineWeightedBrdf point_light_reflection(const Material& material, const Vec3& n, const Vec3& to_light,
+                                          const Vec3& to_viewer) {
+  if (const auto* road = std::get_if<RoadMaterial>(&material))
+    return {Spectrum(static_cast<float>(road_excess(*road, n, to_light, to_viewer)))};
+  return specular_reflection(material, n, to_light, to_viewer);
+}
+
+double point_light_weight(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer) {
+  if (const auto* road = std::get_if<RoadMaterial>(&material)) return road_excess(*road, n, to_light, to_viewer);
+  return specular_weight(material, n, to_light, to_viewer);
+}
 
 double specular_weight(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer) {
   const auto part = glossy_part(material);

@@ -38,6 +38,18 @@ CosineWeightedBrdf specular_reflection(const Material& material, const Vec3& n, 
 // Whether specular_reflection can be non-zero: a glossy lobe to integrate.
 bool has_specular(const Material& material);
 
+// What a point source (a lamp, the sun) adds beyond the Lambertian part
+// diffuse_albedo/π·(n·l): the glossy lobe's specular_reflection, and for a road the
+// r-table's departure from its mean, (f_road(l, v) − Q0)(n·l) (road_reflection.h),
+// which is negative where the table is below its mean: only the sum with the
+// Lambertian part is a reflection. Sky light on a road takes the Lambertian part alone
+// (Q0 is the table's mean over the directions of incidence).
+bool has_point_light_lobe(const Material& material);
+CosineWeightedBrdf point_light_reflection(const Material& material, const Vec3& n, const Vec3& to_light,
+                                          const Vec3& to_viewer);
+// Its mean over bins (a scalar for ordering the lamps).
+double point_light_weight(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
+
 // The mean over bins of specular_reflection (the same value, without building the
 // spectrum): a scalar for deciding where the lobe still matters.
 double specular_weight(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);

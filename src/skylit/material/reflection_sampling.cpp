@@ -62,7 +62,7 @@ CosineWeightedBrdf reflection_cos(const Material& material, const Vec3& n, const
   const double cos_light = dot(n, to_light), cos_view = dot(n, to_viewer);
   if (cos_light <= 0 || cos_view <= 0) return {Spectrum(0.0f)};
   Spectrum out = diffuse_albedo(material, cos_view).spectrum() * static_cast<float>(cos_light / kPi);
-  if (has_specular(material)) out += specular_reflection(material, n, to_light, to_viewer).per_sr;
+  if (has_point_light_lobe(material)) out += point_light_reflection(material, n, to_light, to_viewer).per_sr;
   return {out};
 }
 

@@ -26,7 +26,9 @@ struct ReflectionSample {
 };
 
 // f(l, v)·(n·l) of the lobes other than the mirror, sr⁻¹: albedo(n·v)/π·(n·l) plus the
-// glossy lobe's specular_reflection. 0 below the surface.
+// glossy lobe's specular_reflection (for a road, the whole r-table BRDF: the reference
+// lights roads from the sky by the table too, where the fast path takes its mean Q0).
+// 0 below the surface.
 CosineWeightedBrdf reflection_cos(const Material& material, const Vec3& n, const Vec3& to_light, const Vec3& to_viewer);
 
 // The density (sr⁻¹) with which sample_reflection draws to_light through the non-mirror

@@ -98,7 +98,8 @@ Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const
   Radiance radiance = lambertian_radiance(diffuse_albedo(material, dot(point.normal, to_viewer)), irradiance);
   // Glossy part: the sky's (cached) and the sun's highlight.
   radiance += sky_light.specular_radiance * share;
-  if (has_specular(material)) radiance += specular_reflection(material, point.normal, to_sun_, to_viewer).reflect(sun);
+  if (has_point_light_lobe(material))
+    radiance += point_light_reflection(material, point.normal, to_sun_, to_viewer).reflect(sun);
   if (const SceneLamps* lamps = scene_.lamps()) radiance += lamps->reflected(point, material, to_viewer);
   // Mirror part (window glass): what lies in the mirror direction.
   if (const std::optional<Reflectance> mirror = mirror_reflectance(material, point.normal, to_viewer))

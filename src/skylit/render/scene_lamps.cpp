@@ -48,7 +48,7 @@ Radiance SceneLamps::reflected(const SurfacePoint& point, const Material& materi
     double cos_in, scale;  // scale: candela/d² × the fog's transmittance if grey
     double radiance;
   };
-  const bool has_glossy = has_specular(material);
+  const bool has_glossy = has_point_light_lobe(material);
   const Reflectance albedo = diffuse_albedo(material, dot(point.normal, to_viewer));
   const double mean_albedo = albedo.mean_value();
   thread_local std::vector<Candidate> candidates;
@@ -65,7 +65,7 @@ Radiance SceneLamps::reflected(const SurfacePoint& point, const Material& materi
     double scale = candela / d2;
     if (fog_ && fog_->is_grey())
       scale *= std::exp(-fog_->unit_density_extinction_bins()[0] * fog_->column_between(position(i), point.position));
-    const double glossy_weight = has_glossy ? specular_weight(material, point.normal, l, to_viewer) : 0.0;
+    const double glossy_weight = has_glossy ? point_light_weight(material, point.normal, l, to_viewer) : 0.0;
     candidates.push_back({i, l, cos_in, scale, scale * (mean_albedo * cos_in / kPi + glossy_weight)});
   }
   std::sort(candidates.begin(), candidates.end(),
@@ -89,7 +89,7 @@ Radiance SceneLamps::reflected(const SurfacePoint& point, const Material& materi
     if (fog_ && !fog_->is_grey())
       e *= Transmittance(fog_->transmittance(fog_->column_between(position(c.lamp), point.position)));
     irradiance += e * static_cast<float>(c.cos_in);
-    if (has_glossy) glossy += specular_reflection(material, point.normal, c.l, to_viewer).reflect(e);
+    if (has_glossy) glossy += point_light_reflection(material, point.normal, c.l, to_viewer).reflect(e);
   }
   return lambertian_radiance(albedo, irradiance) + glossy;
 }

@@ -18,6 +18,7 @@
 #include "skylit/material/material.h"
 #include "skylit/media/fog_settings.h"
 #include "skylit/scene/output_settings.h"
+#include "skylit/scene/road_lighting_settings.h"
 
 namespace skylit {
 
@@ -168,6 +169,8 @@ struct Scene {
   size_t material_override_count = 0;
   std::vector<std::string> unused_material_overrides;
   std::vector<Probe> probes;  // pixels whose luminance the statistics report
+  // A road for `skylit road` (EN 13201-3 figures), if any.
+  std::optional<RoadLightingSettings> road_lighting;
 };
 
 }  // namespace skylit

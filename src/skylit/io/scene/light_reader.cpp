@@ -10,12 +10,18 @@
 #include "skylit/io/scene/scene_parts.h"
 #include "skylit/lights/eulumdat_reader.h"
 #include "skylit/lights/ies_reader.h"
+#include "skylit/lights/lamp_rows.h"
 #include "skylit/lights/lamp_spectrum.h"
 #include "skylit/spectrum/tabulated.h"
 
 namespace skylit {
 
 namespace {
+
+// Lights a scene may hold, rows included: each costs an intensity map (0.5 MB) and its
+// shadow volumes, so far fewer are practical; the limit keeps a typo in a spacing from
+// asking for millions.
+constexpr size_t kMaxSceneLights = 100000;
 
 struct Photometry {
   IntensityDistribution distribution;
@@ -76,6 +82,27 @@ LampSpectrumSettings read_lamp(const JsonReader& j, const std::filesystem::path&
   return lamp;
 }
 
+// A file's relative photometry, or any distribution, may be set to a total flux.
+void scale_to_lumens(const JsonReader& j, Photometry& photometry) {
+  const auto lumens = j.optional("lumens");
+  if (!lumens) return;
+  const double wanted = lumens->number_in(0, 1e9);
+  const double flux = photometry.distribution.luminous_flux();
+  if (!(flux > 0)) lumens->fail("the distribution sends out no light to scale");
+  photometry.distribution = photometry.distribution.scaled(wanted / flux);
+  if (!(photometry.distribution.peak_candela() <= kMaxLuminousIntensityCd))
+    lumens->fail("this flux from this distribution needs a peak over the limit of 1e9 cd");
+}
+
+// The spectrum of a light or a lamp row.
+Spectrum read_spectrum(const JsonReader& j, const std::filesystem::path& base_dir) {
+  try {
+    return lamp_spectrum_per_candela(read_lamp(j, base_dir));
+  } catch (const std::invalid_argument& e) {
+    j.required("lamp").fail(e.what());
+  }
+}
+
 SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir) {
   j.allow_only({"name", "position", "aim", "rotation_deg", "ies", "ldt", "shape", "candela", "inner_deg", "outer_deg",
                 "lumens", "lamp", "temperature_k", "spectrum_file"});
@@ -87,22 +114,59 @@ SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir
   const double rotation = j.optional("rotation_deg") ? j.required("rotation_deg").number_in(-360, 360) : 0.0;
   if (j.has("candela") && !j.has("shape")) j.required("candela").fail("candela is for a shape; files give their own");
   Photometry photometry = read_photometry(j, base_dir);
-  // A file's relative photometry, or any distribution, may be set to a total flux.
-  if (auto lumens = j.optional("lumens")) {
-    const double wanted = lumens->number_in(0, 1e9);
-    const double flux = photometry.distribution.luminous_flux();
-    if (!(flux > 0)) lumens->fail("the distribution sends out no light to scale");
-    photometry.distribution = photometry.distribution.scaled(wanted / flux);
-    if (!(photometry.distribution.peak_candela() <= kMaxLuminousIntensityCd))
-      lumens->fail("this flux from this distribution needs a peak over the limit of 1e9 cd");
-  }
-  Spectrum spectrum;
-  try {
-    spectrum = lamp_spectrum_per_candela(read_lamp(j, base_dir));
-  } catch (const std::invalid_argument& e) {
-    j.required("lamp").fail(e.what());
-  }
+  scale_to_lumens(j, photometry);
+  const Spectrum spectrum = read_spectrum(j, base_dir);
   return {name, Luminaire(position, std::move(photometry.distribution), aim, rotation, photometry.tilt), spectrum};
+}
+
+LampRowSettings read_row_geometry(const JsonReader& j) {
+  LampRowSettings row;
+  const JsonReader line = j.required("centre_line");
+  if (!line.is_array() || line.elements().size() < 2) line.fail_expected("an array of at least two points [x, y, z]");
+  for (const JsonReader& p : line.elements()) row.centre_line.push_back(p.point_m());
+  row.road_width_m = j.required("road_width_m").number_in(0, 200);
+  row.spacing_m = j.required("spacing_m").number_in(0.5, 10000);
+  if (auto f = j.optional("first_at_m")) row.first_at_m = f->number_in(0, kSceneExtentM);
+  row.height_m = j.required("height_m").number_in(0.5, 100);
+  if (auto o = j.optional("overhang_m")) row.overhang_m = o->number_in(-50, 50);
+  if (auto t = j.optional("tilt_deg")) row.tilt_deg = t->number_in(-45, 45);
+  if (auto a = j.optional("arrangement")) {
+    const std::string s = a->one_of({"single_sided", "opposite", "staggered"});
+    row.arrangement = s == "opposite"    ? LampArrangement::opposite
+                      : s == "staggered" ? LampArrangement::staggered
+                                         : LampArrangement::single_sided;
+  }
+  if (auto side = j.optional("side"))
+    row.side = side->one_of({"right", "left"}) == "left" ? RoadSide::left : RoadSide::right;
+  return row;
+}
+
+// {"centre_line": [...], "road_width_m", "spacing_m", "height_m", "overhang_m",
+// "tilt_deg", "arrangement", "side", "first_at_m", "name"} and a light's photometry
+// and lamp keys: every luminaire of the row alike.
+void read_lamp_row(const JsonReader& j, const std::filesystem::path& base_dir, std::vector<SceneLight>& out) {
+  j.allow_only({"name",      "centre_line", "road_width_m", "spacing_m", "first_at_m",    "height_m",     "overhang_m",
+                "tilt_deg",  "arrangement", "side",         "ies",       "ldt",           "shape",        "candela",
+                "inner_deg", "outer_deg",   "lumens",       "lamp",      "temperature_k", "spectrum_file"});
+  const std::string name = j.optional("name") ? j.required("name").string() : j.path();
+  const LampRowSettings row = read_row_geometry(j);
+  if (j.has("candela") && !j.has("shape")) j.required("candela").fail("candela is for a shape; files give their own");
+  Photometry photometry = read_photometry(j, base_dir);
+  scale_to_lumens(j, photometry);
+  const Spectrum spectrum = read_spectrum(j, base_dir);
+  std::vector<LampPlacement> placements;
+  try {
+    placements = place_lamp_row(row);
+  } catch (const std::invalid_argument& e) {
+    j.fail(e.what());
+  }
+  if (out.size() + placements.size() > kMaxSceneLights)
+    j.fail("the scene would hold more than " + std::to_string(kMaxSceneLights) + " lights");
+  for (size_t i = 0; i < placements.size(); ++i)
+    out.push_back({name + " " + std::to_string(i + 1),
+                   Luminaire(placements[i].position, photometry.distribution, placements[i].aim,
+                             placements[i].rotation_deg, photometry.tilt),
+                   spectrum});
 }
 
 }  // namespace
@@ -112,6 +176,11 @@ std::vector<SceneLight> read_lights(const JsonReader& j, const std::filesystem::
   std::vector<SceneLight> lights;
   for (const JsonReader& light : j.elements()) lights.push_back(read_light(light, base_dir));
   return lights;
+}
+
+void read_lamp_rows(const JsonReader& j, const std::filesystem::path& base_dir, std::vector<SceneLight>& lights) {
+  if (!j.is_array()) j.fail_expected("an array of lamp rows");
+  for (const JsonReader& row : j.elements()) read_lamp_row(row, base_dir, lights);
 }
 
 }  // namespace skylit

@@ -74,6 +74,7 @@ std::vector<std::string_view> keys_of_type(const std::string& type) {
   if (type == "diffuse") return {"reflectance"};
   if (type == "cook_torrance") return {"roughness", "metal", "ior", "dielectric", "diffuse_reflectance"};
   if (type == "layered") return {"reflectance", "roughness", "ior", "dielectric"};
+  if (type == "road") return {"r_table", "q0"};
   return {"interior_reflectance", "thickness_mm", "roughness", "ior", "dielectric"};  // glass
 }
 
@@ -151,8 +152,17 @@ double read_roughness(const JsonReader& j, double fallback) {
   return r ? r->number_in(0, 1) : fallback;
 }
 
+// {"type": "road", "r_table": "R3", "q0": 0.07}: q0 defaults to the class's nominal Q0.
+Material read_road(const JsonReader& j) {
+  const JsonReader name = j.required("r_table");
+  auto table = RoadReflectionTable::standard(name.string());
+  if (!table) name.fail("unknown r-table '" + name.string() + "'; known: " + RoadReflectionTable::standard_names());
+  const auto q0 = j.optional("q0");
+  return RoadMaterial(table, q0 ? q0->number_in(0.01, 0.3) : table->nominal_q0());
+}
+
 Material read_typed_material(const JsonReader& j) {
-  const std::string type = j.required("type").one_of({"diffuse", "cook_torrance", "layered", "glass"});
+  const std::string type = j.required("type").one_of({"diffuse", "cook_torrance", "layered", "glass", "road"});
   std::vector<std::string_view> allowed = keys_of_type(type);
   allowed.insert(allowed.begin(), "type");
   allow_only_keys(j, allowed);
@@ -173,6 +183,7 @@ Material read_typed_material(const JsonReader& j) {
     const ComplexIor ior = read_interface(j, /*metal_allowed=*/false, constant_ior(1.5));
     return CookTorranceMaterial(ior, read_roughness(j, 0.2), read_reflectance(j.required("reflectance")));
   }
+  if (type == "road") return read_road(j);
   const ComplexIor ior = read_interface(j, /*metal_allowed=*/false, soda_lime_glass_ior());
   const auto thickness = j.optional("thickness_mm");
   const auto interior = j.optional("interior_reflectance");

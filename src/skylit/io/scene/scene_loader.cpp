@@ -125,7 +125,7 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   const JsonReader root(document, source);
   if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
   root.allow_only({"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "material_overrides",
-                   "objects", "lights", "render", "probes"});
+                   "objects", "lights", "lamp_rows", "road_lighting", "render", "probes"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
   const bool sun_needs_site = read_sun_and_atmosphere(root, scene);
@@ -140,6 +140,8 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
                                scene.unused_material_overrides, site);
   if (sun_needs_site) place_sun(root, site, scene);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
+  if (auto rows = root.optional("lamp_rows")) read_lamp_rows(*rows, base_dir, scene.lights);
+  if (auto road = root.optional("road_lighting")) scene.road_lighting = read_road_lighting(*road);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
   frame_camera(root.required("camera"), scene);
   if (auto probes = root.optional("probes")) scene.probes = read_probes(*probes);

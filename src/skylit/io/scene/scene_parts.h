@@ -48,6 +48,10 @@ std::vector<MaterialOverride> read_material_overrides(const JsonReader& override
                                                       std::vector<NamedMaterial>& materials);
 Spectrum read_reflectance(const JsonReader& reflectance);
 std::vector<SceneLight> read_lights(const JsonReader& lights, const std::filesystem::path& base_dir);
+// `lamp_rows` (lights/lamp_rows.h): the rows' luminaires appended to `lights`.
+void read_lamp_rows(const JsonReader& rows, const std::filesystem::path& base_dir, std::vector<SceneLight>& lights);
+// `road_lighting` (scene/road_lighting_settings.h).
+RoadLightingSettings read_road_lighting(const JsonReader& road);
 // Materials of model files are added to `materials`; override patterns that matched
 // no file material are listed in `unused_overrides`. `site`: the scene's; a city
 // model sets it to its centre when the scene gives none.
