@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "skylit/core/error.h"
 #include "skylit/sun/delta_t.h"
+#include "skylit/sun/moon_position.h"
 #include "skylit/sun/solar_position.h"
 
 namespace skylit::cli {
@@ -25,6 +26,7 @@ struct SunArguments {
   std::optional<double> temperature_c;
   std::optional<double> delta_t_s;
   bool json = false;
+  bool moon = false;
 };
 
 std::string number(double value, int decimals) {
@@ -72,20 +74,34 @@ int run_sun(const SunArguments& args) {
   options.pressure_mbar = args.pressure_mbar.value_or(standard_pressure_mbar(site.elevation_m));
   options.temperature_c = args.temperature_c.value_or(standard_temperature_c(site.elevation_m));
   const SolarPosition sun = solar_position(site, julian_day, options);
+  std::string moon_json, moon_line;
+  if (args.moon) {
+    const MoonPosition m = moon_position(site, julian_day, options);
+    moon_json = ", \"moon\": {\"altitude_deg\": " + number(m.altitude_deg, 4) +
+                ", \"azimuth_deg\": " + number(m.azimuth_deg, 4) + ", \"distance_km\": " + number(m.distance_km, 1) +
+                ", \"phase_angle_deg\": " + number(m.phase_angle_deg, 3) +
+                ", \"illuminated_fraction\": " + number(m.illuminated_fraction, 4) +
+                ", \"illuminance_lx\": " + number(m.illuminance_lx, 5) + "}";
+    moon_line = "moon: altitude " + number(m.altitude_deg, 4) + "°, azimuth " + number(m.azimuth_deg, 4) +
+                "°, distance " + number(m.distance_km, 1) + " km, phase angle " + number(m.phase_angle_deg, 3) + "°, " +
+                number(100 * m.illuminated_fraction, 1) + " % lit, " + number(m.illuminance_lx, 5) +
+                " lx outside the atmosphere\n";
+  }
 
   if (args.json) {
     std::printf(
         "{\"altitude_deg\": %s, \"azimuth_deg\": %s, \"zenith_deg\": %s, \"earth_sun_distance_au\": %s, "
         "\"equation_of_time_min\": %s, \"julian_day\": %s, \"delta_t_s\": %s, \"pressure_mbar\": %s, "
-        "\"temperature_c\": %s}\n",
+        "\"temperature_c\": %s%s}\n",
         number(sun.altitude_deg, 6).c_str(), number(sun.azimuth_deg, 6).c_str(), number(sun.zenith_deg, 6).c_str(),
         number(sun.earth_sun_distance_au, 9).c_str(), number(sun.equation_of_time_min, 4).c_str(),
         number(julian_day, 6).c_str(), number(*options.delta_t_s, 3).c_str(), number(*options.pressure_mbar, 2).c_str(),
-        number(*options.temperature_c, 2).c_str());
+        number(*options.temperature_c, 2).c_str(), moon_json.c_str());
   } else {
     std::printf("sun: altitude %s°, azimuth %s° (clockwise from north), zenith %s°, Earth-Sun distance %s AU\n",
                 number(sun.altitude_deg, 6).c_str(), number(sun.azimuth_deg, 6).c_str(),
                 number(sun.zenith_deg, 6).c_str(), number(sun.earth_sun_distance_au, 9).c_str());
+    std::fputs(moon_line.c_str(), stdout);
   }
   return 0;
 }
@@ -115,6 +131,9 @@ CommandRunner add_sun_command(CLI::App& app) {
   sun->add_option("--delta-t", args->delta_t_s,
                   "TT - UT in seconds (default: Espenak & Meeus estimate for the date, e.g. about 75 s in 2025 "
                   "where the measured value is about 69 s)");
+  sun->add_flag("--moon", args->moon,
+                "Also give the moon: position (Meeus ch. 47), phase angle, lit fraction and its illuminance outside "
+                "the atmosphere (Krisciunas & Schaefer 1991); docs/sun-position.md");
   sun->add_flag("--json", args->json,
                 "Print one JSON object: altitude_deg, azimuth_deg, zenith_deg, earth_sun_distance_au, "
                 "equation_of_time_min, julian_day (UT), and the delta_t_s, pressure_mbar, temperature_c used");

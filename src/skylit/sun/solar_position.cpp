@@ -102,6 +102,45 @@ double standard_pressure_mbar(double elevation_m) {
 
 namespace spa {
 
+Topocentric topocentric(const SiteLocation& site, double apparent_sidereal_time_deg, double right_ascension_deg,
+                        double declination_deg, double equatorial_parallax_deg, const SpaOptions& options) {
+  Topocentric t{};
+  // §3.11: the observer's local hour angle, westward from the meridian.
+  t.hour_angle_deg = wrap_360(apparent_sidereal_time_deg + site.longitude_deg - right_ascension_deg);  // Eq. 32
+
+  // §3.12: parallax, seen from the observer on the Earth's surface rather than its centre.
+  t.equatorial_parallax_deg = equatorial_parallax_deg;
+  constexpr double kPolarOverEquatorialRadius = 0.99664719, kEquatorialRadiusM = 6378140.0;
+  const double reduced_latitude = std::atan(kPolarOverEquatorialRadius * tan_deg(site.latitude_deg));  // Eq. 34
+  const double x = std::cos(reduced_latitude) + site.elevation_m / kEquatorialRadiusM * cos_deg(site.latitude_deg);
+  const double y = kPolarOverEquatorialRadius * std::sin(reduced_latitude) +
+                   site.elevation_m / kEquatorialRadiusM * sin_deg(site.latitude_deg);  // Eqs. 35–36
+  const double sin_xi = sin_deg(t.equatorial_parallax_deg);
+  const double denominator = cos_deg(declination_deg) - x * sin_xi * cos_deg(t.hour_angle_deg);
+  const double delta_alpha = std::atan2(-x * sin_xi * sin_deg(t.hour_angle_deg), denominator);  // Eq. 37
+  t.parallax_in_right_ascension_deg = degrees(delta_alpha);
+  t.right_ascension_deg = right_ascension_deg + t.parallax_in_right_ascension_deg;  // Eq. 38
+  t.declination_deg =
+      degrees(std::atan2((sin_deg(declination_deg) - y * sin_xi) * std::cos(delta_alpha), denominator));  // Eq. 39
+
+  // §3.13–3.14: the topocentric elevation, then refraction.
+  t.topocentric_hour_angle_deg = t.hour_angle_deg - t.parallax_in_right_ascension_deg;  // Eq. 40
+  const double phi = site.latitude_deg, delta_p = t.declination_deg, h_p = t.topocentric_hour_angle_deg;
+  t.true_elevation_deg =
+      degrees(std::asin(sin_deg(phi) * sin_deg(delta_p) + cos_deg(phi) * cos_deg(delta_p) * cos_deg(h_p)));  // Eq. 41
+  const double pressure_mbar = options.pressure_mbar.value_or(standard_pressure_mbar(site.elevation_m));
+  const double temperature_c = options.temperature_c.value_or(standard_temperature_c(site.elevation_m));
+  t.refraction_deg =
+      refraction_deg(t.true_elevation_deg, pressure_mbar, temperature_c, options.horizon_refraction_deg);  // Eq. 42
+  t.apparent_elevation_deg = t.true_elevation_deg + t.refraction_deg;                                      // Eq. 43
+
+  // §3.15: azimuth; the astronomers' is from the south, the navigators' (ours) from the north.
+  t.astronomers_azimuth_deg = wrap_360(
+      degrees(std::atan2(sin_deg(h_p), cos_deg(h_p) * sin_deg(phi) - tan_deg(delta_p) * cos_deg(phi))));  // Eq. 45
+  t.azimuth_deg = wrap_360(t.astronomers_azimuth_deg + 180.0);                                            // Eq. 46
+  return t;
+}
+
 Steps compute_steps(const SiteLocation& site, double julian_day_utc, const SpaOptions& options) {
   check_inputs(site, julian_day_utc, options);
   Steps s{};
@@ -141,40 +180,20 @@ Steps compute_steps(const SiteLocation& site, double julian_day_utc, const SpaOp
   s.declination_deg = degrees(
       std::asin(sin_deg(beta) * cos_deg(epsilon) + cos_deg(beta) * sin_deg(epsilon) * sin_deg(lambda)));  // Eq. 31
 
-  // §3.11: the observer's local hour angle, westward from the meridian.
-  s.hour_angle_deg = wrap_360(s.apparent_sidereal_time_deg + site.longitude_deg - s.right_ascension_deg);  // Eq. 32
-
-  // §3.12: parallax, seen from the observer on the Earth's surface rather than its centre.
-  s.equatorial_parallax_deg = 8.794 / (3600.0 * s.earth.radius_au);  // Eq. 33
-  constexpr double kPolarOverEquatorialRadius = 0.99664719, kEquatorialRadiusM = 6378140.0;
-  const double reduced_latitude = std::atan(kPolarOverEquatorialRadius * tan_deg(site.latitude_deg));  // Eq. 34
-  const double x = std::cos(reduced_latitude) + site.elevation_m / kEquatorialRadiusM * cos_deg(site.latitude_deg);
-  const double y = kPolarOverEquatorialRadius * std::sin(reduced_latitude) +
-                   site.elevation_m / kEquatorialRadiusM * sin_deg(site.latitude_deg);  // Eqs. 35–36
-  const double sin_xi = sin_deg(s.equatorial_parallax_deg);
-  const double denominator = cos_deg(s.declination_deg) - x * sin_xi * cos_deg(s.hour_angle_deg);
-  const double delta_alpha = std::atan2(-x * sin_xi * sin_deg(s.hour_angle_deg), denominator);  // Eq. 37
-  s.parallax_in_right_ascension_deg = degrees(delta_alpha);
-  s.topocentric_right_ascension_deg = s.right_ascension_deg + s.parallax_in_right_ascension_deg;  // Eq. 38
-  s.topocentric_declination_deg =
-      degrees(std::atan2((sin_deg(s.declination_deg) - y * sin_xi) * std::cos(delta_alpha), denominator));  // Eq. 39
-
-  // §3.13–3.14: the topocentric elevation, then refraction.
-  s.topocentric_hour_angle_deg = s.hour_angle_deg - s.parallax_in_right_ascension_deg;  // Eq. 40
-  const double phi = site.latitude_deg, delta_p = s.topocentric_declination_deg, h_p = s.topocentric_hour_angle_deg;
-  s.true_elevation_deg =
-      degrees(std::asin(sin_deg(phi) * sin_deg(delta_p) + cos_deg(phi) * cos_deg(delta_p) * cos_deg(h_p)));  // Eq. 41
-  const double pressure_mbar = options.pressure_mbar.value_or(standard_pressure_mbar(site.elevation_m));
-  const double temperature_c = options.temperature_c.value_or(standard_temperature_c(site.elevation_m));
-  s.refraction_deg =
-      refraction_deg(s.true_elevation_deg, pressure_mbar, temperature_c, options.horizon_refraction_deg);  // Eq. 42
-  s.apparent_elevation_deg = s.true_elevation_deg + s.refraction_deg;                                      // Eq. 43
-  s.zenith_deg = 90.0 - s.apparent_elevation_deg;                                                          // Eq. 44
-
-  // §3.15: azimuth; the astronomers' is from the south, the navigators' (ours) from the north.
-  s.astronomers_azimuth_deg = wrap_360(
-      degrees(std::atan2(sin_deg(h_p), cos_deg(h_p) * sin_deg(phi) - tan_deg(delta_p) * cos_deg(phi))));  // Eq. 45
-  s.azimuth_deg = wrap_360(s.astronomers_azimuth_deg + 180.0);                                            // Eq. 46
+  const Topocentric place = topocentric(site, s.apparent_sidereal_time_deg, s.right_ascension_deg, s.declination_deg,
+                                        8.794 / (3600.0 * s.earth.radius_au), options);  // Eq. 33: ξ
+  s.hour_angle_deg = place.hour_angle_deg;
+  s.equatorial_parallax_deg = place.equatorial_parallax_deg;
+  s.parallax_in_right_ascension_deg = place.parallax_in_right_ascension_deg;
+  s.topocentric_right_ascension_deg = place.right_ascension_deg;
+  s.topocentric_declination_deg = place.declination_deg;
+  s.topocentric_hour_angle_deg = place.topocentric_hour_angle_deg;
+  s.true_elevation_deg = place.true_elevation_deg;
+  s.refraction_deg = place.refraction_deg;
+  s.apparent_elevation_deg = place.apparent_elevation_deg;
+  s.zenith_deg = 90.0 - s.apparent_elevation_deg;  // Eq. 44
+  s.astronomers_azimuth_deg = place.astronomers_azimuth_deg;
+  s.azimuth_deg = place.azimuth_deg;
 
   s.equation_of_time_min = equation_of_time_min(s);
   return s;

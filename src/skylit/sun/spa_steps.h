@@ -25,6 +25,25 @@ struct Nutation {
 };
 Nutation nutation(double julian_ephemeris_century);
 
+// §3.11–3.15 for any body at a geocentric right ascension and declination (degrees,
+// apparent) and equatorial horizontal parallax ξ: its place in the site's sky, with
+// refraction. The sun's ξ is 8.794″/R; the moon's asin(6378.14 km / Δ) (Meeus 40).
+struct Topocentric {
+  double hour_angle_deg;                   // H, geocentric
+  double equatorial_parallax_deg;          // ξ
+  double parallax_in_right_ascension_deg;  // Δα
+  double right_ascension_deg;              // α′
+  double declination_deg;                  // δ′
+  double topocentric_hour_angle_deg;       // H′
+  double true_elevation_deg;               // e0
+  double refraction_deg;                   // Δe
+  double apparent_elevation_deg;           // e
+  double astronomers_azimuth_deg;          // Γ
+  double azimuth_deg;                      // Φ
+};
+Topocentric topocentric(const SiteLocation& site, double apparent_sidereal_time_deg, double right_ascension_deg,
+                        double declination_deg, double equatorial_parallax_deg, const SpaOptions& options);
+
 // Every quantity of §3.1–3.15, for tests and for whoever wants to look inside.
 struct Steps {
   double julian_day;                       // JD (UT1)
