@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "skylit/core/angles.h"
+
 namespace skylit {
 namespace {
 
@@ -47,11 +49,11 @@ TEST(MoonPosition, AltitudeAndAzimuthFollowTheSky) {
   options.delta_t_s = 0;
   const SiteLocation greenwich{51.4769, 0.0, 0};
   const MoonPosition p = moon_position(greenwich, kExampleJde, options);
-  const double phi = 51.4769 * M_PI / 180, dec = p.declination_deg * M_PI / 180;
+  const double phi = 51.4769 * kPi / 180, dec = p.declination_deg * kPi / 180;
   const double theta0 = 280.46061837 + 360.98564736629 * (kExampleJde - 2451545.0);  // mean sidereal time
-  const double h = std::fmod(theta0 - p.right_ascension_deg + 3600, 360.0) * M_PI / 180;
+  const double h = std::fmod(theta0 - p.right_ascension_deg + 3600, 360.0) * kPi / 180;
   const double geocentric =
-      std::asin(std::sin(phi) * std::sin(dec) + std::cos(phi) * std::cos(dec) * std::cos(h)) * 180 / M_PI;
+      std::asin(std::sin(phi) * std::sin(dec) + std::cos(phi) * std::cos(dec) * std::cos(h)) * 180 / kPi;
   EXPECT_NEAR(p.altitude_deg, geocentric, 1.1);
   EXPECT_LT(p.altitude_deg, geocentric + 0.6);  // parallax lowers more than refraction lifts above ~5°
   EXPECT_GT(p.azimuth_deg, 225);
