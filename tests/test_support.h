@@ -97,4 +97,11 @@ inline std::string small_scene_json(int width = 48, int height = 32) {
 })";
 }
 
+// The small test scene with `key: value` added at its top level.
+inline std::string small_scene_with(const std::string& key, const std::string& value) {
+  std::string text = small_scene_json();
+  text.insert(text.rfind('}'), ", \"" + key + "\": " + value + "\n");
+  return text;
+}
+
 }  // namespace skylit::testing

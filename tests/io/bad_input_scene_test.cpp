@@ -16,12 +16,7 @@ namespace {
 
 using testing::TempDir;
 
-// The small test scene with `key: value` added at its top level.
-std::string with(const std::string& key, const std::string& value) {
-  std::string text = testing::small_scene_json();
-  text.insert(text.rfind('}'), ", \"" + key + "\": " + value + "\n");
-  return text;
-}
+std::string with(const std::string& key, const std::string& value) { return testing::small_scene_with(key, value); }
 
 // The small test scene with one more object.
 std::string with_object(const std::string& object) {

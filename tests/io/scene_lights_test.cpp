@@ -15,11 +15,7 @@ namespace {
 using testing::TempDir;
 
 // The small test scene with `lights` added before its last closing brace.
-std::string with_lights(const std::string& lights) {
-  std::string text = testing::small_scene_json();
-  text.insert(text.rfind('}'), ", \"lights\": " + lights + "\n");
-  return text;
-}
+std::string with_lights(const std::string& lights) { return testing::small_scene_with("lights", lights); }
 
 std::string load_error(const TempDir& dir, const std::string& text) {
   return testing::input_error_of([&] { load_scene(dir.write("scene.json", text)); });

@@ -13,11 +13,7 @@ namespace {
 
 using testing::TempDir;
 
-std::string with(const std::string& key, const std::string& value) {
-  std::string text = testing::small_scene_json();
-  text.insert(text.rfind('}'), ", \"" + key + "\": " + value + "\n");
-  return text;
-}
+std::string with(const std::string& key, const std::string& value) { return testing::small_scene_with(key, value); }
 
 constexpr const char* kRow = R"([{"name": "main", "centre_line": [[0, 0, 0], [0, 90, 0]], "road_width_m": 7,
     "spacing_m": 30, "height_m": 8, "overhang_m": 1, "arrangement": "opposite", "shape": "isotropic",
