@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev libcli11-dev
   libgtest-dev libbenchmark-dev
   libproj-dev proj-bin
+  chromium  # the HTML report's test opens it in a real browser (docs/report.md)
 )
 if [ "${1:-}" = "--clang" ]; then
   packages+=(clang-14 libclang-rt-14-dev clang-format clang-tidy)

@@ -33,6 +33,9 @@ $skylit render examples/fig9.json --quiet --set render.width=480 --set render.he
 $skylit render examples/fig9.json --quiet --set render.width=480 --set render.height=270 -o "$out/fig9-photographic.png"
 $skylit render examples/building.json --quiet --set camera.projection=fisheye_equidistant \
   --set camera.vertical_fov_deg=180 --set render.width=320 --set render.height=320 -o "$out/building-fisheye.png"
+# The illuminance on the surfaces seen (docs/statistics.md).
+$skylit render examples/building.json --quiet --set render.width=480 --set render.height=270 \
+  --set render.false_colour.quantity=illuminance -o "$out/building-illuminance.falsecolor.png"
 # The paper's Fig. 10: clouds with the sun in front of and behind the camera.
 for figure in fig10a fig10b; do
   $skylit render "examples/$figure.json" --quiet --set render.width=960 --set render.height=540 -o "$out/$figure.png"

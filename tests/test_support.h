@@ -67,9 +67,9 @@ inline std::string quoted(const std::filesystem::path& p) {
   return text;
 }
 
-// Runs the built program with the given arguments (already shell-quoted).
-inline CommandResult run_skylit(const std::string& arguments) {
-  const std::string command = std::string("'") + SKYLIT_CLI_PATH + "' " + arguments + " 2>&1";
+// Runs a shell command line; `output` collects what it prints on stdout (add 2>&1 for
+// stderr too).
+inline CommandResult run_command(const std::string& command) {
   CommandResult result{-1, {}};
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -79,6 +79,11 @@ inline CommandResult run_skylit(const std::string& arguments) {
   const int status = pclose(pipe);
   result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+// Runs the built program with the given arguments (already shell-quoted).
+inline CommandResult run_skylit(const std::string& arguments) {
+  return run_command(std::string("'") + SKYLIT_CLI_PATH + "' " + arguments + " 2>&1");
 }
 
 // A small valid scene: a box on a plane under a high sun.

@@ -18,6 +18,7 @@
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/io/scene/scene_report.h"
 #include "skylit/render/renderer.h"
+#include "skylit/render/surface_illuminance.h"
 
 namespace skylit::cli {
 
@@ -26,6 +27,7 @@ namespace {
 struct RenderArguments {
   std::string scene_file;
   std::vector<std::string> outputs;
+  std::vector<std::string> reports;  // --report: outputs too, named apart for the help
   std::vector<std::string> standard_error_outputs;
   std::vector<std::string> overrides;
   int threads = 0;
@@ -42,7 +44,8 @@ void make_preview(RenderSettings& render) {
   render.samples_per_pixel = std::min(render.samples_per_pixel, 4);
 }
 
-int run_render(const RenderArguments& args) {
+int run_render(RenderArguments args) {
+  args.outputs.insert(args.outputs.end(), args.reports.begin(), args.reports.end());
   // Every output's format, folder and name checked, and its temporary file made, before
   // the work, so that a typo costs nothing; written all or nothing after it.
   std::vector<std::filesystem::path> all_outputs(args.outputs.begin(), args.outputs.end());
@@ -69,10 +72,14 @@ int run_render(const RenderArguments& args) {
   display.human = scene.render.human_display;
   display.degrees_per_pixel = scene.camera.vertical_fov_deg / scene.render.height;
   std::optional<PixelLayers> layers;
-  if (outputs_need_layers(args.outputs, scene)) layers = trace_pixel_layers(renderer.prepared());
+  if (outputs_need_layers(args.outputs, scene)) {
+    layers = trace_pixel_layers(renderer.prepared());
+    layers->illuminance_lx = surface_illuminance(renderer.prepared(), renderer.bands());
+  }
   std::size_t next = 0;
   for (const std::string& out : args.outputs)
-    outputs.write(next++, render_output_bytes(out, result.image, scene, display, layers ? &*layers : nullptr));
+    outputs.write(next++,
+                  render_output_bytes(out, result.image, scene, display, layers ? &*layers : nullptr, args.scene_file));
   for (const std::string& out : args.standard_error_outputs)
     outputs.write(next++, encode_image(*result.standard_error, out, display));
   outputs.publish();
@@ -85,15 +92,17 @@ CommandRunner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArguments>();
   CLI::App* render = app.add_subcommand("render", "Render a scene file into one or more images.");
   render->add_option("scene", args->scene_file, "Scene file (JSON; see docs/scene-format.md)")->required();
-  render
-      ->add_option("-o,--output", args->outputs,
-                   "Output image; repeat for several. By extension: .exr and .pfm hold linear RGB "
-                   "(sRGB primaries) scaled so 0.2126R+0.7152G+0.0722B is luminance in cd/m² "
-                   "(EXR adds a Y channel in cd/m²); .hdr is Radiance RGBE (luminance = 179 × "
-                   "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image; *.falsecolor.png "
-                   "is luminance in false colour with a legend (render.false_colour); .json or .csv are "
-                   "luminance statistics per object, material and probe, and DGP for a 180° fisheye")
-      ->required();
+  render->add_option("-o,--output", args->outputs,
+                     "Output image; repeat for several. By extension: .exr and .pfm hold linear RGB "
+                     "(sRGB primaries) scaled so 0.2126R+0.7152G+0.0722B is luminance in cd/m² "
+                     "(EXR adds a Y channel in cd/m²); .hdr is Radiance RGBE (luminance = 179 × "
+                     "(0.265R+0.670G+0.065B) cd/m²); .png is a tone-mapped display image; *.falsecolor.png "
+                     "is luminance in false colour with a legend (render.false_colour); .json or .csv are "
+                     "luminance statistics per object, material and probe, and DGP for a 180° fisheye; .html is "
+                     "the report (as --report)");
+  render->add_option("--report", args->reports,
+                     "Also write a self-contained HTML report: the images and their false colour, the conditions, "
+                     "the statistics, and the luminance in cd/m² under the mouse (docs/report.md)");
   render->add_option("--standard-error", args->standard_error_outputs,
                      "With render.integrator \"path\": also write each pixel's standard error of the mean "
                      "(luminance in cd/m², as a grey) to this image; repeat for several formats");
@@ -108,7 +117,12 @@ CommandRunner add_render_command(CLI::App& app) {
                    "for framing and iteration");
   render->add_flag("-v,--verbose", args->verbose,
                    "Say what the scene loads (as skylit info) and check the camera for likely mistakes, on stderr");
-  return [render, args] { return render->parsed() ? run_render(*args) : -1; };
+  return [render, args] {
+    if (!render->parsed()) return -1;
+    if (args->outputs.empty() && args->reports.empty())
+      throw InputError("render: give an output: -o FILE or --report FILE");
+    return run_render(*args);
+  };
 }
 
 }  // namespace skylit::cli

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "report_output.h"
 #include "skylit/assess/render_statistics.h"
 #include "skylit/core/error.h"
 #include "skylit/core/file_names.h"
@@ -25,6 +26,7 @@ ExrLayers exr_layers(const PixelLayers& layers, const Scene& scene) {
   std::vector<float> object(layers.object.begin(), layers.object.end());
   out.channels.emplace_back("object", std::move(object));
   out.channels.emplace_back("distance", layers.distance_m);
+  if (!layers.illuminance_lx.empty()) out.channels.emplace_back("illuminance", layers.illuminance_lx);
   const std::size_t n = layers.object.size();
   for (int c = 0; c < 3; ++c) {
     std::vector<float> component(n);
@@ -38,17 +40,24 @@ ExrLayers exr_layers(const PixelLayers& layers, const Scene& scene) {
 }  // namespace
 
 void check_render_output(const std::string& path) {
-  if (!is_statistics_path(path)) image_format_from_path(path);
+  if (!is_statistics_path(path) && !is_report_path(path)) image_format_from_path(path);
 }
 
 bool outputs_need_layers(const std::vector<std::string>& paths, const Scene& scene) {
   for (const std::string& p : paths)
-    if (is_statistics_path(p) || (scene.render.exr_layers && lower_case_extension(p) == ".exr")) return true;
+    if (is_statistics_path(p) || is_report_path(p) ||
+        (is_false_colour_path(p) && scene.render.false_colour.quantity == FalseColourQuantity::illuminance) ||
+        (scene.render.exr_layers && lower_case_extension(p) == ".exr"))
+      return true;
   return false;
 }
 
 std::vector<uint8_t> render_output_bytes(const std::string& path, const XyzImage& image, const Scene& scene,
-                                         const DisplayOptions& display, const PixelLayers* layers) {
+                                         const DisplayOptions& display, const PixelLayers* layers,
+                                         const std::string& scene_file) {
+  if (is_report_path(path))
+    return report_bytes("skylit render of " + std::filesystem::path(scene_file).filename().string(), image, scene,
+                        display, *layers);
   if (is_statistics_path(path)) {
     const RenderStatistics stats = render_statistics(image, *layers, scene);
     const std::string text = lower_case_extension(path) == ".csv" ? statistics_csv(stats) : statistics_json(stats);
@@ -56,7 +65,9 @@ std::vector<uint8_t> render_output_bytes(const std::string& path, const XyzImage
   }
   if (is_false_colour_path(path)) {
     check_pixels_finite(image, path);
-    return encode_false_colour(image, pixel_luminances(image), scene.render.false_colour, display);
+    const bool lux = scene.render.false_colour.quantity == FalseColourQuantity::illuminance;
+    return encode_false_colour(image, lux ? layers->illuminance_lx : pixel_luminances(image), scene.render.false_colour,
+                               display);
   }
   DisplayOptions options = display;
   options.radiance_view = radiance_view_options(scene.camera, image.width, image.height);

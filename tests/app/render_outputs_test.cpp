@@ -32,12 +32,23 @@ TEST(RenderOutputs, FisheyeStatisticsViewLineLayersAndFalseColour) {
   EXPECT_NE(read_file(dir.path() / "s.csv").find("\nglare,dgp,,"), std::string::npos);
   EXPECT_NE(read_file(dir.path() / "v.hdr").find("\nVIEW= -vta -vp 0 -20 2 "), std::string::npos);
   const std::string exr = read_file(dir.path() / "v.exr");
-  for (const char* name : {"object", "distance", "normal.X", "skylit:objects"})
+  EXPECT_NE(json.find("\"illuminance_lx\": {\"pixels\": "), std::string::npos) << json;
+  for (const char* name : {"object", "distance", "normal.X", "illuminance", "skylit:objects"})
     EXPECT_NE(exr.find(name), std::string::npos) << name;
   EXPECT_NE(exr.find("0 objects[0]\n1 objects[1]\n"), std::string::npos);  // unnamed: their place in the file
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "v.falsecolor.png"));
   // The image itself is still read as before: the extra channels do not disturb it.
   EXPECT_EQ(read_image(dir.path() / "v.exr").width, 40);
+}
+
+// An illuminance false-colour image needs the layers: they are made for it alone.
+TEST(RenderOutputs, IlluminanceFalseColour) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
+  const auto r = run_skylit("render " + quoted(scene) + " --quiet --set render.false_colour.quantity=illuminance -o " +
+                            quoted(dir.path() / "lux.falsecolor.png"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "lux.falsecolor.png"));
 }
 
 TEST(RenderOutputs, WrongNameFailsBeforeTheWork) {

@@ -1,6 +1,7 @@
 // Numbers for assessing a render (docs/statistics.md): the luminance of each named
 // object and each material (pixel count, mean, min, max, 5th/50th/95th percentiles,
-// over the pixels whose centre sees it), of the sky, of the scene's probes, and for a
+// over the pixels whose centre sees it), of the sky, of the scene's probes, the
+// illuminance on the surfaces seen when the layers hold it, and for a
 // fisheye view of 180° or more the daylight glare probability (glare.h). Written by
 // `skylit render -o stats.json` (or .csv).
 #pragma once
@@ -15,14 +16,17 @@
 
 namespace skylit {
 
+// A photometric quantity over a set of pixels: luminance (cd/m²) or illuminance (lx).
 struct LuminanceSummary {
   std::size_t pixels = 0;
-  double mean = 0, min = 0, max = 0, p5 = 0, p50 = 0, p95 = 0;  // cd/m²; 0 without pixels
+  double mean = 0, min = 0, max = 0, p5 = 0, p50 = 0, p95 = 0;  // 0 without pixels
 };
 
 struct NamedSummary {
   std::string name;
   LuminanceSummary luminance;
+  // On the surfaces seen (pixels of the sky left out), when the layers hold it.
+  std::optional<LuminanceSummary> illuminance_lx{};
 };
 
 struct RenderStatistics {

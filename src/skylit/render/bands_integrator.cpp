@@ -86,6 +86,13 @@ Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direct
   return sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction);
 }
 
+Irradiance BandsIntegrator::irradiance(const SurfacePoint& point, const Irradiance& sky_diffuse) const {
+  Irradiance e =
+      sky_diffuse * sky_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
+  if (const SceneLamps* lamps = scene_.lamps()) e += lamps->irradiance_on(point);
+  return e;
+}
+
 Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const {
   const Material& material = material_of(point);
   const Vec3 to_viewer = -ray.direction;

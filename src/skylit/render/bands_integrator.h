@@ -81,6 +81,11 @@ class BandsIntegrator {
 
   const SkyLight& sky_light() const { return *sky_light_; }
 
+  // The irradiance (W m⁻² nm⁻¹) on the surface at `point`, on the side its normal faces:
+  // the sun if it reaches it, the sky's `sky_diffuse` (from sky_light_at or its cache)
+  // dimmed by fog and clouds above, and the lamps; what the Lambertian shading uses.
+  Irradiance irradiance(const SurfacePoint& point, const Irradiance& sky_diffuse) const;
+
  private:
   const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
   ViewPath view_path(const Ray& ray, double distance) const;

@@ -16,6 +16,8 @@ struct PixelLayers {
   std::vector<int32_t> object;    // index into Scene::objects (or the above), rows from the top
   std::vector<float> distance_m;  // from the camera; 0 where no object
   std::vector<float> normal;      // 3 per pixel, world frame, facing the camera; 0 where no object
+  // lx on the surface seen (render/surface_illuminance.h); 0 where no object; empty: not computed
+  std::vector<float> illuminance_lx;
 };
 
 // One ray through each pixel's centre, in parallel.

@@ -30,6 +30,7 @@ class Renderer {
   const SkyModel& sky() const { return prepared_.sky(); }
   const SkyLight& sky_light() const { return integrator_.sky_light(); }
   const PreparedScene& prepared() const { return prepared_; }
+  const BandsIntegrator& bands() const { return integrator_; }
 
   struct Result {
     XyzImage image;

@@ -34,6 +34,20 @@ Irradiance SceneLamps::irradiance_from(size_t index, const Vec3& point) const {
   return e;  // for the few lamps seen directly: no need to spare the exponentials
 }
 
+Irradiance SceneLamps::irradiance_on(const SurfacePoint& point) const {
+  Irradiance sum;
+  const Vec3 origin = offset_from_surface(point.position, point.normal);
+  for (size_t i = 0; i < lamps_.size(); ++i) {
+    const Vec3 to_lamp = position(i) - origin;
+    const double d = length(to_lamp);
+    if (!(d > 0)) continue;
+    const double cos_in = dot(point.normal, to_lamp) / d;
+    if (!(cos_in > 0) || tracer_.occluded(Ray{origin, to_lamp / d, 0.0, d * (1 - 1e-6)})) continue;
+    sum += irradiance_from(i, point.position) * static_cast<float>(cos_in);
+  }
+  return sum;
+}
+
 Radiance SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const {
   // Each lamp that sends light to the point at all is a candidate, with the radiance
   // (cd/m², mean over bins; the spectra are one candela per candela) it would reflect

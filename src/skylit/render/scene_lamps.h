@@ -49,6 +49,10 @@ class SceneLamps {
   // [0, distance] (distance may be infinite).
   Radiance in_scattered(const Ray& ray, double distance) const;
 
+  // W m⁻² nm⁻¹ all lamps put on the surface at `point` (on the side its normal faces),
+  // each checked for occlusion: what an illuminance meter laid on it would read.
+  Irradiance irradiance_on(const SurfacePoint& point) const;
+
   // A lamp's spectral irradiance (W m⁻² nm⁻¹) on a plane facing it at `point`, through
   // the fog but not checked for occlusion.
   Irradiance irradiance_from(size_t lamp, const Vec3& point) const;

@@ -8,7 +8,7 @@
 
 namespace skylit {
 
-enum class FalseColourQuantity { luminance };
+enum class FalseColourQuantity { luminance, illuminance };  // cd/m², or lx on the surface seen
 enum class FalseColourScale { log, linear };
 
 struct FalseColourSettings {

@@ -19,6 +19,7 @@
 #include "skylit/media/fog_settings.h"
 #include "skylit/scene/output_settings.h"
 #include "skylit/scene/road_lighting_settings.h"
+#include "skylit/sun/solar_position.h"
 
 namespace skylit {
 
@@ -153,6 +154,9 @@ struct SceneLight {
 struct Scene {
   Camera camera;
   Sun sun;
+  // Where and when, when the scene places the sun from them (for reports, docs/report.md).
+  std::optional<SiteLocation> site;
+  std::string time;  // as the scene wrote it (ISO 8601 with its offset); empty: none
   // The air; its site_elevation_m and earth_sun_distance_au come from `site` and `time`.
   AtmosphereSettings atmosphere;
   // A fog layer near the ground (§3.2, §5), if any.

@@ -63,8 +63,9 @@ bool step_between(double a, double b, const std::vector<double>& steps) {
 
 FalseColourLegend false_colour_legend(std::span<const float> values, const FalseColourSettings& settings) {
   FalseColourLegend legend;
-  legend.quantity = "luminance";
-  legend.unit = "cd/m²";
+  const bool lux = settings.quantity == FalseColourQuantity::illuminance;
+  legend.quantity = lux ? "illuminance" : "luminance";
+  legend.unit = lux ? "lx" : "cd/m²";
   legend.scale = settings.scale;
   const double top = settings.max ? *settings.max : percentile_99(values);
   if (settings.scale == FalseColourScale::log) {

@@ -58,6 +58,8 @@ void place_sun(const JsonReader& root, const std::optional<SiteLocation>& site, 
   scene.atmosphere.site_elevation_m = site->elevation_m;
   const SolarPosition position =
       solar_position(*site, parse_offset_date_time(time.string(), time.source() + ": " + time.path()));
+  scene.site = site;
+  scene.time = time.string();
   scene.sun.altitude_deg = position.altitude_deg;
   scene.sun.azimuth_deg = position.azimuth_deg;
   scene.atmosphere.earth_sun_distance_au = position.earth_sun_distance_au;

@@ -8,7 +8,9 @@ namespace skylit {
 FalseColourSettings read_false_colour(const JsonReader& j) {
   j.allow_only({"quantity", "scale", "max", "decades", "contours", "underlay"});
   FalseColourSettings f;
-  if (auto q = j.optional("quantity")) q->one_of({"luminance"});
+  if (auto q = j.optional("quantity"))
+    f.quantity = q->one_of({"luminance", "illuminance"}) == "illuminance" ? FalseColourQuantity::illuminance
+                                                                          : FalseColourQuantity::luminance;
   if (auto s = j.optional("scale"))
     f.scale = s->one_of({"log", "linear"}) == "log" ? FalseColourScale::log : FalseColourScale::linear;
   if (auto m = j.optional("max")) {
