@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skylit/io/image/human_vision_limits.h"
 #include "skylit/io/image/image_encoders.h"
 #include "skylit/io/image/tone_map.h"
 #include "skylit/spectrum/color_space.h"
@@ -17,6 +18,9 @@ constexpr int kBins = 100;
 // range fits the display and a linear mapping is used instead.
 constexpr double kTolerance = 0.025;
 constexpr double kLowestLuminance = 1e-5;  // cd/m²: darker counts as this (a log scale)
+// D65 white's X and Z for Y = 1: the veil's colour (light scattered in the eye mixes
+// the field's colours; grey is its mean for a neutral scene).
+constexpr double kD65WhiteX = 0.95047, kD65WhiteZ = 1.08883;
 
 // Ward (1994)'s contrast-based scale factor: display = world × m, so that a
 // just-visible contrast at the world's adaptation stays just visible on the display.
@@ -130,6 +134,24 @@ std::vector<uint8_t> human_display_srgb8(const XyzImage& image, double degrees_p
       counts[std::size_t(y / k) * fw + x / k] += 1;
     }
   for (std::size_t i = 0; i < fovea.size(); ++i) fovea[i] /= counts[i];
+  // Veiling glare: the foveal samples, and every pixel, take kVeilShare of their light
+  // from the veil of the rest of the field (the paper's §5.1), a grey veil.
+  const std::vector<double> veil = veiling_luminance(fovea, fw, fh, k * std::max(degrees_per_pixel, 1e-6));
+  for (std::size_t i = 0; i < fovea.size(); ++i) fovea[i] = (1 - kVeilShare) * fovea[i] + veil[i];
+  XyzImage veiled(w, h);
+  std::vector<double> adaptation(std::size_t(w) * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t(y) * w + x;
+      const Xyz p = finite_pixel_or_black(image, i);
+      const double v = grid_at(veil, fw, fh, k, x, y);
+      veiled.set(x, y,
+                 {(1 - kVeilShare) * p.x + kD65WhiteX * v, (1 - kVeilShare) * p.y + v,
+                  (1 - kVeilShare) * p.z + kD65WhiteZ * v});
+      adaptation[i] = grid_at(fovea, fw, fh, k, x, y);
+    }
+  // Acuity: detail finer than a person resolves at each place's adaptation is lost (§5.2).
+  const XyzImage seen = acuity_limited(veiled, adaptation, degrees_per_pixel);
   const HumanDisplayMapping mapping(fovea);
 
   std::vector<uint8_t> out(3 * std::size_t(w) * h);
@@ -137,14 +159,13 @@ std::vector<uint8_t> human_display_srgb8(const XyzImage& image, double degrees_p
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const std::size_t i = std::size_t(y) * w + x;
-      const Xyz p = finite_pixel_or_black(image, i);
+      const Xyz p = finite_pixel_or_black(seen, i);
       Rgb rgb{0, 0, 0};
       if (p.y > 0) {
         const double yd = mapping.display_luminance(p.y) / kHumanDisplayMax;  // display white = 1
         // Colour kept in proportion to how photopic the local adaptation is.
-        const double adaptation = fovea[std::size_t(y / k) * fw + x / k];
         const double colour =
-            std::clamp(std::log10(std::max(adaptation, 1e-12) / kScotopicBelow) / mesopic_span, 0.0, 1.0);
+            std::clamp(std::log10(std::max(adaptation[i], 1e-12) / kScotopicBelow) / mesopic_span, 0.0, 1.0);
         const double grey = std::clamp(yd, 0.0, 1.0);
         const Rgb c = desaturate_into_gamut(linear_srgb_from_xyz({p.x * grey / p.y, grey, p.z * grey / p.y}), grey);
         for (int ch = 0; ch < 3; ++ch) rgb[ch] = grey + colour * (c[ch] - grey);

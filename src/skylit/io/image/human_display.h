@@ -6,8 +6,9 @@
 //   - histogram adjustment of log luminance over ~1° "foveal" samples, with the slope
 //     capped so that no contrast invisible in the scene becomes visible on the display
 //     (the threshold-versus-intensity function ΔL_t of the paper's Eq. 8);
-//   - colour lost as vision turns mesopic and scotopic.
-// Not yet: the loss of acuity at night and veiling glare around bright sources.
+//   - colour lost as vision turns mesopic and scotopic;
+//   - veiling glare around bright sources and the loss of acuity in dim light
+//     (human_vision_limits.h).
 #pragma once
 
 #include <cstdint>
