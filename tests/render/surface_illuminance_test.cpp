@@ -31,10 +31,9 @@ TEST(SurfaceIlluminance, OpenSunlitPlaneReadsDirectPlusSkyIntegral) {
   const SkyModel& sky = renderer.sky();
   const double altitude = radians(35.0);
   const double direct = illuminance(sky.atmosphere().direct_sun_exact(0.0, altitude)) * std::sin(altitude);
-  // 0.25° × 0.5° cells: the sky is smooth there but for the aureole, which this
-  // resolves to well under 0.1 % of the total (halving the cells moves it by less).
+  // 0.5° × 1° cells: halving them moves the total by 7 × 10⁻⁶ of it (measured).
   Spectrum diffuse;
-  constexpr int kTheta = 360, kPhi = 720;
+  constexpr int kTheta = 180, kPhi = 360;
   for (int i = 0; i < kTheta; ++i) {
     const double theta = 0.5 * kPi * (i + 0.5) / kTheta;
     for (int j = 0; j < kPhi; ++j) {
@@ -47,7 +46,7 @@ TEST(SurfaceIlluminance, OpenSunlitPlaneReadsDirectPlusSkyIntegral) {
   const double expected = direct + illuminance(Irradiance(diffuse));
   // The renderer takes the sky's share from its table over orientations, within 1 % of
   // this quadrature (tests/sky/sky_light_test.cpp), and the sun's from a height profile
-  // of the same exact transmittance: 1 % of the total holds both.
+  // of the same exact transmittance: 1 % of the total holds both (measured: 0.02 %).
   int checked = 0;
   for (int i = 0; i < 12 * 8; ++i) {
     if (lux[i] == 0) continue;  // a pixel that sees the sky

@@ -6,33 +6,14 @@
 
 #include "skylit/core/base64.h"
 #include "skylit/figures/report_luminance.h"
+#include "skylit/figures/utf8.h"
 
 namespace skylit {
 
 namespace {
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+// Markup text: escaped, malformed UTF-8 replaced (names come from users' files).
+std::string escaped(const std::string& text) { return xml_text(text); }
 
 std::string number(double value) {
   char text[32];

@@ -36,46 +36,6 @@ std::string hex(Rgb8 c) {
   return s;
 }
 
-// Text as XML character data or attribute value: the five special characters escaped,
-// malformed UTF-8 replaced by U+FFFD and control characters (not allowed in XML 1.0)
-// dropped, so any label gives a well-formed file.
-std::string xml_text(std::string_view s) {
-  std::string out;
-  for (std::size_t at = 0; at < s.size();) {
-    const unsigned char b = static_cast<unsigned char>(s[at]);
-    if (b < 0x80) {
-      switch (b) {
-        case '&':
-          out += "&amp;";
-          break;
-        case '<':
-          out += "&lt;";
-          break;
-        case '>':
-          out += "&gt;";
-          break;
-        case '"':
-          out += "&quot;";
-          break;
-        case '\'':
-          out += "&apos;";
-          break;
-        default:
-          if (b >= 0x20 || b == '\t') out += static_cast<char>(b);
-      }
-      ++at;
-      continue;
-    }
-    const std::size_t start = at;
-    const char32_t c = decode_utf8(s, at);
-    if (c == kMalformedUtf8 || c == 0xFFFE || c == 0xFFFF)  // the last two are not XML characters
-      out += "\uFFFD";
-    else
-      out += s.substr(start, at - start);
-  }
-  return out;
-}
-
 // SVG text whose box matches the bitmap font's at `scale`: `top` is the box's top, the
 // baseline lies where the font's (under its 7 rows of capitals).
 constexpr int kSvgFontSize = 11;
