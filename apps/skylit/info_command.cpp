@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/io/scene/scene_report.h"
+#include "skylit/io/weather/weather_conditions.h"
 
 namespace skylit::cli {
 
@@ -25,8 +26,12 @@ struct InfoArguments {
 };
 
 int run_info(const InfoArguments& args) {
-  const Scene scene = load_scene(args.scene_file, args.overrides);
+  Scene scene = load_scene(args.scene_file, args.overrides);
   std::fputs(describe_objects(scene).c_str(), stdout);
+  if (scene.weather) {
+    check_weather_model(scene);
+    std::fputs(describe_weather(*scene.weather).c_str(), stdout);
+  }
   std::fflush(stdout);
   print_scene_warnings(scene, /*check_camera=*/true);
   return 0;

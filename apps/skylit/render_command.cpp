@@ -30,6 +30,7 @@ struct RenderArguments {
   std::vector<std::string> reports;  // --report: outputs too, named apart for the help
   std::vector<std::string> standard_error_outputs;
   std::vector<std::string> overrides;
+  std::string hour;  // --hour: weather.hour
   int threads = 0;
   bool quiet = false;
   bool verbose = false;
@@ -52,7 +53,9 @@ int run_render(RenderArguments args) {
   all_outputs.insert(all_outputs.end(), args.standard_error_outputs.begin(), args.standard_error_outputs.end());
   for (const std::filesystem::path& out : all_outputs) check_render_output(out.string());
   OutputFiles outputs(all_outputs, {args.scene_file});
-  Scene scene = load_scene(args.scene_file, args.overrides);
+  std::vector<std::string> overrides = args.overrides;
+  if (!args.hour.empty()) overrides.push_back("weather.hour=" + args.hour);
+  Scene scene = load_scene(args.scene_file, overrides);
   if (args.preview) make_preview(scene.render);
   // Likely mistakes are said before the work; the camera checks build a ray-tracing
   // structure of their own, so only when asked for.
@@ -109,6 +112,9 @@ CommandRunner add_render_command(CLI::App& app) {
   render->add_option("--set", args->overrides,
                      "Override a scene value: PATH=VALUE, e.g. --set sun.altitude_deg=4 "
                      "--set render.width=640 (degrees, metres and pixels as in the scene file)");
+  render->add_option("--hour", args->hour,
+                     "The weather file's hour to render, MM-DDThh:mm in the file's standard time (as weather.hour; "
+                     "docs/weather.md)");
   render->add_option("--threads", args->threads, "Worker threads (0: all cores); the image does not depend on it")
       ->check(CLI::Range(0, 1024));
   render->add_flag("-q,--quiet", args->quiet, "No progress bar");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skylit/atmosphere/cie_sky_view.h"
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/atmosphere/sun_disc.h"
 #include "skylit/spectrum/spectral_math.h"
@@ -38,12 +39,30 @@ Irradiance Atmosphere::direct_sun(double height_m, double sun_elevation_rad) con
          Transmittance(transmittance_.to_top(ground_radius() + std::max(0.0, height_m), std::sin(sun_elevation_rad)));
 }
 
+namespace {
+
+// The sun's beam through the medium from radius r, by quadrature of the column densities.
+Irradiance direct_sun_through(const AtmosphereMedium& medium, const Irradiance& extraterrestrial, double r,
+                              double sun_elevation_rad, double ground_radius, double top_radius) {
+  const double mu = std::sin(sun_elevation_rad);
+  if (shell::hits_ground(r, mu, ground_radius)) return Irradiance(0.0f);
+  const ColumnDensities c = column_densities(medium, r, mu, shell::distance_to_outer_sphere(r, mu, top_radius));
+  return extraterrestrial * Transmittance(transmittance_of(medium.extinction(c.rayleigh, c.aerosol, c.ozone)));
+}
+
+}  // namespace
+
 Irradiance Atmosphere::direct_sun_exact(double height_m, double sun_elevation_rad) const {
-  const double r = ground_radius() + std::max(0.0, height_m), mu = std::sin(sun_elevation_rad);
-  if (shell::hits_ground(r, mu, ground_radius())) return Irradiance(0.0f);
-  const ColumnDensities c =
-      column_densities(medium_, r, mu, shell::distance_to_outer_sphere(r, mu, transmittance_.top_radius()));
-  return extraterrestrial_ * Transmittance(transmittance_of(medium_.extinction(c.rayleigh, c.aerosol, c.ozone)));
+  return direct_sun_through(medium_, extraterrestrial_, ground_radius() + std::max(0.0, height_m), sun_elevation_rad,
+                            ground_radius(), transmittance_.top_radius());
+}
+
+Irradiance direct_sun_at_ground(const AtmosphereSettings& settings, double sun_elevation_rad) {
+  const SpectralBands bands = SpectralBands::render_bins();
+  const double ground = settings.earth_radius_m + settings.site_elevation_m;
+  return direct_sun_through(AtmosphereMedium(settings, bands),
+                            Irradiance(extraterrestrial_irradiance(bands, settings.earth_sun_distance_au)), ground,
+                            sun_elevation_rad, ground, settings.earth_radius_m + settings.top_altitude_m);
 }
 
 SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double observer_height_m)
@@ -54,17 +73,32 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
                        std::clamp(observer_height_m, 0.0, 0.9 * atmosphere.settings().top_altitude_m)),
       sun_angular_radius_(kSunAngularRadiusAt1AuRad / atmosphere.settings().earth_sun_distance_au) {
   const double ground = atmosphere.ground_radius();
-  const Spectrum& sun = atmosphere.extraterrestrial_irradiance().spectrum();
+  const std::optional<CieSkySettings>& cie = atmosphere.settings().cie_sky;
+  // Under an overcast CIE sky the sun is hidden: no direct beam, and the air between
+  // the camera and the scene only dims (it has no sunlight to scatter).
+  const bool sun_shines = !cie || cie->direct_sun;
+  const Spectrum sun = sun_shines ? atmosphere.extraterrestrial_irradiance().spectrum() : Spectrum(0.0f);
   // Direct sunlight against height, with exact column densities toward the sun.
   for (int k = 0; k < kDirectSunProfileSize; ++k) {
     const double u = static_cast<double>(k) / (kDirectSunProfileSize - 1);
-    direct_sun_profile_.push_back(atmosphere.direct_sun_exact(kDirectSunProfileTopM * u * u, sun_elevation_));
+    direct_sun_profile_.push_back(
+        sun_shines ? atmosphere.direct_sun_exact(kDirectSunProfileTopM * u * u, sun_elevation_) : Irradiance(0.0f));
   }
   sun_through_air_ = direct_sun(observer_radius_ - ground);
-  observer_view_ =
-      std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
-  if (observer_radius_ - ground > kGroundLayerM)
-    ground_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, ground + 1.0, ground, sun_elevation_);
+  if (cie) {
+    const double ground_albedo = atmosphere.settings().ground_albedo;
+    const Irradiance sun_on_ground = direct_sun(0.0) * static_cast<float>(std::max(0.0, to_sun_.z));
+    observer_view_ =
+        cie_sky_view(*cie, atmosphere.bands(), to_sun_, sun_on_ground, ground_albedo, observer_radius_, ground);
+    if (observer_radius_ - ground > kGroundLayerM)
+      ground_view_ =
+          cie_sky_view(*cie, atmosphere.bands(), to_sun_, sun_on_ground, ground_albedo, ground + 1.0, ground);
+  } else {
+    observer_view_ =
+        std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
+    if (observer_radius_ - ground > kGroundLayerM)
+      ground_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, ground + 1.0, ground, sun_elevation_);
+  }
   aerial_ =
       std::make_unique<AerialPerspectiveTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
   ground_sky_irradiance_ =

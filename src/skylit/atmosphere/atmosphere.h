@@ -49,6 +49,10 @@ class Atmosphere {
   Irradiance extraterrestrial_;
 };
 
+// Direct normal irradiance at the ground (render bins), exactly as direct_sun_exact but
+// without building the tables: for fitting the aerosol to a measured beam.
+Irradiance direct_sun_at_ground(const AtmosphereSettings& settings, double sun_elevation_rad);
+
 class SkyModel {
  public:
   SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double observer_height_m);

@@ -3,6 +3,10 @@
 // paper are in docs/atmosphere.md.
 #pragma once
 
+#include <optional>
+
+#include "skylit/atmosphere/cie_sky.h"
+
 namespace skylit {
 
 enum class AtmosphereModel {
@@ -49,6 +53,9 @@ struct AtmosphereSettings {
   double top_altitude_m = 100e3;       // above sea level
   double site_elevation_m = 0.0;       // the scene's ground (z = 0) above sea level
   double earth_sun_distance_au = 1.0;  // scales the extraterrestrial spectrum by 1/d²
+  // A CIE standard general sky in place of the model's own sky (scene `sky`,
+  // docs/weather.md); the air between the camera and the scene stays the model's.
+  std::optional<CieSkySettings> cie_sky;
 };
 
 }  // namespace skylit

@@ -67,6 +67,15 @@ SkyViewTable::SkyViewTable(const ScatteringIntegrator& integrator, const Spectru
   });
 }
 
+SkyViewTable::SkyViewTable(FunctionRef<Spectrum(const RelativeDirection&)> radiance, double observer_radius_m,
+                           double ground_radius_m)
+    : mapping_(observer_radius_m, ground_radius_m), table_(kAzimuthSize, kElevationSize) {
+  for (int j = 0; j < kElevationSize; ++j)
+    for (int i = 0; i < kAzimuthSize; ++i)
+      table_.at(i, j) = radiance(mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1),
+                                                    static_cast<double>(j) / (kElevationSize - 1)));
+}
+
 Spectrum SkyViewTable::radiance(const RelativeDirection& direction) const {
   double u_azimuth, u_elevation;
   mapping_.to_unit(direction, u_azimuth, u_elevation);

@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "skylit/atmosphere/scattering_integrator.h"
+#include "skylit/core/function_ref.h"
 #include "skylit/core/vec3.h"
 #include "skylit/spectrum/spectrum_grid.h"
 
@@ -64,6 +65,10 @@ class SkyViewTable {
   // `sun_irradiance` scales the integrator's per-unit results into radiance.
   SkyViewTable(const ScatteringIntegrator& integrator, const Spectrum& sun_irradiance, double observer_radius_m,
                double ground_radius_m, double sun_elevation_rad);
+  // Any other sky given as a function of the relative direction (a CIE sky), tabulated
+  // over the same nodes.
+  SkyViewTable(FunctionRef<Spectrum(const RelativeDirection&)> radiance, double observer_radius_m,
+               double ground_radius_m);
 
   Spectrum radiance(const RelativeDirection& direction) const;
   const SkyDirectionMapping& mapping() const { return mapping_; }

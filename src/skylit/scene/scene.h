@@ -20,6 +20,7 @@
 #include "skylit/scene/output_settings.h"
 #include "skylit/scene/road_lighting_settings.h"
 #include "skylit/sun/solar_position.h"
+#include "skylit/scene/weather_summary.h"
 
 namespace skylit {
 
@@ -175,6 +176,8 @@ struct Scene {
   std::vector<Probe> probes;  // pixels whose luminance the statistics report
   // A road for `skylit road` (EN 13201-3 figures), if any.
   std::optional<RoadLightingSettings> road_lighting;
+  // Set when the conditions came from a weather file (`weather`, docs/weather.md).
+  std::optional<WeatherSummary> weather;
 };
 
 }  // namespace skylit

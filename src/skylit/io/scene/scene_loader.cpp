@@ -124,14 +124,26 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
                       const std::filesystem::path& base_dir) {
   const JsonReader root(document, source);
   if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
-  root.allow_only({"camera", "sun", "site", "time", "atmosphere", "fog", "clouds", "materials", "material_overrides",
-                   "objects", "lights", "lamp_rows", "road_lighting", "render", "probes"});
+  root.allow_only({"camera", "sun", "site", "time", "weather", "sky", "atmosphere", "fog", "clouds", "materials",
+                   "material_overrides", "objects", "lights", "lamp_rows", "road_lighting", "render", "probes"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
-  const bool sun_needs_site = read_sun_and_atmosphere(root, scene);
+  const auto weather = root.optional("weather");
+  bool sun_needs_site = false;
+  if (weather) {
+    for (const char* key : {"sun", "site", "time"})
+      if (root.has(key)) root.required(key).fail("give either a weather file's hour or the " + std::string(key));
+    if (auto a = root.optional("atmosphere")) scene.atmosphere = read_atmosphere(*a);
+  } else {
+    sun_needs_site = read_sun_and_atmosphere(root, scene);
+  }
+  if (auto sky = root.optional("sky")) scene.atmosphere.cie_sky = read_sky(*sky, weather.has_value());
   if (auto fog = root.optional("fog")) scene.fog = read_fog(*fog);
   if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
-  std::optional<SiteLocation> site = read_scene_site(root);  // a city model without one gives it
+  // After the scene's own sky, fog and clouds, which the weather leaves as they are.
+  if (weather) read_weather(*weather, base_dir, scene);
+  // A city model without a site (and no weather file's) gives it.
+  std::optional<SiteLocation> site = weather ? scene.site : read_scene_site(root);
   scene.materials = read_materials(root.required("materials"));
   std::vector<MaterialOverride> overrides;
   if (auto o = root.optional("material_overrides")) overrides = read_material_overrides(*o, scene.materials);
