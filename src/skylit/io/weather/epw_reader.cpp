@@ -3,6 +3,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "skylit/core/error.h"
 #include "skylit/core/text_file.h"
@@ -119,9 +120,11 @@ EpwLocation read_location(const LineReader& r, const std::string& name) {
   l.city = r.text(1), l.region = r.text(2), l.country = r.text(3), l.source = r.text(4), l.wmo_station = r.text(5);
   const auto in = [&](int index, const char* field, double lo, double hi) {
     const double v = r.required(index, field);
-    if (!(v >= lo && v <= hi))
-      r.fail(index, field,
-             "must lie within " + std::to_string(lo).substr(0, 6) + " to " + std::to_string(hi).substr(0, 6));
+    if (!(v >= lo && v <= hi)) {
+      char range[64];
+      std::snprintf(range, sizeof range, "must lie within %g to %g", lo, hi);
+      r.fail(index, field, range);
+    }
     return v;
   };
   l.latitude_deg = in(6, "latitude", -90, 90);
@@ -209,7 +212,9 @@ const EpwHour& epw_hour_containing(const EpwFile& file, int month, int day, int 
   size_t index = 0;
   for (size_t i = 0; i < file.hours.size(); ++i) {
     const EpwHour& h = file.hours[i];
-    if (h.month == month && h.day == day && h.hour == wanted) found = &h, index = i;  // the last, in sub-hourly files
+    if (h.month != month || h.day != day || h.hour != wanted) continue;
+    // Sub-hourly files: the last record of the hour ends it; midnight needs the first of hour 1.
+    if (!found || !(on_the_hour && hour == 0)) found = &h, index = i;
   }
   if (!found) {
     char shown[32];

@@ -1,0 +1,143 @@
+// One EPW hour made into a scene (io/weather/weather_conditions.h): site and sun, the
+// fitted aerosol, clouds, fog, snow, the overcast sky, and the model against the file.
+#include "skylit/io/weather/weather_conditions.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "../io/epw_fixture.h"
+#include "../test_support.h"
+#include "skylit/atmosphere/atmosphere.h"
+#include "skylit/spectrum/cie.h"
+#include "skylit/sun/solar_position.h"
+
+namespace skylit {
+namespace {
+
+using testing::epw_fixture;
+using testing::EpwRecordFields;
+
+Scene scene_for(const EpwFile& file, int month, int day, int hour) {
+  Scene scene;
+  apply_weather_hour(file, epw_hour_containing(file, month, day, hour, 0, "test"), scene);
+  return scene;
+}
+
+TEST(WeatherConditions, PlacesTheSunAtTheHoursMiddleAndFitsTheBeam) {
+  const EpwFile file = parse_epw(epw_fixture(), "fixture.epw");
+  const Scene scene = scene_for(file, 6, 21, 13);
+  // Hour 13 is 12:00–13:00 in the file's standard time, UTC−3:30: the sun at 12:30.
+  SpaOptions air;
+  air.pressure_mbar = 1013, air.temperature_c = 20;
+  const SolarPosition sun =
+      solar_position({48.5, -2.25, 812}, parse_offset_date_time("2001-06-21T12:30-03:30", "t"), air);
+  EXPECT_NEAR(scene.sun.altitude_deg, sun.altitude_deg, 1e-9);
+  EXPECT_NEAR(scene.sun.azimuth_deg, sun.azimuth_deg, 1e-9);
+  EXPECT_DOUBLE_EQ(scene.atmosphere.site_elevation_m, 812);
+  // The fitted aerosol gives the file's direct normal illuminance; the bisection stops
+  // at 1e-6 in aod_550, far inside the issue's 2 %.
+  const double beam = illuminance(direct_sun_at_ground(scene.atmosphere, radians(scene.sun.altitude_deg)));
+  EXPECT_NEAR(beam, 70000, 0.001 * 70000);
+  EXPECT_GT(scene.atmosphere.aerosol.aod_550, 0.0);
+  EXPECT_FALSE(scene.cloud_layer);  // a clear sky
+  EXPECT_FALSE(scene.fog);          // 30 km of visibility
+  EXPECT_FALSE(scene.atmosphere.cie_sky);
+  EXPECT_DOUBLE_EQ(scene.atmosphere.ground_albedo, 0.2);  // the file's albedo
+  ASSERT_TRUE(scene.weather);
+  EXPECT_NE(scene.weather->record.find("06-21 hour 13 (12:00-13:00"), std::string::npos) << scene.weather->record;
+  EXPECT_EQ(scene.weather->sun_time, "2001-06-21T12:30-03:30");
+}
+
+TEST(WeatherConditions, CloudsFogSnowAndOvercastComeFromTheirFields) {
+  EpwRecordFields cloudy;
+  cloudy.day = 24, cloudy.opaque_cover = "6", cloudy.total_cover = "8", cloudy.visibility = "0.3",
+  cloudy.snow_depth = "20", cloudy.ceiling = "77777";
+  EpwRecordFields overcast;
+  overcast.day = 25, overcast.dn_lux = "0", overcast.dni = "0", overcast.opaque_cover = "10",
+  overcast.total_cover = "10", overcast.dh_lux = "21000";
+  const EpwFile file = parse_epw(epw_fixture({cloudy, overcast}), "fixture.epw");
+
+  const Scene a = scene_for(file, 6, 24, 13);
+  ASSERT_TRUE(a.cloud_layer);
+  EXPECT_DOUBLE_EQ(a.cloud_layer->coverage, 0.6);                                // the opaque cover, not the total
+  EXPECT_DOUBLE_EQ(a.cloud_layer->altitude, 2000.0);                             // an unlimited ceiling: the default
+  EXPECT_EQ(a.cloud_layer->seed, scene_for(file, 6, 24, 13).cloud_layer->seed);  // reproducible
+  EXPECT_LE(expected_generated_cloud_count(*a.cloud_layer), static_cast<double>(kMaxGeneratedClouds));
+  ASSERT_TRUE(a.fog);
+  EXPECT_DOUBLE_EQ(*a.fog->ground_visibility_m, 300.0);
+  EXPECT_DOUBLE_EQ(a.atmosphere.ground_albedo, 0.6);  // snow
+
+  const Scene b = scene_for(file, 6, 25, 13);
+  ASSERT_TRUE(b.atmosphere.cie_sky);
+  EXPECT_EQ(b.atmosphere.cie_sky->type, 1);
+  EXPECT_FALSE(b.atmosphere.cie_sky->direct_sun);
+  EXPECT_DOUBLE_EQ(b.atmosphere.cie_sky->diffuse_horizontal_lux, 21000.0);
+  EXPECT_FALSE(b.cloud_layer);  // the CIE sky stands for the clouds
+}
+
+// The shared Amsterdam file's clear hours (no sky cover, a beam over 20,000 lx): the
+// model's direct normal illuminance within 2 % of the file's (it is fitted) and the
+// global horizontal within 10 % (its diffuse part is the model's own, unfitted).
+// Two hours by default (each builds the sky's tables, about 2 s); all 102 with
+// SKYLIT_EPW_ALL_CLEAR_HOURS=1 (measured: global within +8.2 % / −0.5 % over the ten
+// checked by hand, docs/weather.md).
+TEST(WeatherConditions, ClearHoursOfTheSharedFileMatchTheModel) {
+  const std::filesystem::path path =
+      std::filesystem::path(SKYLIT_SOURCE_DIR) / "../shared/data/NLD_Amsterdam062400_IWEC.epw";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path << " (the shared data is not on this machine)";
+  const EpwFile file = read_epw(path);
+  const bool all = std::getenv("SKYLIT_EPW_ALL_CLEAR_HOURS") != nullptr;
+  int checked = 0;
+  for (const EpwHour& h : file.hours) {
+    const bool clear = h.opaque_sky_cover_tenths == 0.0 && h.total_sky_cover_tenths == 0.0 && h.direct_normal_lux &&
+                       *h.direct_normal_lux > 20000 && h.global_horizontal_lux;
+    if (!clear) continue;
+    if (!all && !((h.month == 1 && h.day == 4 && h.hour == 12) || (h.month == 8 && h.day == 2 && h.hour == 12)))
+      continue;
+    Scene scene;
+    apply_weather_hour(file, h, scene);
+    check_weather_model(scene);
+    const WeatherSummary& w = *scene.weather;
+    EXPECT_NEAR(*w.model_direct_normal_lux, *h.direct_normal_lux, 0.02 * *h.direct_normal_lux) << w.record;
+    EXPECT_NEAR(*w.model_global_horizontal_lux, *h.global_horizontal_lux, 0.10 * *h.global_horizontal_lux) << w.record;
+    ++checked;
+  }
+  EXPECT_EQ(checked, all ? 102 : 2);
+}
+
+TEST(WeatherConditions, TheSceneFileTakesAnHourAndInfoReportsIt) {
+  const testing::TempDir dir;
+  dir.write("site.epw", epw_fixture());
+  const std::string scene = R"({
+  "camera": {"position": [0, -20, 2], "look_at": [0, 0, 3]},
+  "weather": {"epw": "site.epw", "hour": "06-21T12:30"},
+  "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
+  "objects": [{"type": "plane", "material": "white", "size_m": 200}],
+  "render": {"width": 8, "height": 6}
+})";
+  const auto file = dir.write("scene.json", scene);
+  const testing::CommandResult info = testing::run_skylit("info " + testing::quoted(file));
+  EXPECT_EQ(info.exit_status, 0) << info.output;
+  EXPECT_NE(info.output.find("record 06-21 hour 13"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("direct normal: file 70000 lx, model 70000 lx"), std::string::npos) << info.output;
+
+  // A malformed weather file: its own file, line and field, exit status 2.
+  EpwRecordFields bad;
+  bad.day = 26, bad.visibility = "far";
+  dir.write("site.epw", epw_fixture({bad}));
+  const testing::CommandResult broken = testing::run_skylit("info " + testing::quoted(file));
+  EXPECT_EQ(broken.exit_status, 2);
+  EXPECT_NE(broken.output.find("site.epw:13: field 25 (visibility): expected a number, found 'far'"), std::string::npos)
+      << broken.output;
+  // An hour the file does not hold, through render's --hour: refused before any output.
+  dir.write("site.epw", epw_fixture());
+  const testing::CommandResult missing = testing::run_skylit(
+      "render " + testing::quoted(file) + " --hour 07-01T10:00 -q -o " + testing::quoted(dir.path() / "out.png"));
+  EXPECT_EQ(missing.exit_status, 2);
+  EXPECT_NE(missing.output.find("has no record for 07-01T10:00"), std::string::npos) << missing.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
+}
+
+}  // namespace
+}  // namespace skylit
