@@ -56,7 +56,14 @@ TEST(WeatherConditions, CloudsFogSnowAndOvercastComeFromTheirFields) {
   EpwRecordFields overcast;
   overcast.day = 25, overcast.dn_lux = "0", overcast.dni = "0", overcast.opaque_cover = "10",
   overcast.total_cover = "10", overcast.dh_lux = "21000";
-  const EpwFile file = parse_epw(epw_fixture({cloudy, overcast}), "fixture.epw");
+  EpwRecordFields covered_night;  // a full cover with no sun: the densest generated layer
+  covered_night.day = 26, covered_night.hour = 20, covered_night.opaque_cover = "10", covered_night.total_cover = "10";
+  const EpwFile file = parse_epw(epw_fixture({cloudy, overcast, covered_night}), "fixture.epw");
+  const Scene night = scene_for(file, 6, 26, 20);
+  EXPECT_LT(night.sun.altitude_deg, 0.0);  // 19:30 at UTC−3:30, 2.25° W: solar 22:50
+  ASSERT_TRUE(night.cloud_layer);
+  EXPECT_DOUBLE_EQ(night.cloud_layer->coverage, 0.95);
+  EXPECT_LE(expected_generated_cloud_count(*night.cloud_layer), static_cast<double>(kMaxGeneratedClouds));
 
   const Scene a = scene_for(file, 6, 24, 13);
   ASSERT_TRUE(a.cloud_layer);

@@ -105,16 +105,22 @@ void aerosol_from_visibility(const EpwHour& hour, AtmosphereSettings& air, Weath
   }
 }
 
+// A generated layer's densest cover: a full one would need infinitely many clouds (its
+// expected count grows as −ln(1 − coverage)); a sky fully covered with the sun up is
+// the overcast CIE sky instead.
+constexpr double kMostGeneratedCoverage = 0.95;
+
 CloudLayerSettings cloud_layer_for(const EpwHour& hour, double coverage) {
   CloudLayerSettings layer;
-  layer.coverage = coverage;
+  layer.coverage = std::min(coverage, kMostGeneratedCoverage);
   layer.altitude = hour.ceiling_height_m && *hour.ceiling_height_m >= 100 && *hour.ceiling_height_m <= 12000
                        ? *hour.ceiling_height_m
                        : kDefaultCloudAltitudeM;
   // The same hour of the same date always gets the same clouds.
   layer.seed = static_cast<std::uint64_t>((hour.month * 32 + hour.day) * 25 + hour.hour);
   // A dense layer is made of fewer, larger clouds, so that it stays within the limit.
-  while (expected_generated_cloud_count(layer) > 0.8 * static_cast<double>(kMaxGeneratedClouds)) {
+  for (int grown = 0;
+       grown < 40 && expected_generated_cloud_count(layer) > 0.8 * static_cast<double>(kMaxGeneratedClouds); ++grown) {
     layer.min_semi_axis *= 1.25;
     layer.max_semi_axis *= 1.25;
   }
@@ -199,10 +205,15 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene) 
     air.cie_sky->diffuse_horizontal_lux = *summary.file_diffuse_horizontal_lux;
     decisions.push_back(formatted("sky: CIE standard sky type %.0f (the scene's) scaled to the file's %.0f lx",
                                   air.cie_sky->type, air.cie_sky->diffuse_horizontal_lux));
+  } else if (air.cie_sky) {
+    decisions.push_back(
+        formatted("sky: CIE standard sky type %.0f at %.0f lx (the scene's or the default: the file "
+                  "gives no diffuse horizontal illuminance this hour)",
+                  air.cie_sky->type, air.cie_sky->diffuse_horizontal_lux));
   } else if (coverage > 0 && scene.clouds.empty() && !scene.cloud_layer) {
     scene.cloud_layer = cloud_layer_for(hour, coverage);
     decisions.push_back(formatted("clouds: a generated layer covering %.0f %% of the sky at %.0f m, seed %.0f",
-                                  100 * coverage, scene.cloud_layer->altitude,
+                                  100 * scene.cloud_layer->coverage, scene.cloud_layer->altitude,
                                   static_cast<double>(scene.cloud_layer->seed)));
   }
 
