@@ -14,6 +14,9 @@ packages=(
   libgtest-dev libbenchmark-dev
   libproj-dev proj-bin
   chromium  # the HTML report's test opens it in a real browser (docs/report.md)
+  # Optional at build time, used when present (issue 20): Open MPI for mpirun runs
+  # (docs/cluster.md), ffmpeg for skylit animate's MP4 (x264) and the tests' ffprobe.
+  libopenmpi-dev openmpi-bin ffmpeg
 )
 if [ "${1:-}" = "--clang" ]; then
   packages+=(clang-14 libclang-rt-14-dev clang-format clang-tidy)

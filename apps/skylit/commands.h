@@ -27,6 +27,9 @@ CommandRunner add_spectrum_command(CLI::App& app);
 // `skylit sweep SCENE --vary PATH=V1,V2,... [--vary ...] -o SHEET.png` (docs/sweeps.md)
 CommandRunner add_sweep_command(CLI::App& app);
 
+// `skylit animate SCENE -o FOLDER (--from T --to T [--every STEP] | --dates D,... --at hh:mm)` (docs/animations.md)
+CommandRunner add_animate_command(CLI::App& app);
+
 // `skylit compare A B [--regions R.json] [--mask M.png] [--standard-error-a SA] [--standard-error-b SB]
 // [-o RATIO.png] [--json OUT.json]` (docs/validation.md)
 CommandRunner add_compare_command(CLI::App& app);

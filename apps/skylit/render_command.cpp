@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "process_group.h"
 #include "progress_bar.h"
 #include "render_outputs.h"
 #include "skylit/core/error.h"
@@ -35,6 +36,7 @@ struct RenderArguments {
   bool quiet = false;
   bool verbose = false;
   bool preview = false;
+  bool make_folders = false;
 };
 
 // A quarter of the pixels and the cheapest sampling, for framing and iterating.
@@ -52,10 +54,16 @@ int run_render(RenderArguments args) {
   std::vector<std::filesystem::path> all_outputs(args.outputs.begin(), args.outputs.end());
   all_outputs.insert(all_outputs.end(), args.standard_error_outputs.begin(), args.standard_error_outputs.end());
   for (const std::filesystem::path& out : all_outputs) check_render_output(out.string());
-  OutputFiles outputs(all_outputs, {args.scene_file});
+  std::optional<OutputFiles> outputs;
+  if (!args.make_folders) outputs.emplace(all_outputs, std::vector<std::filesystem::path>{args.scene_file});
   std::vector<std::string> overrides = args.overrides;
   if (!args.hour.empty()) overrides.push_back("weather.hour=" + args.hour);
   Scene scene = load_scene(args.scene_file, overrides);
+  if (args.make_folders) {  // only once the scene has loaded: a mistake leaves no folder behind
+    for (const std::filesystem::path& out : all_outputs)
+      if (!out.parent_path().empty()) std::filesystem::create_directories(out.parent_path());
+    outputs.emplace(all_outputs, std::vector<std::filesystem::path>{args.scene_file});
+  }
   if (args.preview) make_preview(scene.render);
   // Likely mistakes are said before the work; the camera checks build a ray-tracing
   // structure of their own, so only when asked for.
@@ -65,11 +73,14 @@ int run_render(RenderArguments args) {
     throw InputError(args.scene_file +
                      ": --standard-error needs render.integrator \"path\" (the bands method has no noise)");
   const Renderer renderer(scene);
-  ProgressBar progress(!args.quiet && isatty(STDERR_FILENO) != 0);
+  ProgressBar progress(!args.quiet && is_first_process() && isatty(STDERR_FILENO) != 0);
   RenderOptions options;
   options.threads = args.threads;
   options.on_progress = [&progress](int done, int total) { progress.update(done, total); };
+  // Under mpirun the ranks share the image's tiles; the first writes the outputs.
+  options.share = image_share_of_processes();
   const Renderer::Result result = renderer.render_with_error(options);
+  if (!is_first_process()) return 0;
   DisplayOptions display;
   display.exposure_ev = scene.render.exposure_ev;
   display.human = scene.render.human_display;
@@ -81,11 +92,11 @@ int run_render(RenderArguments args) {
   }
   std::size_t next = 0;
   for (const std::string& out : args.outputs)
-    outputs.write(next++,
-                  render_output_bytes(out, result.image, scene, display, layers ? &*layers : nullptr, args.scene_file));
+    outputs->write(
+        next++, render_output_bytes(out, result.image, scene, display, layers ? &*layers : nullptr, args.scene_file));
   for (const std::string& out : args.standard_error_outputs)
-    outputs.write(next++, encode_image(*result.standard_error, out, display));
-  outputs.publish();
+    outputs->write(next++, encode_image(*result.standard_error, out, display));
+  outputs->publish();
   return 0;
 }
 
@@ -118,6 +129,7 @@ CommandRunner add_render_command(CLI::App& app) {
   render->add_option("--threads", args->threads, "Worker threads (0: all cores); the image does not depend on it")
       ->check(CLI::Range(0, 1024));
   render->add_flag("-q,--quiet", args->quiet, "No progress bar");
+  render->add_flag("--mkdir", args->make_folders, "Make the outputs' folders when missing (otherwise an error)");
   render->add_flag("--preview", args->preview,
                    "Half the width and height (a quarter of the pixels), 1×1 samples per pixel (path: at most 4): "
                    "for framing and iteration");

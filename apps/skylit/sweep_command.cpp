@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "commands.h"
+#include "job_split.h"
+#include "process_group.h"
 #include "progress_bar.h"
 #include "skylit/core/error.h"
 #include "skylit/core/file_names.h"
@@ -36,12 +38,17 @@ struct SweepArguments {
   std::string title;
   int threads = 0;
   bool quiet = false;
+  std::string shard;
+  JobSplit split;
 };
 
 void check_sheet_path(const std::filesystem::path& sheet) {
   if (lower_case_extension(sheet) != ".png")
     throw InputError("cannot write \"" + sheet.string() + "\": a contact sheet is written as .png");
-  check_output_folder(sheet);
+  // The sheet's folder is made when missing (after every check), as for animate.
+  const std::filesystem::path folder = sheet.parent_path();
+  if (!folder.empty() && std::filesystem::exists(folder) && !std::filesystem::is_directory(folder))
+    throw InputError("cannot write \"" + sheet.string() + "\": \"" + folder.string() + "\" is not a folder");
 }
 
 std::vector<std::string> with_overrides(std::vector<std::string> base, const std::vector<std::string>& more) {
@@ -70,7 +77,9 @@ std::optional<double> check_combinations(const SweepArguments& args, const Sweep
   return *shared;
 }
 
-int run_sweep(const SweepArguments& args) {
+int run_sweep(SweepArguments& args) {
+  if (!args.shard.empty()) args.split.shard = parse_shard(args.shard);
+  check_split_options(args.split);
   const std::filesystem::path sheet_path = args.sheet;
   check_sheet_path(sheet_path);
   check_not_an_input(sheet_path, args.scene_file);
@@ -82,11 +91,11 @@ int run_sweep(const SweepArguments& args) {
     if (std::find(extensions.begin(), extensions.end(), "." + format) == extensions.end())
       extensions.push_back("." + format);
   const std::optional<double> fixed_exposure = check_combinations(args, plan);
+  if (!sheet_path.parent_path().empty()) std::filesystem::create_directories(sheet_path.parent_path());
 
-  const bool show_progress = !args.quiet && isatty(STDERR_FILENO) != 0;
-  std::vector<XyzImage> images;
-  images.reserve(plan.combinations.size());
-  for (const SweepCombination& combination : plan.combinations) {
+  const bool show_progress = !args.quiet && is_first_process() && isatty(STDERR_FILENO) != 0;
+  const auto render_cell = [&](std::size_t index) {
+    const SweepCombination& combination = plan.combinations[index];
     if (show_progress)
       std::fprintf(stderr, "cell %zu/%zu: %s\n", combination.index + 1, plan.combinations.size(),
                    combination_label(plan, combination).c_str());
@@ -96,8 +105,14 @@ int run_sweep(const SweepArguments& args) {
     RenderOptions options;
     options.threads = args.threads;
     options.on_progress = [&progress](int done, int total) { progress.update(done, total); };
-    images.push_back(renderer.render(options));
-  }
+    return renderer.render(options);
+  };
+  const auto shard_file = [&](std::size_t index) {
+    return sweep_cell_path(sheet_path, plan, plan.combinations[index], ".xyz");
+  };
+  const std::optional<std::vector<XyzImage>> images =
+      gather_job_images(plan.combinations.size(), args.split, render_cell, shard_file);
+  if (!images) return 0;  // a shard, or a rank other than the first
 
   ContactSheet sheet;
   sheet.title = args.title.empty() ? std::filesystem::path(args.scene_file).filename().string() : args.title;
@@ -105,13 +120,13 @@ int run_sweep(const SweepArguments& args) {
   sheet.column_labels = plan.column_labels;
   sheet.cells.assign(plan.rows, std::vector<const XyzImage*>(plan.columns, nullptr));
   for (const SweepCombination& combination : plan.combinations)
-    sheet.cells[combination.row][combination.column] = &images[combination.index];
+    sheet.cells[combination.row][combination.column] = &(*images)[combination.index];
   sheet.display.exposure_ev = fixed_exposure;
   // The cell PNGs use the sheet's exposure, so that they compare as the sheet does.
   const DisplayOptions display{contact_sheet_exposure_ev(sheet)};
   for (const SweepCombination& combination : plan.combinations)
     for (const std::string& extension : extensions)
-      write_image(images[combination.index], sweep_cell_path(sheet_path, plan, combination, extension), display);
+      write_image((*images)[combination.index], sweep_cell_path(sheet_path, plan, combination, extension), display);
   write_contact_sheet(sheet, sheet_path);
   return 0;
 }
@@ -128,7 +143,7 @@ CommandRunner add_sweep_command(CLI::App& app) {
   sweep
       ->add_option("-o,--output", args->sheet,
                    "The contact sheet, .png; each combination's image is written next to it as "
-                   "NAME_<n>_<values>.<format>")
+                   "NAME_<n>_<values>.<format>. Its folder is made when missing")
       ->required();
   sweep
       ->add_option("--vary", args->varies,
@@ -151,6 +166,12 @@ CommandRunner add_sweep_command(CLI::App& app) {
   sweep->add_option("--threads", args->threads, "Worker threads (0: all cores); the images do not depend on it")
       ->check(CLI::Range(0, 1024));
   sweep->add_flag("-q,--quiet", args->quiet, "No progress lines");
+  sweep->add_option("--shard", args->shard,
+                    "K/N: render only combinations K, K+N, K+2N, ... (counting from 1) and write each as the exact "
+                    "image NAME_<n>_<values>.xyz next to the sheet, for array jobs; then --merge (docs/cluster.md)");
+  sweep->add_flag("--merge", args->split.merge,
+                  "Render nothing: read every combination's .xyz written by the shards and write the cells and the "
+                  "sheet, the same bytes as one process");
   return [sweep, args] { return sweep->parsed() ? run_sweep(*args) : -1; };
 }
 

@@ -21,6 +21,8 @@ class Film {
   void add_point_source(int x, int y, const Irradiance& irradiance, double pixel_solid_angle_sr);
 
   const XyzImage& image() const { return image_; }
+  // The pixels themselves, for a split render's exchange of tiles (ImageShare).
+  XyzImage& pixels() { return image_; }
   XyzImage take() { return std::move(image_); }
 
  private:

@@ -18,7 +18,6 @@ namespace skylit {
 
 namespace {
 
-constexpr int kTileSize = 32;
 // Neighbouring pixel centres that differ by more than this fraction (in X, Y or Z) mark
 // an edge, where the pixel gets its full grid of samples.
 constexpr double kEdgeContrast = 0.05;
@@ -41,6 +40,16 @@ bool is_edge(const XyzImage& image, const PrimaryHits& hits, int x, int y) {
 }
 
 }  // namespace
+
+int image_tile_count(int width, int height) {
+  return ((width + kImageTileSize - 1) / kImageTileSize) * ((height + kImageTileSize - 1) / kImageTileSize);
+}
+
+ImageTile image_tile(int tile, int width, int height) {
+  const int tiles_x = (width + kImageTileSize - 1) / kImageTileSize;
+  const int x0 = (tile % tiles_x) * kImageTileSize, y0 = (tile / tiles_x) * kImageTileSize;
+  return {x0, y0, std::min(x0 + kImageTileSize, width), std::min(y0 + kImageTileSize, height)};
+}
 
 XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integrator, const RenderOptions& options) {
   const RenderSettings& settings = scene.scene().render;
@@ -87,18 +96,19 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
   // pixel's centre; then the full n × n grid only where an edge runs (is_edge).
   // Elsewhere the image is smooth at the pixel's scale and its centre stands for the
   // grid's mean.
-  const int tiles_x = (width + kTileSize - 1) / kTileSize, tiles_y = (height + kTileSize - 1) / kTileSize;
-  const int tile_count = tiles_x * tiles_y;
+  const int tile_count = image_tile_count(width, height);
   const int passes = n > 1 ? 2 : 1;
+  int own_tiles = 0;
+  for (int tile = 0; tile < tile_count; ++tile) own_tiles += options.share.renders(tile) ? 1 : 0;
   std::mutex progress_mutex;
   int tiles_done = 0;
   Film centres(width, height);
   std::optional<Film> refined;  // the second pass reads the first's film and writes here
   auto render_tile = [&](int tile, int pass) {
-    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-    const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x) {
+    if (!options.share.renders(tile)) return;
+    const ImageTile t = image_tile(tile, width, height);
+    for (int y = t.y0; y < t.y1; ++y)
+      for (int x = t.x0; x < t.x1; ++x) {
         if (pass == 0)
           centres.set(x, y, pixel_value(x, y, passes == 1 ? n : 1));
         else if (is_edge(centres.image(), *hits, x, y))
@@ -106,7 +116,7 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
       }
     if (options.on_progress) {
       std::lock_guard lock(progress_mutex);
-      options.on_progress(++tiles_done, passes * tile_count);
+      options.on_progress(++tiles_done, passes * own_tiles);
     }
   };
   for (int pass = 0; pass < passes; ++pass) {
@@ -116,6 +126,9 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
         for (int tile = range.begin(); tile != range.end(); ++tile) render_tile(tile, pass);
       });
     });
+    // The edges of the second pass look at neighbours across tiles: every process
+    // needs the whole first pass.
+    if (options.share.parts > 1) options.share.exchange((pass == 0 ? centres : *refined).pixels());
   }
   Film& film = refined ? *refined : centres;
   add_seen_lamps(scene, camera, film);

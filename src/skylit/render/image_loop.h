@@ -13,11 +13,32 @@
 
 namespace skylit {
 
+// The image is rendered in square tiles of this many pixels, numbered row by row; the
+// last column and row may be narrower.
+inline constexpr int kImageTileSize = 32;
+struct ImageTile {
+  int x0, y0, x1, y1;  // pixels x0 ≤ x < x1, y0 ≤ y < y1
+};
+int image_tile_count(int width, int height);
+ImageTile image_tile(int tile, int width, int height);
+
+// One image split over processes (MPI; apps/skylit/process_group.h): this process renders
+// the tiles whose number % parts == part. After each pass over the tiles `exchange`
+// gets the image with this process's tiles done and must fill in every other tile from
+// the process that rendered it, so that each process continues with the whole image.
+struct ImageShare {
+  int part = 0, parts = 1;
+  std::function<void(XyzImage& image)> exchange;
+
+  bool renders(int tile) const { return tile % parts == part; }
+};
+
 struct RenderOptions {
   int threads = 0;  // 0: as many as the machine has
   // Called now and then with the number of tiles done and the total; from any thread,
   // never concurrently.
   std::function<void(int done, int total)> on_progress;
+  ImageShare share{};  // the whole image by default
 };
 
 XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integrator, const RenderOptions& options);

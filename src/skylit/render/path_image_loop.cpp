@@ -16,7 +16,6 @@ namespace skylit {
 
 namespace {
 
-constexpr int kRowsPerTask = 4;
 // D65's white point in XYZ with Y = 1: a grey of the standard error's luminance.
 constexpr double kWhiteX = 0.95047, kWhiteZ = 1.08883;
 
@@ -29,15 +28,20 @@ PathImage render_path_image(const PreparedScene& scene, const PathIntegrator& in
   const ImageCamera camera(scene.scene().camera, width, height);
   Film film(width, height);
   XyzImage standard_error(width, height);
-  const int tasks = (height + kRowsPerTask - 1) / kRowsPerTask;
+  // The image loop's tiles (image_loop.h), so that a split render shares them alike.
+  const int tile_count = image_tile_count(width, height);
+  int own_tiles = 0;
+  for (int tile = 0; tile < tile_count; ++tile) own_tiles += options.share.renders(tile) ? 1 : 0;
   std::mutex progress_mutex;
   int done = 0;
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, tasks, 1), [&](const tbb::blocked_range<int>& range) {
-      for (int task = range.begin(); task != range.end(); ++task) {
-        for (int y = task * kRowsPerTask; y < std::min(height, (task + 1) * kRowsPerTask); ++y)
-          for (int x = 0; x < width; ++x) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
+      for (int tile = range.begin(); tile != range.end(); ++tile) {
+        if (!options.share.renders(tile)) continue;
+        const ImageTile t = image_tile(tile, width, height);
+        for (int y = t.y0; y < t.y1; ++y)
+          for (int x = t.x0; x < t.x1; ++x) {
             if (!camera.sees(x + 0.5, y + 0.5)) continue;  // outside a fisheye's circle: black
             Spectrum sum(0.0f);
             double y_sum = 0, y_squares = 0;
@@ -59,11 +63,15 @@ PathImage render_path_image(const PreparedScene& scene, const PathIntegrator& in
           }
         if (options.on_progress) {
           std::lock_guard lock(progress_mutex);
-          options.on_progress(++done, tasks);
+          options.on_progress(++done, own_tiles);
         }
       }
     });
   });
+  if (options.share.parts > 1) {
+    options.share.exchange(film.pixels());
+    options.share.exchange(standard_error);
+  }
   add_seen_lamps(scene, camera, film);
   return {film.take(), std::move(standard_error)};
 }

@@ -19,8 +19,8 @@
 #include "skylit/media/fog_settings.h"
 #include "skylit/scene/output_settings.h"
 #include "skylit/scene/road_lighting_settings.h"
-#include "skylit/sun/solar_position.h"
 #include "skylit/scene/weather_summary.h"
+#include "skylit/sun/solar_position.h"
 
 namespace skylit {
 
@@ -155,7 +155,8 @@ struct SceneLight {
 struct Scene {
   Camera camera;
   Sun sun;
-  // Where and when, when the scene places the sun from them (for reports, docs/report.md).
+  // Where and when, when the scene gives them or a city model or weather file does (for
+  // reports, docs/report.md; sun studies place the sun from the site).
   std::optional<SiteLocation> site;
   std::string time;  // as the scene wrote it (ISO 8601 with its offset); empty: none
   // The air; its site_elevation_m and earth_sun_distance_au come from `site` and `time`.

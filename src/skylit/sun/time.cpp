@@ -75,7 +75,8 @@ class Reader {
   size_t pos_ = 0;
 };
 
-// Days from 1970-01-01 to the given proleptic Gregorian date (negative before it).
+}  // namespace
+
 long long days_from_civil(long long year, int month, int day) {
   year -= month <= 2 ? 1 : 0;
   const long long era = (year >= 0 ? year : year - 399) / 400;
@@ -84,8 +85,6 @@ long long days_from_civil(long long year, int month, int day) {
   const long long day_of_era = year_of_era * 365 + year_of_era / 4 - year_of_era / 100 + day_of_year;
   return era * 146097 + day_of_era - 719468;
 }
-
-}  // namespace
 
 bool is_leap_year(int year) { return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0; }
 

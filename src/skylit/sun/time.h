@@ -32,6 +32,9 @@ OffsetDateTime parse_offset_date_time(std::string_view text, std::string_view wh
 // SpaOptions::delta_ut1_s for the difference, below one second).
 double julian_day_ut(const OffsetDateTime& time);
 
+// Days from 1970-01-01 to the given proleptic Gregorian date (negative before it).
+long long days_from_civil(long long year, int month, int day);
+
 bool is_leap_year(int year);             // proleptic Gregorian
 int days_in_month(int year, int month);  // month 1 to 12
 

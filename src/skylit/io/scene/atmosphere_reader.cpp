@@ -33,7 +33,10 @@ bool read_sun_and_atmosphere(const JsonReader& root, Scene& scene) {
   const auto time = root.optional("time");
   if (auto a = root.optional("atmosphere")) scene.atmosphere = read_atmosphere(*a);
 
-  if (site) scene.atmosphere.site_elevation_m = read_site(*site).elevation_m;
+  if (site) {
+    scene.site = read_site(*site);
+    scene.atmosphere.site_elevation_m = scene.site->elevation_m;
+  }
   if (sun && time) sun->fail("give either the sun's position or a site and a time, not both");
   if (!sun && !time) root.fail("missing 'sun' (altitude_deg, azimuth_deg), or 'site' and 'time'");
 
@@ -55,6 +58,7 @@ bool read_sun_and_atmosphere(const JsonReader& root, Scene& scene) {
 void place_sun(const JsonReader& root, const std::optional<SiteLocation>& site, Scene& scene) {
   const JsonReader time = root.required("time");
   if (!site) time.fail("a time needs a site (latitude_deg, longitude_deg) to place the sun");
+  scene.site = site;
   scene.atmosphere.site_elevation_m = site->elevation_m;
   const SolarPosition position =
       solar_position(*site, parse_offset_date_time(time.string(), time.source() + ": " + time.path()));
