@@ -81,10 +81,14 @@ inline CommandResult run_command(const std::string& command) {
   return result;
 }
 
-// Runs the built program with the given arguments (already shell-quoted).
-inline CommandResult run_skylit(const std::string& arguments) {
-  return run_command(std::string("'") + SKYLIT_CLI_PATH + "' " + arguments + " 2>&1");
+// Runs the built program with the given arguments (already shell-quoted); `environment`
+// (VAR=value ... or a launcher such as `mpirun -n 2`) goes before it.
+inline CommandResult run_skylit_with_env(const std::string& environment, const std::string& arguments) {
+  return run_command(environment + " '" + SKYLIT_CLI_PATH + "' " + arguments + " 2>&1");
 }
+
+// Runs the built program with the given arguments (already shell-quoted).
+inline CommandResult run_skylit(const std::string& arguments) { return run_skylit_with_env("", arguments); }
 
 // A small valid scene: a box on a plane under a high sun.
 inline std::string small_scene_json(int width = 48, int height = 32) {

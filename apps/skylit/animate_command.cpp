@@ -154,7 +154,7 @@ int run_animate(AnimateArguments& args) {
     for (const std::string& format : args.frame_formats)
       write_image((*images)[i], folder / frame_name(i + 1, frames.size(), "." + format), display);
   }
-  write_text(folder / "frames.csv", frames_csv(frames, png_names));
+  write_text(folder / "frames.csv", frames_csv(frames, png_names, *display.exposure_ev));
   const std::string title =
       args.title.empty() ? std::filesystem::path(args.scene_file).filename().string() : args.title;
   write_text(folder / "viewer.html", frame_viewer_html(title, labels, pngs, args.frames_per_second));

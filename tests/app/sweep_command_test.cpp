@@ -113,17 +113,29 @@ TEST(SweepCommand, MalformedArgumentsExitTwo) {
   EXPECT_EQ(files_in(dir.path()), (std::set<std::string>{"scene.json"}));
 }
 
-TEST(SweepCommand, BadSheetPathExitsTwo) {
+TEST(SweepCommand, BadSheetPathExitsTwoAndAMissingFolderIsMade) {
   TempDir dir;
   const auto scene = dir.write("scene.json", testing::small_scene_json(24, 16));
   const auto jpg =
       run_skylit("sweep " + quoted(scene) + " --vary sun.altitude_deg=4 -o " + quoted(dir.path() / "s.jpg"));
   EXPECT_EQ(jpg.exit_status, 2);
   EXPECT_NE(jpg.output.find("s.jpg"), std::string::npos) << jpg.output;
-  const auto folder =
-      run_skylit("sweep " + quoted(scene) + " --vary sun.altitude_deg=4 -o " + quoted(dir.path() / "no" / "s.png"));
-  EXPECT_EQ(folder.exit_status, 2);
-  EXPECT_NE(folder.output.find("does not exist"), std::string::npos) << folder.output;
+  // A file where the folder should be is refused; a missing folder is made (issue 20),
+  // but only once every combination has loaded.
+  dir.write("file", "");
+  const auto not_folder =
+      run_skylit("sweep " + quoted(scene) + " --vary sun.altitude_deg=4 -o " + quoted(dir.path() / "file" / "s.png"));
+  EXPECT_EQ(not_folder.exit_status, 2);
+  EXPECT_NE(not_folder.output.find("is not a folder"), std::string::npos) << not_folder.output;
+  EXPECT_EQ(
+      run_skylit("sweep " + quoted(scene) + " --vary sun.altitude_deg=4,95 -o " + quoted(dir.path() / "no" / "s.png"))
+          .exit_status,
+      2);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "no"));
+  const auto made = run_skylit("sweep " + quoted(scene) + " --vary sun.altitude_deg=4 -q -o " +
+                               quoted(dir.path() / "no" / "deeper" / "s.png"));
+  EXPECT_EQ(made.exit_status, 0) << made.output;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "no" / "deeper" / "s.png"));
 }
 
 TEST(SweepCommand, DifferingExposuresExitTwo) {

@@ -78,14 +78,17 @@ Raster labelled_frame(const XyzImage& image, const DisplayOptions& display, cons
   return raster;
 }
 
-std::string frames_csv(const std::vector<AnimationFrame>& frames, const std::vector<std::string>& files) {
+std::string frames_csv(const std::vector<AnimationFrame>& frames, const std::vector<std::string>& files,
+                       double exposure_ev) {
   if (frames.size() != files.size()) throw std::invalid_argument("frames_csv: one file per frame");
-  std::string out = "frame,file,date,time,utc_offset,sun_altitude_deg,sun_azimuth_deg\n";
+  char exposure[40];
+  std::snprintf(exposure, sizeof exposure, "%.17g", exposure_ev);
+  std::string out = "frame,file,date,time,utc_offset,sun_altitude_deg,sun_azimuth_deg,exposure_ev\n";
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const AnimationFrame& f = frames[i];
     out += std::to_string(f.number) + "," + files[i] + "," + format_date(f.time) + "," + format_clock(f.time) + "," +
            format_offset(f.time.utc_offset_minutes) + "," + fixed(f.sun_altitude_deg, 3) + "," +
-           fixed(f.sun_azimuth_deg, 3) + "\n";
+           fixed(f.sun_azimuth_deg, 3) + "," + exposure + "\n";
   }
   return out;
 }

@@ -27,8 +27,11 @@ std::string frame_label(const AnimationFrame& frame, std::size_t frame_count);
 // white on a dark band along its bottom edge; the size stays the image's.
 Raster labelled_frame(const XyzImage& image, const DisplayOptions& display, const std::string& label);
 
-// One row per frame: frame,file,date,time,utc_offset,sun_altitude_deg,sun_azimuth_deg.
-std::string frames_csv(const std::vector<AnimationFrame>& frames, const std::vector<std::string>& files);
+// One row per frame: frame,file,date,time,utc_offset,sun_altitude_deg,sun_azimuth_deg,
+// exposure_ev (the study's one exposure, to 17 digits, so that a frame can be remade
+// exactly with `skylit render --set render.exposure_ev=...`).
+std::string frames_csv(const std::vector<AnimationFrame>& frames, const std::vector<std::string>& files,
+                       double exposure_ev);
 
 // A standalone HTML page (no external files): the PNG frames embedded as data URIs, a
 // slider over them, play/pause, and each frame's label. `labels` and `pngs` have one

@@ -1,0 +1,150 @@
+// `skylit animate` as a user runs it: frames in time order with their labels, one
+// exposure for all (each frame remade alone at that exposure gives the same pixels),
+// the viewer holding every frame, the MP4 as ffprobe reads it, the statistics, and the
+// mistakes. Images are 32 × 24 at one sample per pixel; 13 renders in all.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <sstream>
+
+#include "../io/png_read_util.h"
+#include "../test_support.h"
+#include "skylit/figures/animation_frames.h"
+#include "skylit/figures/raster.h"
+
+namespace skylit {
+namespace {
+
+using testing::quoted;
+using testing::run_skylit;
+using testing::TempDir;
+
+// A small scene placed in Munich, its sun set by the time.
+std::string sited_scene(const std::string& time) {
+  return R"({
+  "camera": {"position": [0, -20, 2], "look_at": [0, 0, 3], "vertical_fov_deg": 60},
+  "site": {"latitude_deg": 48.14, "longitude_deg": 11.58},
+  "time": ")" +
+         time + R"(",
+  "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
+  "objects": [
+    {"name": "ground", "type": "plane", "material": "white", "size_m": 200},
+    {"name": "box", "type": "box", "material": "white", "center": [0, 0, 3], "size": [4, 4, 6]}
+  ],
+  "render": {"width": 32, "height": 24, "samples_per_axis": 1}
+})";
+}
+
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    rows.emplace_back();
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) rows.back().push_back(cell);
+  }
+  return rows;
+}
+
+TEST(AnimateCommand, FramesInOrderAtOneExposureWithViewerVideoAndStatistics) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", sited_scene("2026-06-21T12:00+02:00"));
+  const auto out = dir.path() / "new" / "study";  // made by the command
+  const auto r =
+      run_skylit("animate " + quoted(scene) +
+                 " --from 2026-06-21T07:00+02:00 --to 2026-06-21T19:00+02:00 --every 3h --stats -q -o " + quoted(out));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto rows = csv_rows(testing::read_file(out / "frames.csv"));
+  ASSERT_EQ(rows.size(), 6u);  // the header and 07:00, 10:00, ..., 19:00
+  EXPECT_EQ(rows[0][7], "exposure_ev");
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i][0], std::to_string(i));
+    EXPECT_EQ(rows[i][1], "frame_000" + std::to_string(i) + ".png");
+    EXPECT_EQ(rows[i][3], (i < 2 ? "0" : "") + std::to_string(4 + 3 * i) + ":00");
+    EXPECT_EQ(rows[i][7], rows[1][7]);  // one exposure
+    EXPECT_TRUE(std::filesystem::exists(out / rows[i][1]));
+  }
+  // The sun climbs to noon (13:20 local solar time here) and sinks: a check of the order.
+  EXPECT_LT(std::stod(rows[1][5]), std::stod(rows[3][5]));
+  EXPECT_GT(std::stod(rows[3][5]), std::stod(rows[5][5]));
+
+  // Frame 3 (13:00) remade alone at the study's exposure: the same pixels above the label.
+  const auto alone = dir.path() / "alone.png";
+  const auto again = dir.write("at13.json", sited_scene("2026-06-21T13:00+02:00"));
+  ASSERT_EQ(
+      run_skylit("render " + quoted(again) + " -q --set render.exposure_ev=" + rows[1][7] + " -o " + quoted(alone))
+          .exit_status,
+      0);
+  const Raster frame = test::read_png_raster(out / "frame_0003.png");
+  const Raster reference = test::read_png_raster(alone);
+  ASSERT_EQ(frame.width, 32);
+  ASSERT_EQ(frame.height, 24);
+  // The band is the font's line and a pixel above and below it (labelled_frame).
+  const std::size_t above_label = 3 * 32 * static_cast<std::size_t>(24 - text_height(1) - 2);
+  EXPECT_TRUE(std::equal(reference.rgb.begin(), reference.rgb.begin() + above_label, frame.rgb.begin()));
+  EXPECT_NE(frame.rgb, reference.rgb);  // the label is burnt in
+
+  const std::string html = testing::read_file(out / "viewer.html");
+  for (int i = 1; i <= 5; ++i) {
+    const std::string png = testing::read_file(out / ("frame_000" + std::to_string(i) + ".png"));
+    EXPECT_NE(html.find(base64({png.begin(), png.end()})), std::string::npos) << i;
+  }
+  EXPECT_NE(html.find("max=\"4\""), std::string::npos);
+
+  const auto stats = csv_rows(testing::read_file(out / "statistics.csv"));
+  std::size_t box_rows = 0;
+  for (const auto& row : stats) box_rows += row.size() > 6 && row[6] == "box" ? 1 : 0;
+  EXPECT_EQ(box_rows, 5u);
+  EXPECT_NE(testing::read_file(out / "statistics.svg").find("<svg"), std::string::npos);
+
+  if (std::system("ffprobe -version > /dev/null 2>&1") != 0) GTEST_SKIP() << "no ffprobe: the MP4 is not checked";
+  const std::filesystem::path probe = dir.path() / "probe.txt";
+  ASSERT_EQ(std::system(("ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+                         "stream=codec_name,pix_fmt,nb_read_frames -of csv=p=0 " +
+                         quoted(out / "animation.mp4") + " > " + quoted(probe))
+                            .c_str()),
+            0);
+  EXPECT_EQ(testing::read_file(probe), "h264,yuv420p,5\n");
+}
+
+TEST(AnimateCommand, DatesAtNoonAndNoFfmpegStillWritesTheFrames) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", sited_scene("2026-06-21T12:00+02:00"));
+  // Without ffmpeg on PATH (the program is run by its full path).
+  const auto r =
+      run_skylit("animate " + quoted(scene) + " --dates 03-21,12-21 --at 12:00 -q -o " + quoted(dir.path() / "d"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const std::string frames = testing::read_file(dir.path() / "d" / "frames.csv");
+  EXPECT_NE(frames.find(",2026-12-21,12:00,+01:00,"), std::string::npos) << frames;  // 11.58° E: the +01:00 meridian
+  const auto without = testing::run_skylit_with_env(
+      "PATH=/nonexistent", "animate " + quoted(scene) + " --dates 06-21 --at 12:00Z -q -o " + quoted(dir.path() / "n"));
+  ASSERT_EQ(without.exit_status, 0) << without.output;
+  EXPECT_NE(without.output.find("no ffmpeg"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "n" / "frame_0001.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "n" / "animation.mp4"));
+}
+
+TEST(AnimateCommand, MistakesExitTwoAndMakeNoFolder) {
+  TempDir dir;
+  const auto sited = dir.write("sited.json", sited_scene("2026-06-21T12:00+02:00"));
+  const auto unsited = dir.write("unsited.json", testing::small_scene_json(16, 12));
+  const std::pair<std::string, std::string> cases[] = {
+      {quoted(unsited) + " --dates 06-21 --at 12:00", "--site"},
+      {quoted(sited) + " --from 2026-06-21T12:00Z --to 2026-06-21T11:00Z", "comes before"},
+      {quoted(sited) + " --from 2026-06-21T12:00Z --to 2026-06-21T13:00Z --every 0s", "--every"},
+      {quoted(sited) + " --dates 06-31 --at 12:00", "--dates"},
+      {quoted(sited) + " --dates 06-21", "--at"},
+      {quoted(sited) + " --dates 06-21 --at 12:00 --shard 3/2", "--shard"},
+  };
+  for (const auto& [arguments, expected] : cases) {
+    const auto r = run_skylit("animate " + arguments + " -q -o " + quoted(dir.path() / "out"));
+    EXPECT_EQ(r.exit_status, 2) << arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out")) << arguments;
+  }
+}
+
+}  // namespace
+}  // namespace skylit
