@@ -39,6 +39,9 @@ heavy=(
   SkyLight.UnobstructedIrradianceMatchesADenseQuadratureOfTheSky
   SkyIrradiance.MatchesABruteForceIntegralOverTheSphere
   MultipleScattering.MonteCarloFirstOrderMatchesSingleScattering
+  # issue 20: some twenty small renders to compare merged shards with one process;
+  # the shards' file format (XyzFile) and the animation (AnimateCommand) run here.
+  SplitRuns.ShardsMergeIntoTheSameSweepAndAnimation
 )
 filter="-$(IFS=:; echo "${heavy[*]}")"
 
