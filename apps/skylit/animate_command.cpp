@@ -225,11 +225,7 @@ CommandRunner add_animate_command(CLI::App& app) {
   animate->add_option("--threads", args->threads, "Worker threads (0: all cores); the images do not depend on it")
       ->check(CLI::Range(0, 1024));
   animate->add_flag("-q,--quiet", args->quiet, "No progress lines");
-  animate->add_option("--shard", args->shard,
-                      "K/N: render only frames K, K+N, ... as exact frame_NNNN.xyz images, for array jobs; then "
-                      "--merge (docs/cluster.md)");
-  animate->add_flag("--merge", args->split.merge,
-                    "Render nothing: read every frame's .xyz written by the shards and write the outputs");
+  add_split_options(*animate, args->shard, args->split, "frames", "frame_NNNN.xyz in the folder");
   return [animate, args] { return animate->parsed() ? run_animate(*args) : -1; };
 }
 

@@ -32,6 +32,18 @@ Shard parse_shard(const std::string& text) {
   return {k - 1, n};
 }
 
+void add_split_options(CLI::App& command, std::string& shard, JobSplit& split, const std::string& items,
+                       const std::string& shard_files) {
+  command.add_option("--shard", shard,
+                     "K/N: render only " + items +
+                         " K, K+N, K+2N, ... (counting from 1) and write each as the exact "
+                         "image " +
+                         shard_files + ", for array jobs; then --merge (docs/cluster.md)");
+  command.add_flag("--merge", split.merge,
+                   "Render nothing: read every one of the " + items +
+                       " written by the shards and write the outputs, the same bytes as one process");
+}
+
 void check_split_options(const JobSplit& split) {
   if (split.shard && split.merge) throw InputError("--shard and --merge: give one (the merge reads every shard)");
 }

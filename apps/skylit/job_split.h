@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "skylit/spectrum/xyz_image.h"
 
 namespace skylit::cli {
@@ -40,7 +42,12 @@ std::optional<std::vector<XyzImage>> gather_job_images(
     std::size_t count, const JobSplit& split, const std::function<XyzImage(std::size_t)>& render,
     const std::function<std::filesystem::path(std::size_t)>& shard_file);
 
-// The shard options both commands take: --shard K/N and --merge.
+// --shard K/N (into `shard`, read by parse_shard) and --merge on `command`, whose
+// images are `items` ("combinations", "frames") written by a shard as `shard_files`.
+void add_split_options(CLI::App& command, std::string& shard, JobSplit& split, const std::string& items,
+                       const std::string& shard_files);
+
+// InputError if both --shard and --merge are given.
 void check_split_options(const JobSplit& split);
 
 }  // namespace skylit::cli

@@ -166,12 +166,7 @@ CommandRunner add_sweep_command(CLI::App& app) {
   sweep->add_option("--threads", args->threads, "Worker threads (0: all cores); the images do not depend on it")
       ->check(CLI::Range(0, 1024));
   sweep->add_flag("-q,--quiet", args->quiet, "No progress lines");
-  sweep->add_option("--shard", args->shard,
-                    "K/N: render only combinations K, K+N, K+2N, ... (counting from 1) and write each as the exact "
-                    "image NAME_<n>_<values>.xyz next to the sheet, for array jobs; then --merge (docs/cluster.md)");
-  sweep->add_flag("--merge", args->split.merge,
-                  "Render nothing: read every combination's .xyz written by the shards and write the cells and the "
-                  "sheet, the same bytes as one process");
+  add_split_options(*sweep, args->shard, args->split, "combinations", "NAME_<n>_<values>.xyz next to the sheet");
   return [sweep, args] { return sweep->parsed() ? run_sweep(*args) : -1; };
 }
 

@@ -5,35 +5,12 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "skylit/figures/utf8.h"
 #include "skylit/sun/time_steps.h"
 
 namespace skylit {
 
 namespace {
-
-// Text for HTML element content and attribute values.
-std::string escaped_html(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 // A JSON string literal, safe inside a <script> element ("</" cannot close it).
 std::string script_string(const std::string& text) {
@@ -120,11 +97,11 @@ std::string frame_viewer_html(const std::string& title, const std::vector<std::s
               (i + 1 < pngs.size() ? ",\n" : "\n");
   frames += "]";
   const std::string last = std::to_string(pngs.size() - 1);
-  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escaped_html(title) +
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + xml_text(title) +
          "</title>\n<style>\nbody{font-family:sans-serif;margin:1em;background:#222;color:#eee}\n"
          "img{max-width:100%;display:block}\n#controls{display:flex;gap:1em;align-items:center;margin:.5em 0}\n"
          "#slider{flex:1}\n</style>\n</head>\n<body>\n<h1>" +
-         escaped_html(title) +
+         xml_text(title) +
          "</h1>\n<img id=\"frame\" alt=\"frame\">\n<div id=\"controls\">\n"
          "<button id=\"play\" type=\"button\">play</button>\n"
          "<input id=\"slider\" type=\"range\" min=\"0\" max=\"" +

@@ -1,4 +1,4 @@
-// Strict UTF-8 decoding (utf8.h).
+// Strict UTF-8 decoding, and text escaped for XML and HTML (utf8.h).
 #include "skylit/figures/utf8.h"
 
 #include <string>

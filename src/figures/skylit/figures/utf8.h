@@ -16,9 +16,9 @@ inline constexpr char32_t kMalformedUtf8 = 0xFFFFFFFF;
 // sequence kMalformedUtf8, advancing by one byte. `at` must be < text.size().
 char32_t decode_utf8(std::string_view text, std::size_t& at);
 
-// Text as XML character data or attribute value: the five special characters escaped,
-// malformed UTF-8 replaced by U+FFFD and control characters (not allowed in XML 1.0)
-// dropped, so any label gives a well-formed file.
+// Text as XML (SVG) or HTML character data or attribute value: the five special
+// characters escaped, malformed UTF-8 replaced by U+FFFD and control characters (not
+// allowed in XML 1.0) dropped, so any label gives a well-formed file.
 std::string xml_text(std::string_view s);
 
 }  // namespace skylit
