@@ -1,0 +1,41 @@
+// Reading CityGML 2.0 and 1.0 files (OGC 12-019, 08-007r1), including Japan's PLATEAU
+// files with their i-UR extension (uro: elements are skipped; the city objects are
+// plain CityGML): buildings and their parts (LoD0–LoD4, solids and boundary surfaces
+// with their semantics, openings), roads, railways, squares, land use, vegetation,
+// water bodies, TIN relief (dem:TINRelief triangles), generic city objects, bridges,
+// tunnels and city furniture; X3D materials and parameterized textures by name.
+//
+// For each object the most detailed level of detail it has is kept. Surfaces that a
+// solid references by xlink:href and a boundary surface defines (PLATEAU's lod2Solid)
+// are taken once, with the boundary surface's semantic class. Not read: implicit
+// geometries (coordinates relative to a reference point), interior features (rooms,
+// furniture), gml:Tin control points, appearance targets that are not polygons.
+//
+// Coordinates stay in the file's CRS and axis order. For EPSG:6697 (PLATEAU: JGD2011
+// geographic + JGD2011 vertical height) that is latitude, longitude, height — the
+// order the EPSG registry and PROJ define for it — with the height above the geoid
+// (Tokyo Bay mean sea level, not the ellipsoid); the placement keeps it as the height
+// above the local frame's origin.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "skylit/io/city/city_model.h"
+
+namespace skylit {
+
+// Reads the file as it streams in (a tile of millions of triangles is never held as
+// text). Throws InputError "<file>:<line>: <what>" for a file that is missing, not
+// well-formed XML (truncated, ...), not a CityGML CityModel, names a CRS this reader
+// cannot turn into an EPSG code or two different CRSs, has a ring with fewer than
+// three points, a polygon without an exterior ring, a coordinate that is not a finite
+// number, a coordinate list whose length is not a multiple of its dimension, or a
+// reference (xlink:href="#id") to a surface that is not in the file.
+CityModel read_citygml_file(const std::filesystem::path& file);
+
+// The same from text in memory; `name` stands for the file in messages.
+CityModel parse_citygml(std::string_view text, const std::string& name);
+
+}  // namespace skylit

@@ -1,0 +1,258 @@
+// The CityGML reader: the PLATEAU sample (real data nobody on the project wrote), and
+// small files written here for what the sample lacks (holes, TIN relief, X3D
+// materials, GML 2 coordinates, CityGML 1.0) and for each malformed input.
+#include "skylit/io/city/citygml_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "../test_support.h"
+#include "skylit/geometry/polygon_triangulation.h"
+#include "skylit/io/city/citygml_names.h"
+
+namespace skylit {
+namespace {
+
+using skylit::testing::input_error_of;
+using skylit::testing::TempDir;
+
+const std::filesystem::path kPlateau = std::filesystem::path(SKYLIT_SOURCE_DIR) / ".." / "shared" / "data" / "models" /
+                                       "plateau_53392642_bldg_6697_op2.gml";
+
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// How many gml:Polygon elements lie inside elements named `tag`, counted on the text
+// (independently of the reader).
+size_t polygons_inside(const std::string& text, const std::string& tag) {
+  size_t count = 0;
+  for (size_t at = text.find("<" + tag); at != std::string::npos; at = text.find("<" + tag, at + 1)) {
+    const size_t end = text.find("</" + tag + ">", at);
+    for (size_t p = text.find("<gml:Polygon", at); p < end; p = text.find("<gml:Polygon", p + 1)) ++count;
+  }
+  return count;
+}
+
+TEST(CityGmlReader, PlateauSampleHasEveryBuildingWithItsSemantics) {
+  if (!std::filesystem::exists(kPlateau)) GTEST_SKIP() << "the shared PLATEAU sample is not here: " << kPlateau;
+  const CityModel model = read_citygml_file(kPlateau);
+  EXPECT_EQ(model.crs, "EPSG:6697");
+  ASSERT_EQ(model.objects.size(), 8u);
+  std::map<std::string, size_t> semantic_count;
+  size_t textured = 0;
+  for (const CityObject& o : model.objects) {
+    EXPECT_EQ(o.type, "Building");
+    EXPECT_EQ(o.id.substr(0, 4), "BLD_");
+    EXPECT_EQ(o.lod, 20) << o.id;  // LoD2 boundary surfaces, not the LoD1 solid or the LoD0 roof edge
+    std::map<std::string, size_t> mine;
+    for (const CitySurface& s : o.surfaces) {
+      ++mine[s.semantic];
+      textured += s.appearance_material.has_value();
+    }
+    EXPECT_GT(mine["RoofSurface"], 0u) << o.id;
+    EXPECT_GT(mine["WallSurface"], 0u) << o.id;
+    EXPECT_GT(mine["GroundSurface"], 0u) << o.id;
+    EXPECT_EQ(mine[""], 0u) << o.id << ": the lod2Solid's references are the boundary surfaces' polygons";
+    for (const auto& [k, n] : mine) semantic_count[k] += n;
+  }
+  // Each boundary surface's polygons once (the lod2Solid references them again).
+  const std::string text = file_text(kPlateau);
+  for (const std::string k : {"RoofSurface", "WallSurface", "GroundSurface", "OuterCeilingSurface"})
+    EXPECT_EQ(semantic_count[k], polygons_inside(text, "bldg:" + k)) << k;
+  EXPECT_GT(textured, 0u);  // the ParameterizedTextures' targets
+}
+
+TEST(CityGmlReader, PlateauCoordinatesAreTheFilesLatitudeLongitudeHeight) {
+  if (!std::filesystem::exists(kPlateau)) GTEST_SKIP() << "the shared PLATEAU sample is not here: " << kPlateau;
+  const CityModel model = read_citygml_file(kPlateau);
+  // The first building's ground surface, read from the text by hand.
+  const std::string text = file_text(kPlateau);
+  const size_t ground = text.find("<bldg:GroundSurface");
+  const size_t list = text.find("<gml:posList>", ground) + std::string("<gml:posList>").size();
+  std::istringstream numbers(text.substr(list, text.find("</gml:posList>", list) - list));
+  double lat = 0, lon = 0, h = 0;
+  std::vector<Vec3> expected;
+  while (numbers >> lat >> lon >> h) expected.emplace_back(lat, lon, h);
+  expected.pop_back();  // the closing point
+  const CitySurface* first_ground = nullptr;
+  for (const CitySurface& s : model.objects[0].surfaces)
+    if (s.semantic == "GroundSurface" && first_ground == nullptr) first_ground = &s;
+  ASSERT_NE(first_ground, nullptr);
+  ASSERT_EQ(first_ground->rings.size(), 1u);
+  ASSERT_EQ(first_ground->rings[0].size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) {
+    // Both sides parse the same decimal text to the nearest double; 1e-9° is ~0.1 mm.
+    EXPECT_NEAR(first_ground->rings[0][i].x, expected[i].x, 1e-9);
+    EXPECT_NEAR(first_ground->rings[0][i].y, expected[i].y, 1e-9);
+    EXPECT_NEAR(first_ground->rings[0][i].z, expected[i].z, 1e-9);
+  }
+  // Latitude first (EPSG:6697's axis order): Ota ward, Tokyo.
+  EXPECT_NEAR(expected[0].x, 35.54, 0.01);
+  EXPECT_NEAR(expected[0].y, 139.777, 0.01);
+}
+
+// A CityGML 2.0 file around the given members (EPSG:25832 via a URN).
+std::string city_model(const std::string& members) {
+  return R"(<?xml version="1.0" encoding="UTF-8"?>
+<core:CityModel xmlns:core="http://www.opengis.net/citygml/2.0" xmlns:gml="http://www.opengis.net/gml"
+ xmlns:bldg="http://www.opengis.net/citygml/building/2.0" xmlns:dem="http://www.opengis.net/citygml/relief/2.0"
+ xmlns:tran="http://www.opengis.net/citygml/transportation/2.0" xmlns:app="http://www.opengis.net/citygml/appearance/2.0"
+ xmlns:xlink="http://www.w3.org/1999/xlink">
+<gml:boundedBy><gml:Envelope srsName="urn:ogc:def:crs:EPSG::25832" srsDimension="3">
+<gml:lowerCorner>0 0 0</gml:lowerCorner><gml:upperCorner>10 10 10</gml:upperCorner></gml:Envelope></gml:boundedBy>
+)" + members +
+         "\n</core:CityModel>\n";
+}
+
+// A 10 m × 8 m flat roof at 6 m with a 2 m × 3 m hole (a light well), an X3D
+// material on it.
+const std::string kHoledRoof = R"(<core:cityObjectMember><bldg:Building gml:id="b1">
+<bldg:boundedBy><bldg:RoofSurface gml:id="r1"><bldg:lod2MultiSurface><gml:MultiSurface>
+<gml:surfaceMember><gml:Polygon gml:id="roof">
+<gml:exterior><gml:LinearRing><gml:posList>0 0 6 10 0 6 10 8 6 0 8 6 0 0 6</gml:posList></gml:LinearRing></gml:exterior>
+<gml:interior><gml:LinearRing><gml:pos>4 2 6</gml:pos><gml:pos>4 5 6</gml:pos><gml:pos>6 5 6</gml:pos><gml:pos>6 2 6</gml:pos><gml:pos>4 2 6</gml:pos></gml:LinearRing></gml:interior>
+</gml:Polygon></gml:surfaceMember></gml:MultiSurface></bldg:lod2MultiSurface></bldg:RoofSurface></bldg:boundedBy>
+</bldg:Building></core:cityObjectMember>
+<app:appearanceMember><app:Appearance><app:surfaceDataMember><app:X3DMaterial gml:id="red_tiles">
+<app:diffuseColor>0.6 0.2 0.1</app:diffuseColor><app:target>#roof</app:target></app:X3DMaterial>
+</app:surfaceDataMember></app:Appearance></app:appearanceMember>)";
+
+double triangulated_area(const CitySurface& s) {
+  double area = 0;
+  std::vector<Vec3> points;
+  for (const auto& ring : s.rings) points.insert(points.end(), ring.begin(), ring.end());
+  for (const auto& t : triangulate_polygon_3d(s.rings)) {
+    const Vec3 a = points[t[0]], b = points[t[1]], c = points[t[2]];
+    const Vec3 u = b - a, v = c - a;
+    area += 0.5 * std::sqrt(std::pow(u.y * v.z - u.z * v.y, 2) + std::pow(u.z * v.x - u.x * v.z, 2) +
+                            std::pow(u.x * v.y - u.y * v.x, 2));
+  }
+  return area;
+}
+
+TEST(CityGmlReader, PolygonWithAHoleKeepsItsRingsAndMaterial) {
+  const CityModel model = parse_citygml(city_model(kHoledRoof), "roof.gml");
+  EXPECT_EQ(model.crs, "EPSG:25832");
+  ASSERT_EQ(model.objects.size(), 1u);
+  ASSERT_EQ(model.objects[0].surfaces.size(), 1u);
+  const CitySurface& roof = model.objects[0].surfaces[0];
+  EXPECT_EQ(roof.semantic, "RoofSurface");
+  ASSERT_EQ(roof.rings.size(), 2u);
+  EXPECT_EQ(roof.rings[0].size(), 4u);  // the closing point dropped
+  EXPECT_EQ(roof.rings[1].size(), 4u);
+  EXPECT_EQ(roof.appearance_material, "red_tiles");
+  // Triangulated, the roof covers 80 − 6 = 74 m² (exact up to rounding: the corners
+  // are integers).
+  EXPECT_NEAR(triangulated_area(roof), 74.0, 1e-9);
+}
+
+TEST(CityGmlReader, TinReliefTrianglesAndRoadsAreRead) {
+  const std::string members = R"(<core:cityObjectMember><dem:ReliefFeature gml:id="relief"><dem:lod>1</dem:lod>
+<dem:reliefComponent><dem:TINRelief gml:id="tin"><dem:lod>2</dem:lod><dem:tin><gml:TriangulatedSurface gml:id="ts">
+<gml:trianglePatches>
+<gml:Triangle><gml:exterior><gml:LinearRing><gml:posList>0 0 1 10 0 2 0 10 3 0 0 1</gml:posList></gml:LinearRing></gml:exterior></gml:Triangle>
+<gml:Triangle><gml:exterior><gml:LinearRing><gml:coordinates>10,0,2 10,10,4 0,10,3 10,0,2</gml:coordinates></gml:LinearRing></gml:exterior></gml:Triangle>
+</gml:trianglePatches></gml:TriangulatedSurface></dem:tin></dem:TINRelief></dem:reliefComponent></dem:ReliefFeature></core:cityObjectMember>
+<core:cityObjectMember><tran:Road gml:id="road"><tran:lod1MultiSurface><gml:MultiSurface><gml:surfaceMember><gml:Polygon>
+<gml:exterior><gml:LinearRing><gml:posList srsDimension="2">0 0 5 0 5 1 0 1</gml:posList></gml:LinearRing></gml:exterior>
+</gml:Polygon></gml:surfaceMember></gml:MultiSurface></tran:lod1MultiSurface></tran:Road></core:cityObjectMember>)";
+  const CityModel model = parse_citygml(city_model(members), "tin.gml");
+  ASSERT_EQ(model.objects.size(), 2u);
+  EXPECT_EQ(model.objects[0].type, "TINRelief");
+  EXPECT_EQ(model.objects[0].lod, 20);
+  ASSERT_EQ(model.objects[0].surfaces.size(), 2u);
+  EXPECT_EQ(model.objects[0].surfaces[1].rings[0][1].z, 4.0);
+  EXPECT_EQ(model.objects[1].type, "Road");
+  EXPECT_EQ(model.objects[1].lod, 10);
+  ASSERT_EQ(model.objects[1].surfaces.size(), 1u);
+  EXPECT_EQ(model.objects[1].surfaces[0].rings[0].size(), 4u);
+  EXPECT_EQ(model.objects[1].surfaces[0].rings[0][2].y, 1.0);
+}
+
+TEST(CityGmlReader, BuildingPartsAreObjectsOfTheirOwnAndReferencesResolve) {
+  // CityGML 1.0; the LoD1 solid of the building, and a part whose LoD2 solid refers
+  // forward to its wall; a LoD1 surface of the part is left out (LoD2 is kept).
+  const std::string text =
+      R"(<core:CityModel xmlns:core="http://www.opengis.net/citygml/1.0" xmlns:gml="http://www.opengis.net/gml"
+ xmlns:bldg="http://www.opengis.net/citygml/building/1.0" xmlns:xlink="http://www.w3.org/1999/xlink">
+<core:cityObjectMember><bldg:Building gml:id="b"><bldg:lod1Solid><gml:Solid srsName="EPSG:31256"><gml:exterior><gml:CompositeSurface>
+<gml:surfaceMember><gml:Polygon><gml:exterior><gml:LinearRing><gml:posList>0 0 0 1 0 0 1 1 0</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon></gml:surfaceMember>
+</gml:CompositeSurface></gml:exterior></gml:Solid></bldg:lod1Solid>
+<bldg:consistsOfBuildingPart><bldg:BuildingPart gml:id="p">
+<bldg:lod1MultiSurface><gml:MultiSurface><gml:surfaceMember><gml:Polygon><gml:exterior><gml:LinearRing><gml:posList>0 0 0 2 0 0 2 2 0</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon></gml:surfaceMember></gml:MultiSurface></bldg:lod1MultiSurface>
+<bldg:lod2Solid><gml:Solid><gml:exterior><gml:CompositeSurface><gml:surfaceMember xlink:href="#w"/></gml:CompositeSurface></gml:exterior></gml:Solid></bldg:lod2Solid>
+<bldg:boundedBy><bldg:WallSurface><bldg:lod2MultiSurface><gml:MultiSurface><gml:surfaceMember><gml:Polygon gml:id="w"><gml:exterior><gml:LinearRing><gml:posList>0 0 0 3 0 0 3 0 3 0 0 3</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon></gml:surfaceMember></gml:MultiSurface></bldg:lod2MultiSurface></bldg:WallSurface></bldg:boundedBy>
+</bldg:BuildingPart></bldg:consistsOfBuildingPart></bldg:Building></core:cityObjectMember></core:CityModel>)";
+  const CityModel model = parse_citygml(text, "parts.gml");
+  EXPECT_EQ(model.crs, "EPSG:31256");
+  ASSERT_EQ(model.objects.size(), 2u);
+  // The part ends first.
+  EXPECT_EQ(model.objects[0].id, "p");
+  EXPECT_EQ(model.objects[0].type, "BuildingPart");
+  EXPECT_EQ(model.objects[0].lod, 20);
+  ASSERT_EQ(model.objects[0].surfaces.size(), 1u);
+  EXPECT_EQ(model.objects[0].surfaces[0].semantic, "WallSurface");
+  EXPECT_EQ(model.objects[0].surfaces[0].rings[0][1].x, 3.0);
+  EXPECT_EQ(model.objects[1].id, "b");
+  EXPECT_EQ(model.objects[1].lod, 10);
+  ASSERT_EQ(model.objects[1].surfaces.size(), 1u);
+  EXPECT_EQ(model.objects[1].surfaces[0].rings[0][1].x, 1.0);
+}
+
+TEST(CityGmlReader, SrsNamesInTheirCommonForms) {
+  EXPECT_EQ(citygml::epsg_from_srs_name("http://www.opengis.net/def/crs/EPSG/0/6697"), "EPSG:6697");
+  EXPECT_EQ(citygml::epsg_from_srs_name("https://www.opengis.net/def/crs/EPSG/0/7415"), "EPSG:7415");
+  EXPECT_EQ(citygml::epsg_from_srs_name("urn:ogc:def:crs:EPSG:6.12:2056"), "EPSG:2056");
+  EXPECT_EQ(citygml::epsg_from_srs_name("urn:ogc:def:crs,crs:EPSG::28992,crs:EPSG::5709"), "EPSG:28992+5709");
+  EXPECT_EQ(citygml::epsg_from_srs_name("http://www.opengis.net/gml/srs/epsg.xml#4326"), "EPSG:4326");
+  EXPECT_EQ(citygml::epsg_from_srs_name("EPSG:6677"), "EPSG:6677");
+  EXPECT_FALSE(citygml::epsg_from_srs_name("Local"));
+  EXPECT_FALSE(citygml::epsg_from_srs_name("EPSG:abc"));
+  EXPECT_FALSE(citygml::epsg_from_srs_name("http://www.opengis.net/def/crs/EPSG/0/"));
+}
+
+// Each malformed input gives one InputError naming the file and the line.
+TEST(CityGmlReader, MalformedFilesNameTheFileAndLine) {
+  const std::string good = city_model(kHoledRoof);
+  // Truncated in the middle of the roof.
+  EXPECT_EQ(
+      input_error_of([&] { parse_citygml(good.substr(0, good.find("<gml:interior>") + 20), "t.gml"); }).substr(0, 6),
+      "t.gml:");
+  const auto message_for = [&](const std::string& from, const std::string& to) {
+    std::string bad = good;
+    bad.replace(bad.find(from), from.size(), to);
+    return input_error_of([&] { parse_citygml(bad, "bad.gml"); });
+  };
+  EXPECT_EQ(message_for("urn:ogc:def:crs:EPSG::25832", "Local"),
+            "bad.gml:6: srsName 'Local' is not a coordinate reference system this reader knows (EPSG:n, "
+            "urn:ogc:def:crs:EPSG::n, http://www.opengis.net/def/crs/EPSG/0/n)");
+  EXPECT_EQ(message_for("0 0 6 10 0 6 10 8 6 0 8 6 0 0 6", "0 0 6 10 0 6 0 0 6"),
+            "bad.gml:11: a ring (gml:LinearRing) with 2 distinct points; a polygon's ring needs at least three");
+  EXPECT_EQ(message_for("10 8 6 0 8 6", "10 8 6 0 8x 6"),
+            "bad.gml:11: expected a coordinate (a finite number), found '8x'");
+  EXPECT_EQ(message_for("10 8 6 0 8 6", "10 8 6 0 nan 6"),
+            "bad.gml:11: expected a coordinate (a finite number), found 'nan'");
+  EXPECT_EQ(message_for("10 8 6 0 8 6", "10 8 6 0 8"), "bad.gml:11: 14 coordinates are not points of dimension 3");
+  EXPECT_EQ(message_for("<gml:pos>4 5 6</gml:pos>", "<gml:pos>4 5 6 7</gml:pos>"),
+            "bad.gml:12: a gml:pos has 4 coordinates, not 2 or 3");
+  EXPECT_EQ(message_for("core:CityModel xmlns", "core:CityMode xmlns").substr(0, 10), "bad.gml:2:");
+  const std::string dangling = R"(<core:cityObjectMember><bldg:Building><bldg:lod2Solid><gml:Solid><gml:exterior>
+<gml:CompositeSurface><gml:surfaceMember xlink:href="#nowhere"/></gml:CompositeSurface></gml:exterior></gml:Solid></bldg:lod2Solid>
+</bldg:Building></core:cityObjectMember>)";
+  EXPECT_EQ(input_error_of([&] { parse_citygml(city_model(dangling), "d.gml"); }),
+            "d.gml:9: xlink:href '#nowhere' names no surface in the file");
+  EXPECT_EQ(input_error_of([&] { read_citygml_file("/nonexistent/x.gml"); }).substr(0, 18), "/nonexistent/x.gml");
+}
+
+}  // namespace
+}  // namespace skylit
