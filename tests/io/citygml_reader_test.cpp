@@ -209,6 +209,23 @@ TEST(CityGmlReader, BuildingPartsAreObjectsOfTheirOwnAndReferencesResolve) {
   EXPECT_EQ(model.objects[1].surfaces[0].rings[0][1].x, 1.0);
 }
 
+// The example scripts/make-citygml-example.py writes: a 6 × 6 cell TIN, four
+// buildings (one with a courtyard: holes in its roof and ground) and a road.
+TEST(CityGmlReader, ExampleCityBlockLoads) {
+  const CityModel model =
+      read_citygml_file(std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" / "models" / "city_block.gml");
+  EXPECT_EQ(model.crs, "EPSG:6697");
+  std::map<std::string, size_t> types;
+  for (const CityObject& o : model.objects) ++types[o.type];
+  EXPECT_EQ(types, (std::map<std::string, size_t>{{"Building", 4}, {"Road", 1}, {"TINRelief", 1}}));
+  EXPECT_EQ(model.objects[0].surfaces.size(), 72u);  // 6 × 6 cells, two triangles each
+  const CityObject& block = model.objects[4];
+  EXPECT_EQ(block.id, "block");
+  EXPECT_EQ(block.surfaces[0].semantic, "RoofSurface");
+  EXPECT_EQ(block.surfaces[0].rings.size(), 2u);
+  EXPECT_EQ(model.objects[1].surfaces[5].appearance_material, "red_tiles");
+}
+
 TEST(CityGmlReader, SrsNamesInTheirCommonForms) {
   EXPECT_EQ(citygml::epsg_from_srs_name("http://www.opengis.net/def/crs/EPSG/0/6697"), "EPSG:6697");
   EXPECT_EQ(citygml::epsg_from_srs_name("https://www.opengis.net/def/crs/EPSG/0/7415"), "EPSG:7415");
