@@ -17,7 +17,7 @@ packages=(
   # Optional at build time, used when present (issue 20): Open MPI for mpirun runs
   # (docs/cluster.md), ffmpeg for skylit animate's MP4 (x264) and the tests' ffprobe.
   libopenmpi-dev openmpi-bin ffmpeg
-  libexpat1-dev
+  libexpat1-dev libgdal-dev  # CityGML is read with expat; DEMs (terrain) with GDAL
 )
 if [ "${1:-}" = "--clang" ]; then
   packages+=(clang-14 libclang-rt-14-dev clang-format clang-tidy)

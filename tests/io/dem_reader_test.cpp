@@ -1,0 +1,106 @@
+// DEM terrain: GeoTIFFs written here by GDAL (a projected one with a no-data corner, a
+// geographic one for the axis order), read back as a TIN relief.
+#include "skylit/io/city/dem_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include "../test_support.h"
+
+namespace skylit {
+namespace {
+
+using skylit::testing::input_error_of;
+using skylit::testing::TempDir;
+
+// Writes an nx × ny GeoTIFF with heights h(i, j), the geotransform and the EPSG code
+// given (0: no CRS), and -9999 as its no-data value.
+void write_dem(const std::filesystem::path& file, int nx, int ny, const double gt[6], int epsg, double (*h)(int, int)) {
+  GDALAllRegister();
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+  ASSERT_NE(driver, nullptr);
+  GDALDataset* ds = driver->Create(file.c_str(), nx, ny, 1, GDT_Float32, nullptr);
+  ASSERT_NE(ds, nullptr);
+  double transform[6];
+  std::copy(gt, gt + 6, transform);
+  ds->SetGeoTransform(transform);
+  if (epsg != 0) {
+    OGRSpatialReference srs;
+    srs.importFromEPSG(epsg);
+    ds->SetSpatialRef(&srs);
+  }
+  std::vector<float> values(static_cast<size_t>(nx * ny));
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) values[static_cast<size_t>(j * nx + i)] = static_cast<float>(h(i, j));
+  GDALRasterBand* band = ds->GetRasterBand(1);
+  band->SetNoDataValue(-9999);
+  ASSERT_EQ(band->RasterIO(GF_Write, 0, 0, nx, ny, values.data(), nx, ny, GDT_Float32, 0, 0), CE_None);
+  GDALClose(ds);
+}
+
+double sloped(int i, int j) { return (i == 3 && j == 2) ? -9999 : 10 + i + 2 * j; }
+
+TEST(DemReader, ProjectedDemBecomesATinOfCellCentres) {
+  TempDir dir;
+  const auto file = dir.path() / "dem.tif";
+  // UTM 54N, 10 m cells, north up (rows run south).
+  const double gt[6] = {380000, 10, 0, 3940000, 0, -10};
+  write_dem(file, 4, 3, gt, 32654, sloped);
+  const CityModel model = read_dem_terrain(file);
+  EXPECT_EQ(model.crs, "EPSG:32654");
+  ASSERT_EQ(model.objects.size(), 1u);
+  EXPECT_EQ(model.objects[0].type, "TINRelief");
+  // 3 × 2 cells, less the one whose corner (3, 2) has no height: 5 cells, 10 triangles.
+  ASSERT_EQ(model.objects[0].surfaces.size(), 10u);
+  for (const CitySurface& s : model.objects[0].surfaces) {
+    ASSERT_EQ(s.rings.size(), 1u);
+    ASSERT_EQ(s.rings[0].size(), 3u);
+    for (const Vec3& p : s.rings[0]) {
+      // Easting first (EPSG:32654's order); back to the cell's indices.
+      const double i = (p.x - 380000) / 10 - 0.5, j = (3940000 - p.y) / 10 - 0.5;
+      EXPECT_NEAR(i, std::round(i), 1e-9);
+      EXPECT_NEAR(j, std::round(j), 1e-9);
+      EXPECT_DOUBLE_EQ(p.z, sloped(static_cast<int>(std::lround(i)), static_cast<int>(std::lround(j))));
+    }
+    const Vec3 &a = s.rings[0][0], &b = s.rings[0][1], &c = s.rings[0][2];
+    EXPECT_NEAR((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x), 100.0, 1e-6);  // counter-clockwise, 50 m²
+  }
+}
+
+double flat(int, int) { return 4.0; }
+
+TEST(DemReader, GeographicDemIsInLatitudeLongitudeOrder) {
+  TempDir dir;
+  const auto file = dir.path() / "dem.tif";
+  // JGD2011 (EPSG:6668), GDAL's geotransform in longitude, latitude.
+  const double gt[6] = {139.7, 0.001, 0, 35.6, 0, -0.001};
+  write_dem(file, 2, 2, gt, 6668, flat);
+  const CityModel model = read_dem_terrain(file);
+  EXPECT_EQ(model.crs, "EPSG:6668");
+  ASSERT_EQ(model.objects[0].surfaces.size(), 2u);
+  const Vec3& p = model.objects[0].surfaces[0].rings[0][0];
+  EXPECT_NEAR(p.x, 35.5995, 1e-9);  // latitude of the first row's centres
+  EXPECT_NEAR(p.y, 139.7005, 1e-9);
+}
+
+TEST(DemReader, UnreadableOrUngeoreferencedFilesAreNamed) {
+  TempDir dir;
+  const auto text = dir.write("dem.tif", "not a raster\n");
+  EXPECT_EQ(input_error_of([&] { read_dem_terrain(text); }).rfind(text.string() + ": cannot read the terrain DEM", 0),
+            0u);
+  const auto no_crs = dir.path() / "nocrs.tif";
+  const double gt[6] = {0, 1, 0, 0, 0, -1};
+  write_dem(no_crs, 2, 2, gt, 0, flat);
+  EXPECT_EQ(input_error_of([&] { read_dem_terrain(no_crs); }),
+            no_crs.string() + ": the terrain DEM names no coordinate reference system");
+  EXPECT_EQ(input_error_of([&] { read_dem_terrain(dir.path() / "missing.tif"); }).rfind(dir.path().string(), 0), 0u);
+}
+
+}  // namespace
+}  // namespace skylit
