@@ -58,8 +58,9 @@ class Namespaces {
 
  private:
   std::string_view uri_of(std::string_view prefix) const {
-    for (auto b = bindings_.rbegin(); b != bindings_.rend(); ++b)
-      if (b->prefix == prefix) return b->uri;
+    // The innermost declaration first.
+    for (size_t k = bindings_.size(); k-- > 0;)
+      if (bindings_[k].prefix == prefix) return bindings_[k].uri;
     return {};
   }
   struct Binding {
