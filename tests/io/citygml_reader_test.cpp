@@ -233,6 +233,9 @@ TEST(CityGmlReader, SrsNamesInTheirCommonForms) {
   EXPECT_EQ(citygml::epsg_from_srs_name("urn:ogc:def:crs,crs:EPSG::28992,crs:EPSG::5709"), "EPSG:28992+5709");
   EXPECT_EQ(citygml::epsg_from_srs_name("http://www.opengis.net/gml/srs/epsg.xml#4326"), "EPSG:4326");
   EXPECT_EQ(citygml::epsg_from_srs_name("EPSG:6677"), "EPSG:6677");
+  EXPECT_EQ(citygml::epsg_from_srs_name("urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH"), "EPSG:25832+7837");
+  EXPECT_EQ(citygml::epsg_from_srs_name("urn:adv:crs:ETRS89_UTM33"), "EPSG:25833");
+  EXPECT_FALSE(citygml::epsg_from_srs_name("urn:adv:crs:ETRS89_UTM99"));
   EXPECT_FALSE(citygml::epsg_from_srs_name("Local"));
   EXPECT_FALSE(citygml::epsg_from_srs_name("EPSG:abc"));
   EXPECT_FALSE(citygml::epsg_from_srs_name("http://www.opengis.net/def/crs/EPSG/0/"));

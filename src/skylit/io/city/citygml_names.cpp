@@ -71,6 +71,26 @@ std::optional<int> urn_code(std::string_view part) {
   return code_of(part.substr(last + 1));
 }
 
+// The German surveying authorities' (AdV) CRS names, used by every German state's
+// CityGML: "urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH", horizontal then vertical.
+constexpr std::array<std::pair<std::string_view, int>, 9> kAdvCrs{{
+    {"ETRS89_UTM32", 25832},
+    {"ETRS89_UTM33", 25833},
+    {"DE_DHDN_3GK2", 31466},
+    {"DE_DHDN_3GK3", 31467},
+    {"DE_DHDN_3GK4", 31468},
+    {"ETRS89_Lat-Lon", 4258},
+    {"DE_DHHN92_NH", 5783},
+    {"DE_DHHN2016_NH", 7837},
+    {"DE_DHHN2016_NH_m", 7837},
+}};
+
+std::optional<int> adv_code(std::string_view name) {
+  for (const auto& [n, code] : kAdvCrs)
+    if (n == name) return code;
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> city_object_type(std::string_view local_name) {
@@ -99,7 +119,16 @@ std::optional<int> lod_of_property(std::string_view local_name) {
 
 std::optional<std::string> epsg_from_srs_name(std::string_view srs) {
   std::vector<int> codes;
-  if (starts_with(srs, "EPSG:")) {
+  if (starts_with(srs, "urn:adv:crs:")) {
+    std::string_view rest = srs.substr(12);
+    while (!rest.empty()) {
+      const auto star = rest.find('*');
+      const auto c = adv_code(rest.substr(0, star));
+      if (!c) return std::nullopt;
+      codes.push_back(*c);
+      rest = star == std::string_view::npos ? std::string_view{} : rest.substr(star + 1);
+    }
+  } else if (starts_with(srs, "EPSG:") || starts_with(srs, "epsg:")) {
     if (auto c = code_of(srs.substr(5))) codes.push_back(*c);
   } else if (starts_with(srs, "urn:ogc:def:crs,")) {
     // A compound of URNs: "urn:ogc:def:crs,crs:EPSG::28992,crs:EPSG::5709".

@@ -31,7 +31,9 @@ std::optional<int> lod_of_property(std::string_view local_name);
 // forms in use: "EPSG:6697", "urn:ogc:def:crs:EPSG::6697" (with or without a
 // version), "urn:ogc:def:crs,crs:EPSG::28992,crs:EPSG::5709",
 // "http(s)://www.opengis.net/def/crs/EPSG/0/6697" and
-// "http://www.opengis.net/gml/srs/epsg.xml#6697". nullopt for anything else.
+// "http://www.opengis.net/gml/srs/epsg.xml#6697", and the German AdV names
+// ("urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH" → "EPSG:25832+7837"). nullopt for
+// anything else.
 std::optional<std::string> epsg_from_srs_name(std::string_view srs_name);
 
 }  // namespace skylit::citygml
