@@ -102,6 +102,22 @@ TEST(TerrainSurface, FlatFloorOnASlopeTouchesAtItsDownhillCornerAndSinksUphill) 
   EXPECT_NEAR(*terrain.height_at(10, 8) - (5 + *shift), 0.42, 1e-5);
 }
 
+TEST(TerrainSurface, ABuildingMeshMovesByItsGroundTriangles) {
+  const TerrainSurface terrain(terrain_mesh(tin_file(20, plane)));
+  // A 4 m cube floating 1.2 m above the slope at its downhill corner (2, 2): its two
+  // ground triangles (facing down) and a roof triangle 4 m up.
+  TriangleMesh cube;
+  const double floor = plane(2, 2) + 1.2;
+  cube.vertices = {{2, 2, floor},     {2, 6, floor},     {6, 6, floor},    {6, 2, floor},
+                   {2, 2, floor + 4}, {6, 2, floor + 4}, {6, 6, floor + 4}};
+  cube.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}};
+  const auto shift = seat_on_terrain(terrain, cube, {true, true, false});
+  ASSERT_TRUE(shift);
+  EXPECT_NEAR(*shift, -1.2, 1e-5);
+  EXPECT_NEAR(cube.vertices[0].z, plane(2, 2), 1e-5);      // the downhill corner on the terrain
+  EXPECT_NEAR(cube.vertices[4].z, plane(2, 2) + 4, 1e-5);  // the roof moved with it
+}
+
 TEST(TerrainSurface, AHollowBetweenCornersIsSeen) {
   // A valley along x = 5 (0.2 m per m either side): the corners of a 10 m floor see
   // terrain 1 m high, the middle of its edges 0 m.

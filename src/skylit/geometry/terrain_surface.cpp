@@ -102,4 +102,18 @@ std::optional<double> seating_shift_m(const TerrainSurface& terrain,
   return -*highest_clearance;
 }
 
+std::optional<double> seat_on_terrain(const TerrainSurface& terrain, TriangleMesh& building,
+                                      const std::vector<bool>& is_ground) {
+  std::vector<std::vector<Vec3>> ground;
+  for (size_t k = 0; k < building.triangles.size() && k < is_ground.size(); ++k)
+    if (is_ground[k]) {
+      const auto& t = building.triangles[k];
+      ground.push_back({building.vertices[t[0]], building.vertices[t[1]], building.vertices[t[2]]});
+    }
+  const auto shift = seating_shift_m(terrain, ground);
+  if (shift)
+    for (Vec3& v : building.vertices) v.z += *shift;
+  return shift;
+}
+
 }  // namespace skylit

@@ -47,4 +47,10 @@ inline constexpr double kGroundSampleSpacingM = 0.25;
 std::optional<double> seating_shift_m(const TerrainSurface& terrain,
                                       const std::vector<std::vector<Vec3>>& ground_rings);
 
+// The same for a placed building's mesh: its ground triangles (is_ground, one flag per
+// triangle) are its ground surface; every vertex is moved by the shift, which is
+// returned (nullopt, nothing moved, when no ground triangle lies over the terrain).
+std::optional<double> seat_on_terrain(const TerrainSurface& terrain, TriangleMesh& building,
+                                      const std::vector<bool>& is_ground);
+
 }  // namespace skylit
