@@ -207,6 +207,14 @@ TEST(CityGmlReader, BuildingPartsAreObjectsOfTheirOwnAndReferencesResolve) {
   EXPECT_EQ(model.objects[1].lod, 10);
   ASSERT_EQ(model.objects[1].surfaces.size(), 1u);
   EXPECT_EQ(model.objects[1].surfaces[0].rings[0][1].x, 1.0);
+
+  // Up to LoD1: the part's LoD1 surface instead of its wall; nothing is left at LoD0.
+  const CityModel lod1 = parse_citygml(text, "parts.gml", {.lod = 10});
+  ASSERT_EQ(lod1.objects.size(), 2u);
+  EXPECT_EQ(lod1.objects[0].lod, 10);
+  ASSERT_EQ(lod1.objects[0].surfaces.size(), 1u);
+  EXPECT_EQ(lod1.objects[0].surfaces[0].rings[0][1].x, 2.0);
+  EXPECT_TRUE(parse_citygml(text, "parts.gml", {.lod = 0}).objects.empty());
 }
 
 // The example scripts/make-citygml-example.py writes: a 6 × 6 cell TIN, four

@@ -146,7 +146,7 @@ class CityGmlParser {
     } while (size > 0);
   }
 
-  CityModel finish();
+  CityModel finish(const CityGmlOptions& options);
 
  private:
   [[noreturn]] void fail(const std::string& what) const { fail_at(XML_GetCurrentLineNumber(parser_), what); }
@@ -521,7 +521,7 @@ std::vector<int> CityGmlParser::polygons_named(const std::string& id) const {
   return {};
 }
 
-CityModel CityGmlParser::finish() {
+CityModel CityGmlParser::finish(const CityGmlOptions& options) {
   // Appearance names per polygon: X3D materials first, then textures.
   std::vector<const std::string*> appearance(polygons_.size(), nullptr);
   for (const auto* targets : {&material_targets_, &texture_targets_})
@@ -532,10 +532,13 @@ CityModel CityGmlParser::finish() {
   // Which polygons each object keeps: those of its most detailed LoD, each once.
   std::vector<std::vector<std::pair<int, std::string>>> kept(finished_.size());
   std::vector<int> uses_left(polygons_.size(), 0);
+  std::vector<bool> leave_out(finished_.size(), false);
   for (size_t o = 0; o < finished_.size(); ++o) {
     int lod = -1;
-    for (const auto& use : finished_[o].uses) lod = std::max(lod, use.lod);
+    for (const auto& use : finished_[o].uses)
+      if (!options.lod || use.lod <= *options.lod) lod = std::max(lod, use.lod);
     finished_[o].object.lod = std::max(lod, 0);
+    if (lod < 0 && options.lod) leave_out[o] = true;  // nothing at or below the chosen LoD
     std::unordered_map<int, size_t> slot;
     for (const auto& use : finished_[o].uses) {
       if (use.lod != lod) continue;
@@ -557,6 +560,7 @@ CityModel CityGmlParser::finish() {
   model.crs = crs_;
   model.objects.reserve(finished_.size());
   for (size_t o = 0; o < finished_.size(); ++o) {
+    if (leave_out[o]) continue;
     CityObject object = std::move(finished_[o].object);
     object.surfaces.reserve(kept[o].size());
     for (auto& [p, semantic] : kept[o]) {
@@ -573,13 +577,13 @@ CityModel CityGmlParser::finish() {
 
 }  // namespace
 
-CityModel parse_citygml(std::string_view text, const std::string& name) {
+CityModel parse_citygml(std::string_view text, const std::string& name, const CityGmlOptions& options) {
   CityGmlParser parser(name);
   parser.feed(text.data(), text.size(), true);
-  return parser.finish();
+  return parser.finish(options);
 }
 
-CityModel read_citygml_file(const std::filesystem::path& file) {
+CityModel read_citygml_file(const std::filesystem::path& file, const CityGmlOptions& options) {
   require_regular_file(file, "CityGML file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string() + ":1: cannot read the CityGML file");
@@ -593,7 +597,7 @@ CityModel read_citygml_file(const std::filesystem::path& file) {
     parser.feed(buffer.data(), got, last);
     if (last) break;
   }
-  return parser.finish();
+  return parser.finish(options);
 }
 
 }  // namespace skylit

@@ -5,7 +5,8 @@
 // water bodies, TIN relief (dem:TINRelief triangles), generic city objects, bridges,
 // tunnels and city furniture; X3D materials and parameterized textures by name.
 //
-// For each object the most detailed level of detail it has is kept. Surfaces that a
+// For each object the most detailed level of detail it has is kept (or the most
+// detailed up to a chosen one). Surfaces that a
 // solid references by xlink:href and a boundary surface defines (PLATEAU's lod2Solid)
 // are taken once, with the boundary surface's semantic class. Not read: implicit
 // geometries (coordinates relative to a reference point), interior features (rooms,
@@ -19,12 +20,20 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "skylit/io/city/city_model.h"
 
 namespace skylit {
+
+struct CityGmlOptions {
+  // The level of detail to take, ×10 (LoD2 → 20): each object's geometry of the
+  // highest LoD not above it (objects with none are left out). Empty: each object's
+  // most detailed geometry.
+  std::optional<int> lod;
+};
 
 // Reads the file as it streams in (a tile of millions of triangles is never held as
 // text). Throws InputError "<file>:<line>: <what>" for a file that is missing, not
@@ -33,9 +42,9 @@ namespace skylit {
 // three points, a polygon without an exterior ring, a coordinate that is not a finite
 // number, a coordinate list whose length is not a multiple of its dimension, or a
 // reference (xlink:href="#id") to a surface that is not in the file.
-CityModel read_citygml_file(const std::filesystem::path& file);
+CityModel read_citygml_file(const std::filesystem::path& file, const CityGmlOptions& options = {});
 
 // The same from text in memory; `name` stands for the file in messages.
-CityModel parse_citygml(std::string_view text, const std::string& name);
+CityModel parse_citygml(std::string_view text, const std::string& name, const CityGmlOptions& options = {});
 
 }  // namespace skylit
