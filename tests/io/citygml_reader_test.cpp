@@ -11,6 +11,8 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../test_support.h"
 #include "skylit/geometry/polygon_triangulation.h"
@@ -177,6 +179,48 @@ TEST(CityGmlReader, TinReliefTrianglesAndRoadsAreRead) {
   ASSERT_EQ(model.objects[1].surfaces.size(), 1u);
   EXPECT_EQ(model.objects[1].surfaces[0].rings[0].size(), 4u);
   EXPECT_EQ(model.objects[1].surfaces[0].rings[0][2].y, 1.0);
+}
+
+TEST(CityGmlReader, LandUseVegetationWaterAndGenericObjects) {
+  const std::string square =
+      "<gml:surfaceMember><gml:Polygon><gml:exterior><gml:LinearRing><gml:posList>"
+      "0 0 0 1 0 0 1 1 0 0 0 0</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon>"
+      "</gml:surfaceMember>";
+  const std::string multi = "<gml:MultiSurface>" + square + "</gml:MultiSurface>";
+  const std::string text =
+      R"(<core:CityModel xmlns:core="http://www.opengis.net/citygml/2.0" xmlns:gml="http://www.opengis.net/gml"
+ xmlns:luse="http://www.opengis.net/citygml/landuse/2.0" xmlns:veg="http://www.opengis.net/citygml/vegetation/2.0"
+ xmlns:wtr="http://www.opengis.net/citygml/waterbody/2.0" xmlns:gen="http://www.opengis.net/citygml/generics/2.0">)"
+      "<core:cityObjectMember><luse:LandUse><luse:lod1MultiSurface>" +
+      multi +
+      "</luse:lod1MultiSurface></luse:LandUse></core:cityObjectMember>"
+      "<core:cityObjectMember><veg:PlantCover><veg:lod2MultiSurface>" +
+      multi +
+      "</veg:lod2MultiSurface></veg:PlantCover></core:cityObjectMember>"
+      "<core:cityObjectMember><veg:SolitaryVegetationObject><veg:lod2Geometry>" +
+      multi +
+      "</veg:lod2Geometry></veg:SolitaryVegetationObject></core:cityObjectMember>"
+      "<core:cityObjectMember><wtr:WaterBody><wtr:boundedBy><wtr:WaterSurface><wtr:lod3Surface>"
+      "<gml:CompositeSurface>" +
+      square +
+      "</gml:CompositeSurface></wtr:lod3Surface></wtr:WaterSurface>"
+      "</wtr:boundedBy></wtr:WaterBody></core:cityObjectMember>"
+      "<core:cityObjectMember><gen:GenericCityObject><gen:lod1Geometry>" +
+      multi + "</gen:lod1Geometry></gen:GenericCityObject></core:cityObjectMember></core:CityModel>";
+  const CityModel model = parse_citygml(text, "mixed.gml");
+  ASSERT_EQ(model.objects.size(), 5u);
+  const std::vector<std::pair<std::string, int>> expected{{"LandUse", 10},
+                                                          {"PlantCover", 20},
+                                                          {"SolitaryVegetationObject", 20},
+                                                          {"WaterBody", 30},
+                                                          {"GenericCityObject", 10}};
+  for (size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(model.objects[k].type, expected[k].first);
+    EXPECT_EQ(model.objects[k].lod, expected[k].second);
+    ASSERT_EQ(model.objects[k].surfaces.size(), 1u) << expected[k].first;
+    EXPECT_EQ(model.objects[k].surfaces[0].rings[0].size(), 3u);
+  }
+  EXPECT_EQ(model.objects[3].surfaces[0].semantic, "WaterSurface");
 }
 
 TEST(CityGmlReader, BuildingPartsAreObjectsOfTheirOwnAndReferencesResolve) {
