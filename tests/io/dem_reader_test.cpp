@@ -44,15 +44,20 @@ void write_dem(const std::filesystem::path& file, int nx, int ny, const double g
   GDALClose(ds);
 }
 
+// The terrain read back from such a file.
+CityModel written_and_read(int nx, int ny, const double gt[6], int epsg, double (*h)(int, int)) {
+  TempDir dir;
+  const auto file = dir.path() / "dem.tif";
+  write_dem(file, nx, ny, gt, epsg, h);
+  return read_dem_terrain(file);
+}
+
 double sloped(int i, int j) { return (i == 3 && j == 2) ? -9999 : 10 + i + 2 * j; }
 
 TEST(DemReader, ProjectedDemBecomesATinOfCellCentres) {
-  TempDir dir;
-  const auto file = dir.path() / "dem.tif";
   // UTM 54N, 10 m cells, north up (rows run south).
   const double gt[6] = {380000, 10, 0, 3940000, 0, -10};
-  write_dem(file, 4, 3, gt, 32654, sloped);
-  const CityModel model = read_dem_terrain(file);
+  const CityModel model = written_and_read(4, 3, gt, 32654, sloped);
   EXPECT_EQ(model.crs, "EPSG:32654");
   ASSERT_EQ(model.objects.size(), 1u);
   EXPECT_EQ(model.objects[0].type, "TINRelief");
@@ -76,12 +81,9 @@ TEST(DemReader, ProjectedDemBecomesATinOfCellCentres) {
 double flat(int, int) { return 4.0; }
 
 TEST(DemReader, GeographicDemIsInLatitudeLongitudeOrder) {
-  TempDir dir;
-  const auto file = dir.path() / "dem.tif";
   // JGD2011 (EPSG:6668), GDAL's geotransform in longitude, latitude.
   const double gt[6] = {139.7, 0.001, 0, 35.6, 0, -0.001};
-  write_dem(file, 2, 2, gt, 6668, flat);
-  const CityModel model = read_dem_terrain(file);
+  const CityModel model = written_and_read(2, 2, gt, 6668, flat);
   EXPECT_EQ(model.crs, "EPSG:6668");
   ASSERT_EQ(model.objects[0].surfaces.size(), 2u);
   const Vec3& p = model.objects[0].surfaces[0].rings[0][0];
