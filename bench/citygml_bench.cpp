@@ -4,6 +4,7 @@
 // a file as a user's would be. Issue 16 asks for a 1M-triangle tile in at most 10 s.
 //   build/bin/skylit_bench --benchmark_filter=CityGml --benchmark_repetitions=3
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -49,7 +50,7 @@ void BM_CityGmlPlateauSample(benchmark::State& state) {
 }
 BENCHMARK(BM_CityGmlPlateauSample)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The tile, written once per run into the temporary folder.
+// The tile, written once per run into the temporary folder (and removed at exit).
 std::filesystem::path million_triangle_tile() {
   static const std::filesystem::path file = [] {
     const auto path = std::filesystem::temp_directory_path() / "skylit_bench_citygml_tile.gml";
@@ -95,6 +96,8 @@ std::filesystem::path million_triangle_tile() {
       out << "</bldg:Building></core:cityObjectMember>\n";
     }
     out << "</core:CityModel>\n";
+    std::atexit(
+        [] { std::filesystem::remove(std::filesystem::temp_directory_path() / "skylit_bench_citygml_tile.gml"); });
     return path;
   }();
   return file;
