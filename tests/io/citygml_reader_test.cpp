@@ -239,6 +239,14 @@ TEST(CityGmlReader, BuildingPartsAreObjectsOfTheirOwnAndReferencesResolve) {
 </bldg:BuildingPart></bldg:consistsOfBuildingPart></bldg:Building></core:cityObjectMember></core:CityModel>)";
   const CityModel model = parse_citygml(text, "parts.gml");
   EXPECT_EQ(model.crs, "EPSG:31256");
+  // A room (interior, skipped) declaring a prefix of its own leaves nothing behind.
+  std::string with_room = text;
+  with_room.insert(
+      with_room.find("<bldg:consistsOfBuildingPart>"),
+      R"(<bldg:interiorRoom><bldg:Room xmlns:g="http://www.opengis.net/gml" srsDimension="2"><bldg:lod4Solid/></bldg:Room></bldg:interiorRoom>)");
+  const CityModel roomed = parse_citygml(with_room, "room.gml");
+  ASSERT_EQ(roomed.objects.size(), 2u);
+  EXPECT_EQ(roomed.objects[0].surfaces.at(0).rings[0][1].x, 3.0);  // still read in 3-D
   ASSERT_EQ(model.objects.size(), 2u);
   // The part ends first.
   EXPECT_EQ(model.objects[0].id, "p");

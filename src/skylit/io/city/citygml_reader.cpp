@@ -482,11 +482,11 @@ void CityGmlParser::finish_polygon() {
 }
 
 void CityGmlParser::end(const XML_Char* /*name*/) {
-  if (skip_depth_ > 0) {
-    if (depth_ == skip_depth_) skip_depth_ = 0;
+  if (skip_depth_ > 0 && depth_ > skip_depth_) {
     --depth_;
     return;
   }
+  skip_depth_ = 0;  // the skipped element itself ends below, like any other
   if (text_for_ != TextFor::nothing && text_depth_ == depth_) use_text();
   if (in_ring_ && ring_depth_ == depth_) finish_ring();
   if (in_polygon_ && polygon_depth_ == depth_) finish_polygon();
