@@ -286,6 +286,21 @@ TEST(CityGmlReader, ExampleCityBlockLoads) {
   EXPECT_EQ(model.objects[1].surfaces[5].appearance_material, "red_tiles");
 }
 
+TEST(CityGmlReader, AReferenceMayNameAWholeMultiSurface) {
+  // The LoD2 solid names the roof's multi-surface (two polygons) by its id.
+  const std::string members =
+      R"(<core:cityObjectMember><bldg:Building gml:id="b"><bldg:lod2Solid><gml:Solid><gml:exterior>
+<gml:CompositeSurface><gml:surfaceMember xlink:href="#roofs"/></gml:CompositeSurface></gml:exterior></gml:Solid></bldg:lod2Solid>
+<bldg:boundedBy><bldg:RoofSurface><bldg:lod2MultiSurface><gml:MultiSurface gml:id="roofs">
+<gml:surfaceMember><gml:Polygon><gml:exterior><gml:LinearRing><gml:posList>0 0 5 4 0 5 4 4 7</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon></gml:surfaceMember>
+<gml:surfaceMember><gml:Polygon><gml:exterior><gml:LinearRing><gml:posList>0 0 5 4 4 7 0 4 7</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon></gml:surfaceMember>
+</gml:MultiSurface></bldg:lod2MultiSurface></bldg:RoofSurface></bldg:boundedBy></bldg:Building></core:cityObjectMember>)";
+  const CityModel model = parse_citygml(city_model(members), "ref.gml");
+  ASSERT_EQ(model.objects.size(), 1u);
+  ASSERT_EQ(model.objects[0].surfaces.size(), 2u);  // each once
+  for (const CitySurface& s : model.objects[0].surfaces) EXPECT_EQ(s.semantic, "RoofSurface");
+}
+
 TEST(CityGmlReader, SrsNamesInTheirCommonForms) {
   EXPECT_EQ(citygml::epsg_from_srs_name("http://www.opengis.net/def/crs/EPSG/0/6697"), "EPSG:6697");
   EXPECT_EQ(citygml::epsg_from_srs_name("https://www.opengis.net/def/crs/EPSG/0/7415"), "EPSG:7415");

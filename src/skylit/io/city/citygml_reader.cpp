@@ -477,7 +477,12 @@ void CityGmlParser::finish_polygon() {
   const int index = static_cast<int>(polygons_.size());
   polygons_.push_back(std::move(surface));
   if (!polygon_id_.empty()) polygon_ids_.emplace(polygon_id_, index);
-  for (const auto& [id, depth] : aggregates_) aggregate_polygons_[id].push_back(index);
+  // The aggregates around it, innermost first, at most kAggregateLevels (a real file has
+  // a multi-surface in a composite in a shell in a solid; a crafted one could nest
+  // thousands, and every polygon would be listed under each).
+  constexpr size_t kAggregateLevels = 8;
+  for (size_t k = aggregates_.size(); k-- > 0 && aggregates_.size() - k <= kAggregateLevels;)
+    aggregate_polygons_[aggregates_[k].first].push_back(index);
   if (polygon_used_) objects_.back().uses.push_back({lods_.back().first, current_semantic(), index, {}, polygon_line_});
 }
 
