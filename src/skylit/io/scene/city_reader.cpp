@@ -6,8 +6,10 @@
 #include <string>
 
 #include "skylit/core/file_names.h"
+#include "skylit/geometry/terrain_surface.h"
 #include "skylit/io/city/city_palette.h"
 #include "skylit/io/city/city_placement.h"
+#include "skylit/io/city/citygml_reader.h"
 #include "skylit/io/city/cityjson_reader.h"
 #include "skylit/io/scene/scene_parts.h"
 
@@ -15,13 +17,31 @@ namespace skylit {
 
 namespace {
 
-// The model in the file, by its kind. A CityGML reader joins here.
+// The model in the file, by its kind.
 CityModel read_city_file(const JsonReader& file_value, const std::filesystem::path& file,
                          const CityJsonOptions& options) {
   const std::string extension = lower_case_extension(file);
   if (extension == ".json" || extension == ".jsonl") return read_cityjson_file(file, options);
+  if (extension == ".gml" || extension == ".xml") return read_citygml_file(file, CityGmlOptions{options.lod});
   file_value.fail("unknown city model file '" + file.filename().string() +
-                  "': expected CityJSON (.json, .city.json, .city.jsonl)");
+                  "': expected CityJSON (.json, .city.json, .city.jsonl) or CityGML (.gml, .xml)");
+}
+
+// A TIN relief in the file is the terrain: each building (and building part) is set
+// down on it by its ground surfaces (geometry/terrain_surface.h, docs/citygml.md).
+void seat_buildings_on_relief(PlacedCity& placed) {
+  TriangleMesh relief;
+  for (const PlacedCityObject& o : placed.objects)
+    if (o.type == "TINRelief") relief.append(o.mesh);
+  if (relief.triangles.empty()) return;
+  const TerrainSurface terrain(relief);
+  for (PlacedCityObject& o : placed.objects) {
+    if (o.type != "Building" && o.type != "BuildingPart") continue;
+    std::vector<bool> ground(o.triangle_class.size());
+    for (size_t k = 0; k < ground.size(); ++k)
+      ground[k] = placed.classes[o.triangle_class[k]].ends_with(".GroundSurface");
+    seat_on_terrain(terrain, o.mesh, ground);
+  }
 }
 
 std::optional<int> read_lod(const JsonReader& j) {
@@ -153,6 +173,7 @@ SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir
     class_material.push_back(city_materials.material_for(key));
     source.classes.push_back({key, 0, materials[class_material.back()].name});
   }
+  seat_buildings_on_relief(placed);
   std::map<std::string, size_t> by_type;
   for (const PlacedCityObject& city_object : placed.objects) {
     ++by_type[city_object.type];
