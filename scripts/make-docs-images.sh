@@ -46,4 +46,7 @@ $skylit render examples/house.json --quiet --set render.width=960 --set render.h
 # A city block read from CityJSON in its own CRS (examples/models/city_block.city.json,
 # from scripts/make-city-block.py).
 $skylit render examples/city_block.json --quiet --set render.width=960 --set render.height=540 -o "$out/city-block.png"
+# A city block read from CityGML in PLATEAU's form, on its own TIN relief
+# (examples/models/city_block.gml, from scripts/make-citygml-example.py).
+$skylit render examples/citygml_block.json --quiet --set render.width=960 --set render.height=540 -o "$out/citygml-block.png"
 echo "Remade $out/"
