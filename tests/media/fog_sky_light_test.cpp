@@ -51,8 +51,8 @@ std::array<double, kSpectralBins> direct_j(const FogLayer& fog, double z) {
   return sum;
 }
 
-// ∫ τ (ω0/4π) J e^(−t) ds by the trapezoidal rule in `steps` equal steps over the part of
-// [s1, s2] in the layer, t in closed form from the viewpoint.
+// ∫ τ ω0 (source) e^(−t) ds (source J/4π, or the multiple-scattering field's) by the trapezoidal rule in `steps` equal
+// steps over the part of [s1, s2] in the layer, t in closed form from the viewpoint.
 Spectrum fixed_step(const FogSkyLight& light, const Vec3& p, const Vec3& d, double s1, double s2, int steps) {
   const FogLayer& fog = light.layer();
   const RaySpan span = fog.clip(p.z, d.z, s1, s2);
@@ -62,7 +62,7 @@ Spectrum fixed_step(const FogSkyLight& light, const Vec3& p, const Vec3& d, doub
   for (int k = 0; k <= steps; ++k) {
     const double s = span.lo + k * h, weight = (k == 0 || k == steps) ? 0.5 * h : h;
     const double z = std::clamp(p.z + d.z * s, fog.bottom_m(), fog.top_m());
-    const Spectrum j = light.at(z);
+    const Spectrum j = light.source(z, -d.z);  // J/4π, or the multiple-scattering field's
     const Spectrum t = fog.transmittance(fog.column(p.z, d.z, 0.0, s));
     for (int i = 0; i < kSpectralBins; ++i)
       sum[static_cast<size_t>(i)] +=
@@ -70,7 +70,7 @@ Spectrum fixed_step(const FogSkyLight& light, const Vec3& p, const Vec3& d, doub
   }
   Spectrum out;
   for (int i = 0; i < kSpectralBins; ++i)
-    out[i] = static_cast<float>(fog.single_scattering_albedo() / (4 * kPi) * sum[static_cast<size_t>(i)]);
+    out[i] = static_cast<float>(fog.single_scattering_albedo() * sum[static_cast<size_t>(i)]);
   return out;
 }
 
@@ -142,33 +142,37 @@ struct RayCase {
 };
 
 TEST(FogSkyLight, AdaptivePitchMatchesFineFixedSteps) {
-  for (double h0 : {10.0, -15.0}) {
-    FogSettings s;
-    s.scale_height_m = h0;
-    s.density_at_ground = h0 > 0 ? 0.59 : 0.037;  // the paper's Figs. 8a and 8b
-    const FogLayer fog(s);
-    const FogSkyLight light(fog, test_sky());
-    const RayCase cases[] = {
-        {"horizontal z=1.6", {0, 0, 1.6}, {1, 0, 0}, 0, 4000},
-        {"horizontal z=40", {0, 0, 40}, {0, 1, 0}, 0, 4000},
-        {"up from z=1.6", {0, 0, 1.6}, {0, 0, 1}, 0, 1e4},
-        {"slant up 5 deg", {0, 0, 1.6}, direction_from_altitude_azimuth(5, 30), 0, 1e4},
-        {"down from z=55", {0, 0, 55}, {0, 0, -1}, 0, 1e4},
-        {"down 10 deg from 100 m (across the top)", {0, 0, 100}, direction_from_altitude_azimuth(-10, 200), 0, 1e4},
-        {"grazing 1 deg from 70 m (across the top)", {0, 0, 70}, direction_from_altitude_azimuth(-1, 0), 0, 1e5},
-        {"segment 200-900 m, 2 deg", {0, 0, 3}, direction_from_altitude_azimuth(2, 90), 200, 900},
-    };
-    for (const RayCase& c : cases) {
-      int steps = 0;
-      const Spectrum got = light.in_scattered(c.p, c.d, c.s1, c.s2, &steps);
-      const Spectrum want = fixed_step(light, c.p, c.d, c.s1, c.s2, 20000);
-      const double error = worst_relative(got, want);
-      std::cout << "[FogSkyLight] h0 = " << h0 << ", " << c.name << ": " << steps << " steps, I = " << bin_mean(want)
-                << " W m-2 sr-1 nm-1, worst bin error " << error << "\n";
-      EXPECT_LT(error, 0.01) << c.name;
-      EXPECT_LT(steps, 400) << c.name;
+  // Both sources: the paper's J(z)/4π and the multiple-scattering field's, which
+  // depends on the direction too.
+  for (bool multiple : {false, true})
+    for (double h0 : {10.0, -15.0}) {
+      FogSettings s;
+      s.multiple_scattering = multiple;
+      s.scale_height_m = h0;
+      s.density_at_ground = h0 > 0 ? 0.59 : 0.037;  // the paper's Figs. 8a and 8b
+      const FogLayer fog(s);
+      const FogSkyLight light(fog, test_sky());
+      const RayCase cases[] = {
+          {"horizontal z=1.6", {0, 0, 1.6}, {1, 0, 0}, 0, 4000},
+          {"horizontal z=40", {0, 0, 40}, {0, 1, 0}, 0, 4000},
+          {"up from z=1.6", {0, 0, 1.6}, {0, 0, 1}, 0, 1e4},
+          {"slant up 5 deg", {0, 0, 1.6}, direction_from_altitude_azimuth(5, 30), 0, 1e4},
+          {"down from z=55", {0, 0, 55}, {0, 0, -1}, 0, 1e4},
+          {"down 10 deg from 100 m (across the top)", {0, 0, 100}, direction_from_altitude_azimuth(-10, 200), 0, 1e4},
+          {"grazing 1 deg from 70 m (across the top)", {0, 0, 70}, direction_from_altitude_azimuth(-1, 0), 0, 1e5},
+          {"segment 200-900 m, 2 deg", {0, 0, 3}, direction_from_altitude_azimuth(2, 90), 200, 900},
+      };
+      for (const RayCase& c : cases) {
+        int steps = 0;
+        const Spectrum got = light.in_scattered(c.p, c.d, c.s1, c.s2, &steps);
+        const Spectrum want = fixed_step(light, c.p, c.d, c.s1, c.s2, 20000);
+        const double error = worst_relative(got, want);
+        std::cout << "[FogSkyLight] h0 = " << h0 << ", " << c.name << ": " << steps << " steps, I = " << bin_mean(want)
+                  << " W m-2 sr-1 nm-1, worst bin error " << error << "\n";
+        EXPECT_LT(error, 0.01) << c.name;
+        EXPECT_LT(steps, 400) << c.name;
+      }
     }
-  }
 }
 
 TEST(FogSkyLight, EndlessRaysStopByTheTailTest) {
@@ -194,7 +198,7 @@ TEST(FogSkyLight, VanishingDensityScattersNothing) {
     const double i = bin_mean(light.in_scattered({0, 0, 1.6}, {1, 0, 0}, 0, 1000));
     EXPECT_LT(i, previous);
     if (rho0 > 0 && rho0 < 0.01) {  // thin fog: I ≈ τ·L/4π·J·length, linear in ρ0
-      const double expected = rho0 * 0.02 * std::exp(-1.6 / 10.0) * bin_mean(light.at(1.6)) / (4 * kPi) * 1000;
+      const double expected = rho0 * 0.02 * std::exp(-1.6 / 10.0) * bin_mean(light.source(1.6, 0.0)) * 1000;
       EXPECT_NEAR(i / expected, 1.0, 0.01) << rho0;
     }
     previous = i;

@@ -39,6 +39,8 @@ TEST(FogRender, FogAddsNoMoreLightThanItsSources) {
   // Single scattering: along a ray the fog adds at most (1 − T) times its largest
   // source, ω F(θ) E_sun + J/(4π) (white fog, b = 0, no absorption): energy is
   // redirected, never made.
+  // (The paper's single scattering: with multiple scattering the sky light a droplet
+  // scatters is no longer bounded by the unattenuated J/4π.)
   Scene scene = street_scene();
   scene.fog = FogSettings{};
   const Atmosphere atmosphere(scene.atmosphere);
@@ -67,9 +69,12 @@ TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
   // A ray that passes through the block's shadow gathers less sunlight from the fog
   // than the same ray without the block, by exactly the closed form over the part in
   // shadow.
+  // With multiple scattering on, as then the beams must still be all the light the
+  // shadows take away (Fig. 8's beams; the diffuse field ignores obstacles).
   Scene scene = street_scene();
   scene.fog = FogSettings{};
   scene.fog->density_at_ground = 0.3;
+  scene.fog->multiple_scattering = true;
   const Atmosphere atmosphere(scene.atmosphere);
   const Vec3 to_sun = direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
   const SkyModel sky(atmosphere, to_sun, 1.6);
@@ -77,6 +82,7 @@ TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
   const std::vector<const TriangleMesh*> without{&scene.objects[0].mesh};
   const Vec3 origin{-80, 40, 2};  // in the block's shadow line: north-west of it, sun from the south-south-east
   const FogMedium shaded(*scene.fog, with_block, sky, origin), open(*scene.fog, without, sky, origin);
+  ASSERT_LT(open.sun_depth_scale(), 0.9);           // the beams carry the forward spike's light
   const Ray ray{origin, normalize(Vec3{1, 0, 0})};  // eastward, behind the block
   const double length = 160;
   const Spectrum difference =
@@ -86,11 +92,11 @@ TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
   for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length)) shadowed -= lit.end - lit.begin;
   ASSERT_GT(shadowed, 5.0);  // the geometry does put part of the ray in shadow
   // The light lost is the sun's in-scatter over the shadowed part, from the closed form.
-  Spectrum expected =
-      fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, 0, length, sky.direct_sun(60.0).spectrum());
+  Spectrum expected = fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, 0, length,
+                                        sky.direct_sun(60.0).spectrum(), open.sun_depth_scale());
   for (const Interval& lit : shadows.sunlit_intervals(ray, 0, length))
     expected -= fog_sun_inscatter(open.layer(), origin, ray.direction, to_sun, lit.begin, lit.end,
-                                  sky.direct_sun(60.0).spectrum());
+                                  sky.direct_sun(60.0).spectrum(), open.sun_depth_scale());
   for (int k = 0; k < kSpectralBins; k += 7) EXPECT_NEAR(difference[k], expected[k], 1e-4 * expected[k] + 1e-9);
   EXPECT_GT(luminance(difference), 0.0);
 }

@@ -66,7 +66,8 @@ FogLayer::FogLayer(const FogSettings& s)
       lambda0_(s.reference_wavelength_nm),
       b_(s.wavelength_exponent),
       phase_kind_(s.phase),
-      asymmetry_(s.asymmetry) {
+      asymmetry_(s.asymmetry),
+      multiple_scattering_(s.multiple_scattering) {
   require(std::isfinite(z_bottom_) && std::isfinite(z_top_) && z_bottom_ < z_top_,
           "fog: bottom_altitude_m must be below top_altitude_m (both finite)");
   require(!std::isnan(s.scale_height_m) && s.scale_height_m != 0.0,

@@ -44,6 +44,7 @@ class FogLayer {
   double bottom_m() const { return z_bottom_; }
   double top_m() const { return z_top_; }
   double single_scattering_albedo() const { return albedo_; }
+  bool multiple_scattering() const { return multiple_scattering_; }
 
   // ρ(z) of Eq. 2 inside [bottom, top], 0 outside.
   double density(double z_m) const;
@@ -85,6 +86,7 @@ class FogLayer {
   bool grey_ = true;
   FogPhase phase_kind_;
   double asymmetry_;
+  bool multiple_scattering_;
   DropletPhaseParameters droplet_{};
 };
 

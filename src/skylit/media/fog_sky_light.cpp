@@ -102,6 +102,28 @@ FogSkyLight::FogSkyLight(const FogLayer& fog, const SkyModel& sky, int altitudes
       j_max_[static_cast<size_t>(b)] = std::max(j_max_[static_cast<size_t>(b)], sum[static_cast<size_t>(b)]);
     }
   }
+  if (fog_.multiple_scattering()) {
+    FogLayerLighting light;
+    // The sky's mean over azimuth at the top, toward each cosine (symmetric about the
+    // sun's vertical plane, so one half circle counted twice).
+    light.sky = [&](double mu) {
+      const double sin_zenith = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+      Spectrum sum;
+      for (int j = 0; j < kHalfAzimuths; ++j) {
+        const double phi = (j + 0.5) * dphi;
+        sum +=
+            sky.sky_radiance_near_ground(sin_zenith * (std::cos(phi) * e1 + std::sin(phi) * e2) + mu * up).spectrum();
+      }
+      return sum * (1.0f / kHalfAzimuths);
+    };
+    light.sun_cosine = sky.to_sun().z;
+    light.sun_irradiance = sky.direct_sun(std::max(0.0, fog_.top_m())).spectrum();
+    light.ground_albedo = sky.atmosphere().settings().ground_albedo;
+    diffuse_.emplace(fog_, light);
+    j_max_ = diffuse_->largest();
+  } else {
+    for (double& v : j_max_) v /= 4 * kPi;  // per steradian, as `source` gives it
+  }
   double mean = 0;
   for (double v : j_max_) mean += v;
   j_max_mean_ = mean / kSpectralBins;
@@ -119,6 +141,11 @@ Spectrum FogSkyLight::at(double z) const {
   Spectrum out;
   for (int b = 0; b < kSpectralBins; ++b) out[b] = (1 - f) * j_[lo][b] + f * j_[hi][b];
   return out;
+}
+
+Spectrum FogSkyLight::source(double z, double up) const {
+  if (diffuse_) return diffuse_->scattered(z, up);
+  return at(z) * static_cast<float>(1.0 / (4.0 * kPi));
 }
 
 Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, double s_begin, double s_end,
@@ -146,8 +173,8 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, do
   const double vertical_scale = eta > 0.0 ? std::min(thickness, 1.0 / eta) : thickness;
   const double geometric_max = std::abs(w) > 0.0 ? kGeometricPitch * vertical_scale / std::abs(w) : HUGE_VAL;
 
-  // The integrand τ·J·e^(−(t − t(a))) per bin at s, given the column from a to s; the
-  // factor ω0/4π·e^(−t(a)) is applied at the end.
+  // The integrand τ·source·e^(−(t − t(a))) per bin at s, given the column from a to s;
+  // the factor ω0·e^(−t(a)) is applied at the end.
   struct Sample {
     std::array<double, kSpectralBins> f{};
     double mean = 0, tau_mean = 0;
@@ -156,7 +183,7 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, do
     Sample out;
     const double z = std::clamp(z_p + w * s, fog_.bottom_m(), fog_.top_m());
     const double rho = fog_.density(z);
-    const Spectrum j = at(z);
+    const Spectrum j = source(z, -w);  // the light travels toward the viewpoint
     for (int i = 0; i < kSpectralBins; ++i) {
       const double sg = sigma[static_cast<size_t>(i)];
       const double tau = std::min(sg * rho, 1e30);  // no Inf·0 for absurd densities
@@ -212,8 +239,7 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, do
   Spectrum out;
   for (int i = 0; i < kSpectralBins; ++i) {
     const double sg = sigma[static_cast<size_t>(i)];
-    const double v =
-        albedo / (4.0 * kPi) * std::exp(-std::min(sg * viewer_column, 800.0)) * sum[static_cast<size_t>(i)];
+    const double v = albedo * std::exp(-std::min(sg * viewer_column, 800.0)) * sum[static_cast<size_t>(i)];
     out[i] = static_cast<float>(std::isfinite(v) ? v : 0.0);
   }
   return out;

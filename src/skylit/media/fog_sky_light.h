@@ -17,10 +17,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/core/vec3.h"
+#include "skylit/media/fog_diffuse_field.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/spectrum/spectrum.h"
 
@@ -48,7 +50,9 @@ class FogSkyLight {
   static constexpr double kTailTolerance = 1e-3;
   static constexpr int kMaxSteps = 100000;
 
-  // Copies what it needs of `fog`; reads `sky` only here.
+  // Copies what it needs of `fog`; reads `sky` only here. With the layer's
+  // multiple_scattering on, it also solves the layer's diffuse field (FogDiffuseField),
+  // which then replaces the isotropic J(z)/4π as the light scattered along view rays.
   FogSkyLight(const FogLayer& fog, const SkyModel& sky, int altitudes = 64);
 
   // J(z) (W m⁻² nm⁻¹). Below the layer's bottom: the value at the bottom; above its top:
@@ -69,12 +73,21 @@ class FogSkyLight {
   Spectrum in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, int* steps) const;
 
   const FogLayer& layer() const { return fog_; }
+  // The light a unit of scattering at altitude z sends in the direction of travel of
+  // upward cosine `up` (W m⁻² sr⁻¹ nm⁻¹), the sun's single scattering left out: J(z)/4π
+  // in the paper's mode, the multiple-scattering field's otherwise.
+  Spectrum source(double z_m, double up) const;
+  // The factor on the fog's optical depth toward the sun for the beams (1 in the paper's
+  // mode; FogDiffuseField::sun_depth_scale otherwise).
+  double sun_depth_scale() const { return diffuse_ ? diffuse_->sun_depth_scale() : 1.0; }
+  const FogDiffuseField* diffuse_field() const { return diffuse_ ? &*diffuse_ : nullptr; }
 
  private:
   FogLayer fog_;
   std::vector<double> z_;                      // table altitudes
   std::vector<Spectrum> j_;                    // J at them
-  std::array<double, kSpectralBins> j_max_{};  // largest J of the table, per bin
+  std::optional<FogDiffuseField> diffuse_;     // with multiple scattering
+  std::array<double, kSpectralBins> j_max_{};  // the largest source (per sr), per bin
   double j_max_mean_ = 0.0;                    // its bin mean: Eq. 14's scalar scale
   Spectrum unattenuated_;
 };

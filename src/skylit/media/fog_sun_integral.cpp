@@ -36,7 +36,8 @@ constexpr double kHuge = 1e300;
 
 }  // namespace
 
-FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2) {
+FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2,
+                              double k) {
   FogSunSegment out;
   if (!(z_sun > 0.0)) return out;  // no direct sunlight with the sun at or below the horizon
   const RaySpan span = layer.clip(z_p, z_v, std::max(s1, 0.0), s2);
@@ -47,11 +48,11 @@ FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, dou
   out.lit = true;
   out.viewer_to_start = layer.column(z_p, z_v, 0.0, span.lo);
   out.segment = layer.piece_column(z_a, rise, length);
-  out.sun_from_start = layer.sun_column(z_a, z_sun);
-  out.sun_from_end = layer.sun_column(z_b, z_sun);
-  // (z_L − z_v)/z_L rather than 1 − z_v/z_L: the difference of nearly equal cosines is
-  // exact, so ε keeps its relative precision as z_v → z_L.
-  out.slope_mismatch = std::clamp((z_sun - z_v) / z_sun, -kHuge, kHuge);
+  out.sun_from_start = std::min(k * layer.sun_column(z_a, z_sun), kOpaqueColumnM);
+  out.sun_from_end = std::min(k * layer.sun_column(z_b, z_sun), kOpaqueColumnM);
+  // (z_L − k·z_v)/z_L rather than 1 − k·z_v/z_L: for k = 1 the difference of nearly
+  // equal cosines is exact, so ε keeps its relative precision as z_v → z_L.
+  out.slope_mismatch = std::clamp((z_sun - k * z_v) / z_sun, -kHuge, kHuge);
   return out;
 }
 
@@ -76,9 +77,9 @@ double fog_sun_weight(const FogLayer& layer, double z_p, double z_v, double z_su
 }
 
 Spectrum fog_sun_inscatter(const FogLayer& layer, const Vec3& viewpoint, const Vec3& view_dir, const Vec3& to_sun,
-                           double s1, double s2, const Spectrum& sun_irradiance) {
+                           double s1, double s2, const Spectrum& sun_irradiance, double sun_depth_scale) {
   Spectrum out;
-  const FogSunSegment segment = fog_sun_segment(layer, viewpoint.z, view_dir.z, to_sun.z, s1, s2);
+  const FogSunSegment segment = fog_sun_segment(layer, viewpoint.z, view_dir.z, to_sun.z, s1, s2, sun_depth_scale);
   if (!segment.lit) return out;
   // F(θ) is constant along the segment for parallel light (§5.1), so it factors out.
   const double scale = layer.single_scattering_albedo() * layer.phase(dot(view_dir, to_sun));

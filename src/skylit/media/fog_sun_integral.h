@@ -25,12 +25,17 @@ struct FogSunSegment {
   bool lit = false;              // false: no part in the layer, or the sun at/below the horizon
   double viewer_to_start = 0.0;  // from the viewpoint to a (t(a) = σ·this)
   double segment = 0.0;          // from a to b
-  double sun_from_start = 0.0;   // from z(a) toward the sun (t'(a) = σ·this)
-  double sun_from_end = 0.0;     // from z(b) toward the sun
-  double slope_mismatch = 0.0;   // ε = 1 − z_v/z_L: d(t + t')/ds = ε·τ(s)
+  double sun_from_start = 0.0;   // k × the column from z(a) toward the sun (k·t'(a) = σ·this)
+  double sun_from_end = 0.0;     // the same from z(b)
+  double slope_mismatch = 0.0;   // ε = 1 − k·z_v/z_L: d(t + k·t')/ds = ε·τ(s)
 };
 
-FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2);
+// `sun_depth_scale` k multiplies the fog's optical depth toward the sun: 1 for the
+// direct beam alone, 1 − ωf to keep the light of the phase function's forward spike in
+// it (δ-M scaling, media/fog_diffuse_field.h). The closed form holds for any k: then
+// d(t + k·t')/ds = (1 − k·z_v/z_L)·τ(s).
+FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2,
+                              double sun_depth_scale = 1.0);
 
 // ∫ σρ(s)·e^(−t'(s))·e^(−t(s)) ds over the segment for an extinction at unit density σ
 // (m⁻¹): a pure number in [0, 1]. Finite and ≥ 0 for any finite input.
@@ -45,6 +50,6 @@ double fog_sun_weight(const FogLayer& layer, double z_p, double z_v, double z_su
 // unit direction `to_sun` whose irradiance on a plane facing the sun, without fog, is
 // `sun_irradiance` (W m⁻² nm⁻¹): ω·F(θ)·E·weight, cos θ = view_dir·to_sun.
 Spectrum fog_sun_inscatter(const FogLayer& layer, const Vec3& viewpoint, const Vec3& view_dir, const Vec3& to_sun,
-                           double s1, double s2, const Spectrum& sun_irradiance);
+                           double s1, double s2, const Spectrum& sun_irradiance, double sun_depth_scale = 1.0);
 
 }  // namespace skylit

@@ -61,7 +61,7 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
   if (sun[kSpectralBins - 1] <= 0.0f) return sun;
   if (scene_.tracer().occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_}))
     return Irradiance(0.0f);
-  Irradiance reaching = scene_.fog() ? sun * scene_.fog()->sun_transmittance(point.position) : sun;
+  Irradiance reaching = scene_.fog() ? sun * scene_.fog()->sun_beam_transmittance(point.position) : sun;
   if (scene_.clouds())  // the clouds' shadows
     reaching *= static_cast<float>(scene_.clouds()->sun_transmittance(point.position));
   return reaching;

@@ -125,7 +125,8 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
   if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
     for (const Interval& lit : shadows_.sunlit_intervals(ray, inside.lo, std::min(inside.hi, 1e12))) {
-      in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end, sun_above_fog_);
+      in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end, sun_above_fog_,
+                                        sky_light_.sun_depth_scale());
     }
   }
   // Sky light, everywhere along it (the paper's assumption: no shadows for sky light);
@@ -142,6 +143,11 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
 Transmittance FogMedium::sun_transmittance(const Vec3& point) const {
   if (to_sun_.z <= 0) return Transmittance(0.0f);
   return Transmittance(layer_.transmittance(layer_.sun_column(point.z, to_sun_.z)));
+}
+
+Transmittance FogMedium::sun_beam_transmittance(const Vec3& point) const {
+  if (to_sun_.z <= 0) return Transmittance(0.0f);
+  return Transmittance(layer_.transmittance(sky_light_.sun_depth_scale() * layer_.sun_column(point.z, to_sun_.z)));
 }
 
 Transmittance FogMedium::sky_light_share(double z) const {

@@ -44,11 +44,17 @@ class FogMedium {
 
   // The fog's transmittance toward the sun from a point (0 if the sun is down).
   Transmittance sun_transmittance(const Vec3& point) const;
+  // The same for the fast method's sunlit surfaces: with multiple scattering the light
+  // of the phase function's forward part stays in the beam (the scaled depth of
+  // media/fog_diffuse_field.h), as in the beams of the fog itself.
+  Transmittance sun_beam_transmittance(const Vec3& point) const;
   // The share of the sky light that still reaches altitude z through the fog, per bin
   // (J(z) over J without fog).
   Transmittance sky_light_share(double z) const;
 
   const FogLayer& layer() const { return layer_; }
+  // The factor on the optical depth toward the sun of the beams (FogSkyLight).
+  double sun_depth_scale() const { return sky_light_.sun_depth_scale(); }
 
  private:
   FogLayer layer_;

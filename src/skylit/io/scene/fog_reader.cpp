@@ -43,7 +43,7 @@ void check_densest_point(const FogLayer& layer, const JsonReader& j) {
 FogSettings read_fog(const JsonReader& j) {
   j.allow_only({"density_at_ground", "visibility_m", "scale_height_m", "bottom_m", "top_m",
                 "unit_density_extinction_per_m", "reference_wavelength_nm", "wavelength_exponent",
-                "single_scattering_albedo", "phase", "droplet_diameter_um", "asymmetry"});
+                "single_scattering_albedo", "phase", "droplet_diameter_um", "asymmetry", "multiple_scattering"});
   FogSettings fog;
   if (j.has("density_at_ground") && j.has("visibility_m")) j.fail("give density_at_ground or visibility_m, not both");
   if (auto d = j.optional("density_at_ground")) fog.density_at_ground = d->number_in(0, 1e6);
@@ -64,6 +64,7 @@ FogSettings read_fog(const JsonReader& j) {
                                                                                  : FogPhase::henyey_greenstein;
   if (auto d = j.optional("droplet_diameter_um")) fog.droplet_diameter_um = d->number_in(5, 50);
   if (auto g = j.optional("asymmetry")) fog.asymmetry = g->number_in(-0.99, 0.99);
+  if (auto m = j.optional("multiple_scattering")) fog.multiple_scattering = m->boolean();
   // The layer checks the rest (and names the field) when it is built.
   std::optional<FogLayer> layer;
   try {

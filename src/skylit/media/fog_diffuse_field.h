@@ -1,0 +1,91 @@
+// Multiple scattering in the fog layer (issue 13): the diffuse radiance inside a flat,
+// horizontally uniform layer lit by the sun and the sky at its top and resting on a
+// Lambertian ground, from one-dimensional radiative transfer solved per spectral bin.
+//
+// Method (docs/fog.md, "Multiple scattering"):
+// - The layer's phase function and albedo do not change with altitude, so in the
+//   coordinate "optical depth from the top" any density profile is a homogeneous slab.
+// - δ-M scaling (Wiscombe 1977, J. Atmos. Sci. 34:1408): the phase function's Legendre
+//   moments χ_l are cut at 2N, a fraction f = χ_2N of the scattering going into a forward
+//   spike that is treated as not scattered at all. The slab's optical depth becomes
+//   (1 − ωf)τ, its albedo ω(1 − f)/(1 − ωf), its phase function the smooth rest.
+// - Discrete ordinates: N Gauss–Legendre cosines per hemisphere (double Gauss), the
+//   azimuthal mean (m = 0) of the field only. Between levels, each stream is integrated
+//   along its characteristic with a source linear in depth (positive weights for any
+//   layer thickness); with the sky at the top and the ground's reflection at the bottom
+//   this is one banded linear system per distinct extinction (one for grey fog).
+// - The field toward any direction is then the formal solution along it (the "source
+//   function integration"), and the light a unit of scattering sends toward a direction
+//   is f·L(u) + (1 − f)·∫p'L: what replaces Eq. 11's single-scattered source.
+// - The sun's direct beam with the forward spike's light is the beam attenuated by the
+//   scaled depth (1 − ωf)τ: the beams of Eq. 21 carry it with the true phase function.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "skylit/media/fog_layer.h"
+#include "skylit/spectrum/spectrum.h"
+
+namespace skylit {
+
+// What lights the layer.
+struct FogLayerLighting {
+  // The sky's radiance entering the top, averaged over azimuth, toward a downward
+  // direction whose cosine with the nadir is mu (0 < mu ≤ 1).
+  std::function<Spectrum(double mu)> sky;
+  Spectrum sun_irradiance;   // normal to the beam at the top (W m⁻² nm⁻¹)
+  double sun_cosine = 0;     // μ0; ≤ 0: no sun
+  double ground_albedo = 0;  // Lambertian, grey, at the layer's bottom
+};
+
+// Legendre moments χ_0 … χ_count−1 of a phase function normalised over the sphere
+// (χ_0 = 1, χ_1 = mean cosine), by quadrature on panels crowding toward the forward
+// direction, where droplets' diffraction peaks are a fraction of a degree wide.
+std::vector<double> phase_legendre_moments(const std::function<double(double)>& phase, int count);
+
+class FogDiffuseField {
+ public:
+  static constexpr int kStreams = 8;                   // per hemisphere (N)
+  static constexpr int kDirectionsPerHemisphere = 32;  // of the output table
+
+  FogDiffuseField(const FogLayer& layer, const FogLayerLighting& lighting);
+
+  // f of δ-M and the factor (1 − ωf) on the fog's optical depth toward the sun that
+  // keeps the forward spike's light in the direct beam.
+  double forward_fraction() const { return f_; }
+  double sun_depth_scale() const { return 1.0 - omega_ * f_; }
+
+  // The light a unit of scattering at altitude z sends in the direction of travel with
+  // upward cosine `up` (per steradian): ∫ p(Θ) L_diffuse dω, with the sun's single
+  // scattering left out (the beams carry it). W m⁻² sr⁻¹ nm⁻¹ per unit scattering; the
+  // paper's isotropic J(z)/4π is its single-scattering, isotropic counterpart.
+  Spectrum scattered(double z_m, double up) const;
+  // The diffuse radiance itself toward the same direction (for tests).
+  Spectrum radiance(double z_m, double up) const;
+  // The diffuse irradiance on a horizontal plane facing up (downward flux) at z.
+  Spectrum downward_irradiance(double z_m) const;
+  // The largest value `scattered` takes, per bin.
+  const std::array<double, kSpectralBins>& largest() const { return largest_; }
+
+ private:
+  // The level at or above z (in column from the top) and the weight of the next one.
+  struct LevelWeight {
+    size_t below;
+    float above;
+  };
+  LevelWeight level_at(double z_m) const;
+  Spectrum lookup(const std::vector<Spectrum>& table, double z_m, double up) const;
+
+  FogLayer layer_;
+  double omega_, f_;
+  std::vector<double> column_;                  // column from the top (m) at each level, increasing
+  std::vector<double> direction_;               // output directions' upward cosines, increasing
+  std::vector<Spectrum> scattered_, radiance_;  // [level][direction]
+  std::vector<Spectrum> downward_;              // [level]
+  std::array<double, kSpectralBins> largest_{};
+};
+
+}  // namespace skylit

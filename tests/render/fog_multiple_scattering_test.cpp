@@ -1,0 +1,115 @@
+// The fast method's fog with multiple scattering (media/fog_diffuse_field.h) against the
+// path-traced reference (render.integrator = "path"): a homogeneous fog layer 100 m
+// deep, the camera in it at 1.6 m, the real sky above, over a black ground (the
+// atmosphere's ground albedo 0, so that the path tracer's far ground below the fog and
+// the fast method's bottom boundary are the same). The fog's luminance at several view
+// elevations, for optical depths and sun altitudes. CI runs a subset; the full grid of
+// issue 13 (optical depths 0.1, 1, 3, 10, 30; sun 10°, 30°, 60°; five elevations; toward
+// and away from the sun) runs with SKYLIT_FOG_MS_FULL=1 and prints every ratio.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <vector>
+
+#include "skylit/render/path_integrator.h"
+#include "skylit/render/renderer.h"
+#include "skylit/spectrum/cie.h"
+
+namespace skylit {
+namespace {
+
+constexpr double kTop = 100;
+
+// `asymmetry` < 1: a Henyey–Greenstein fog of that g; otherwise the droplet fit.
+Scene fog_scene(double optical_depth, double sun_altitude_deg, double asymmetry) {
+  Scene scene;
+  scene.camera = Camera{{0, 0, 1.6}, {0, 100, 1.6}, {0, 0, 1}, 50.0};
+  scene.sun = Sun{sun_altitude_deg, 180};
+  scene.atmosphere.ground_albedo = 0.0;
+  FogSettings fog;
+  fog.density_at_ground = 1.0;
+  fog.unit_density_extinction_per_m = optical_depth / kTop;
+  fog.scale_height_m = std::numeric_limits<double>::infinity();
+  fog.bottom_altitude_m = 0;
+  fog.top_altitude_m = kTop;
+  if (asymmetry < 1) {
+    fog.phase = FogPhase::henyey_greenstein;
+    fog.asymmetry = asymmetry;
+  }
+  fog.multiple_scattering = !std::getenv("SKYLIT_FOG_MS_PAPER");  // the grid in the paper's mode
+  scene.fog = fog;
+  return scene;
+}
+
+struct Estimate {
+  double mean, standard_error;
+};
+
+Estimate path_luminance(const PathIntegrator& path, const Ray& ray, int paths, uint64_t seed) {
+  double sum = 0, squares = 0;
+  for (int k = 0; k < paths; ++k) {
+    CounterRandom random(seed, 0, static_cast<uint64_t>(k));
+    const double v = luminance(path.sample(ray, random));
+    sum += v;
+    squares += v * v;
+  }
+  const double mean = sum / paths;
+  return {mean, std::sqrt(std::max(0.0, squares / paths - mean * mean) / (paths - 1))};
+}
+
+// The fog's luminance from both methods at the given elevations and view azimuths;
+// the fast one within 10 % plus three standard errors of the reference. Returns the
+// worst |ratio − 1|.
+double compare(double optical_depth, double sun_altitude_deg, double asymmetry, const std::vector<double>& elevations,
+               const std::vector<double>& azimuths, int paths) {
+  const Scene scene = fog_scene(optical_depth, sun_altitude_deg, asymmetry);
+  const Renderer fast(scene);
+  const PathIntegrator path(fast.prepared());
+  double worst = 0;
+  for (double azimuth : azimuths)
+    for (double elevation : elevations) {
+      const Ray ray{scene.camera.position, direction_from_altitude_azimuth(elevation, azimuth)};
+      const double expected = luminance(fast.radiance(ray));
+      const Estimate reference = path_luminance(path, ray, paths, 17);
+      const double ratio = expected / reference.mean;
+      worst = std::max(worst, std::abs(ratio - 1));
+      std::printf(
+          "[FogMS] g %.2f tau %5.1f sun %4.0f view az %4.0f el %4.0f: fast %10.1f path %10.1f ± %7.1f cd/m2, ratio "
+          "%.3f\n",
+          asymmetry, optical_depth, sun_altitude_deg, azimuth, elevation, expected, reference.mean,
+          reference.standard_error, ratio);
+      EXPECT_NEAR(expected, reference.mean, 0.1 * reference.mean + 3 * reference.standard_error)
+          << "τ " << optical_depth << ", sun " << sun_altitude_deg << "°, view " << azimuth << "°/" << elevation << "°";
+    }
+  return worst;
+}
+
+TEST(FogMultipleScattering, MatchesThePathTracedReferenceWhereTheFieldIsAzimuthallySymmetric) {
+  // CI: the sun at 30°, three elevations, looking across the sun's plane (azimuth 90°
+  // from it), 4000 paths (standard errors 2–8 %). An isotropic fog (its scattered light
+  // has no azimuthal structure, so the m = 0 solution is the whole answer) at optical
+  // depths 1 and 10, and a Henyey–Greenstein fog of g = 0.85 at 10, where the light is
+  // diffuse enough: measured within 2 % and 6 %. In the paper's single scattering the
+  // same views read 0.1–44 % of the reference (docs/fog.md).
+  for (double tau : {1.0, 10.0}) compare(tau, 30, 0.0, {2, 30, 85}, {90}, 4000);
+  compare(10.0, 30, 0.85, {2, 30, 85}, {90}, 4000);
+}
+
+TEST(FogMultipleScattering, FullGridAgainstThePathTracedReference) {
+  // The droplet fit (15 µm). Known to fail at optical depths 1–10 (docs/fog.md): the
+  // azimuthal mean of the sun's multiply scattered light, which stays near the sun
+  // there, is spread over all azimuths.
+  if (!std::getenv("SKYLIT_FOG_MS_FULL")) GTEST_SKIP() << "set SKYLIT_FOG_MS_FULL=1 for the full grid";
+  const int paths = std::getenv("SKYLIT_FOG_MS_PATHS") ? std::atoi(std::getenv("SKYLIT_FOG_MS_PATHS")) : 20000;
+  double worst = 0;
+  for (double tau : {0.1, 1.0, 3.0, 10.0, 30.0})
+    for (double sun : {10.0, 30.0, 60.0})
+      worst = std::max(worst, compare(tau, sun, 1.0, {2, 10, 30, 60, 85}, {0, 90, 150}, paths));
+  std::printf("[FogMS] worst |fast/path - 1| over the grid: %.3f\n", worst);
+}
+
+}  // namespace
+}  // namespace skylit
