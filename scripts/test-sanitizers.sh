@@ -42,6 +42,7 @@ heavy=(
   # issue 20: some twenty small renders to compare merged shards with one process;
   # the shards' file format (XyzFile) and the animation (AnimateCommand) run here.
   SplitRuns.ShardsMergeIntoTheSameSweepAndAnimation
+  FogMultipleScattering.MatchesThePathTracedReferenceWhereTheFieldIsAzimuthallySymmetric
 )
 filter="-$(IFS=:; echo "${heavy[*]}")"
 
