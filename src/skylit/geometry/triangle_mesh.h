@@ -32,6 +32,10 @@ struct BoundingBox {
   Vec3 size() const { return hi - lo; }
 };
 
+// Texture coordinates (u, v) at a triangle's three corners: u to the right, v down from
+// the image's top row (glTF's convention; OBJ's v is turned over when read).
+using CornerUvs = std::array<std::array<float, 2>, 3>;
+
 struct TriangleMesh {
   std::vector<Vec3> vertices;
   // Indices into `vertices`; counter-clockwise seen from the outside (the side the

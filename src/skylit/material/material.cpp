@@ -22,11 +22,23 @@ CookTorranceMaterial::CookTorranceMaterial(const ComplexIor& ior, double roughne
     for (int i = 0; i < Spectrum::size(); ++i) f[i] = static_cast<float>(fresnel_reflectance(cos_theta, ior.at(i)));
     return f;
   });
+  set_diffuse_factor();
+}
+
+void CookTorranceMaterial::set_diffuse_factor() {
   const Spectrum f_normal = fresnel_->at(1.0);
   for (int i = 0; i < Spectrum::size(); ++i) {
     const float transmitted = 1.0f - f_normal[i];
-    diffuse_factor_[i] = std::min(diffuse_reflectance[i], transmitted) / transmitted;
+    diffuse_factor_[i] = std::min(diffuse_reflectance_[i], transmitted) / transmitted;
   }
+}
+
+CookTorranceMaterial CookTorranceMaterial::with_diffuse_reflectance(const Spectrum& diffuse_reflectance) const {
+  if (!has_diffuse_) return *this;
+  CookTorranceMaterial copy = *this;
+  copy.diffuse_reflectance_ = diffuse_reflectance;
+  copy.set_diffuse_factor();
+  return copy;
 }
 
 GlassMaterial::GlassMaterial(const ComplexIor& ior, double thickness_m, double roughness,

@@ -64,6 +64,10 @@ class CookTorranceMaterial {
   bool has_diffuse() const { return has_diffuse_; }
   bool is_mirror() const { return roughness_ < kMirrorRoughness; }
 
+  // The same coat over a body of another colour (a texel's), sharing the Fresnel
+  // table; a material without a body (a metal) is returned unchanged.
+  CookTorranceMaterial with_diffuse_reflectance(const Spectrum& diffuse_reflectance) const;
+
   // F(cos θ) of the interface.
   const AngularTable& fresnel() const { return *fresnel_; }
   // K = min(A, 1 − F(0)) / (1 − F(0)): the diffuse albedo is K (1 − F(θ_v)).
@@ -76,6 +80,8 @@ class CookTorranceMaterial {
   bool has_diffuse_;  // asked for every sample: kept rather than recomputed
   std::shared_ptr<const AngularTable> fresnel_;
   Spectrum diffuse_factor_;
+
+  void set_diffuse_factor();
 };
 
 // A window pane of thickness d in air: reflectance R(θ) of its two surfaces with the
@@ -111,9 +117,13 @@ class GlassMaterial {
 
 using Material = std::variant<DiffuseMaterial, CookTorranceMaterial, GlassMaterial, RoadMaterial>;
 
+struct SurfaceAppearance;  // surface_appearance.h
+
 struct NamedMaterial {
   std::string name;
   Material material;
+  // What varies over the surface or shines (textures, emission); null for neither.
+  std::shared_ptr<const SurfaceAppearance> appearance{};
 };
 
 }  // namespace skylit

@@ -52,6 +52,10 @@ double beckmann_from_phong_exponent(double ns) { return std::sqrt(2.0 / (std::ma
 
 Material material_from_model(const ModelMaterial& m) {
   Rgb color = m.color_linear;
+  if (m.color_texture && m.kind == ModelMaterial::Kind::metal) {
+    const Rgba mean = m.color_texture->mean();
+    for (size_t i = 0; i < 3; ++i) color[i] *= mean[i];
+  }
   for (double& c : color) c = std::isfinite(c) ? std::clamp(c, 0.0, 1.0) : 0.0;
   const double roughness = std::isfinite(m.roughness) ? std::clamp(m.roughness, 0.0, 1.0) : 0.5;
   const double ior = std::isfinite(m.ior) ? std::clamp(m.ior, 1.0, 4.0) : 1.5;
@@ -73,6 +77,27 @@ Material material_from_model(const ModelMaterial& m) {
     }
   }
   return DiffuseMaterial{reflectance_from_linear_srgb(color)};
+}
+
+
+std::shared_ptr<const SurfaceAppearance> appearance_from_model(const ModelMaterial& m) {
+  SurfaceAppearance a;
+  const bool has_body = m.kind == ModelMaterial::Kind::diffuse || m.kind == ModelMaterial::Kind::coated;
+  if (has_body && m.color_texture) {
+    a.base_color = m.color_texture;
+    for (size_t i = 0; i < 3; ++i) {
+      const double c = m.color_linear[i];
+      a.base_color_factor[i] = std::isfinite(c) ? std::clamp(c, 0.0, 1.0) : 0.0;
+    }
+  }
+  for (size_t i = 0; i < 3; ++i) {
+    const double e = m.emission_cd_m2[i];
+    // Up to 1e9 cd/m², the sun's disc: beyond any lit surface, and finite in float.
+    a.emission_cd_m2[i] = std::isfinite(e) ? std::clamp(e, 0.0, 1e9) : 0.0;
+  }
+  if (a.emissive()) a.emission = m.emission_texture;
+  if (!a.textured() && !a.emissive()) return nullptr;
+  return std::make_shared<const SurfaceAppearance>(std::move(a));
 }
 
 }  // namespace skylit

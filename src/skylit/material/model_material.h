@@ -4,9 +4,12 @@
 // every mapping); material_from_model does the physics once for both.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "skylit/material/material.h"
+#include "skylit/material/surface_appearance.h"
+#include "skylit/material/texture.h"
 #include "skylit/spectrum/color_space.h"
 
 namespace skylit {
@@ -24,6 +27,13 @@ struct ModelMaterial {
   double roughness = 0.5;           // Beckmann rms slope m (microfacet.h)
   double ior = 1.5;
   double thickness_m = 0.006;
+  // The base colour's texture (glTF baseColorTexture, MTL map_Kd), multiplied by
+  // color_linear; null for none.
+  std::shared_ptr<const Texture> color_texture{};
+  // Emitted luminance per linear sRGB channel, cd/m² (glTF emissiveFactor × strength,
+  // MTL Ke), times the emission texture where given (docs/model-materials.md).
+  Rgb emission_cd_m2{0, 0, 0};
+  std::shared_ptr<const Texture> emission_texture{};
 };
 
 const char* kind_name(ModelMaterial::Kind kind);
@@ -32,7 +42,13 @@ const char* kind_name(ModelMaterial::Kind kind);
 // the body; metal → CookTorranceMaterial with n, k found so that the Fresnel
 // reflectance at normal incidence is `color` in every wavelength bin (see .cpp);
 // glass → GlassMaterial. Colours become smooth spectra by the Jakob–Hanika fit.
+// A metal's colour is color_linear × its texture's mean (metals are not textured per
+// point).
 Material material_from_model(const ModelMaterial& m);
+
+// What the model material adds that varies over the surface or shines; null when it
+// has neither a base-colour texture (on a diffuse or coated kind) nor emission.
+std::shared_ptr<const SurfaceAppearance> appearance_from_model(const ModelMaterial& m);
 
 // n and k of a conductor whose normal-incidence reflectance is r and whose
 // reflectance toward grazing is tinted by g (O. Gulbrandsen, "Artist friendly metallic

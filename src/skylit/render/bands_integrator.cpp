@@ -71,7 +71,9 @@ Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) cons
   const SurfacePoint point = scene_.surface_point(ray, hit);
   const Irradiance irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
                                 sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
-  return lambertian_radiance(diffuse_albedo(material_of(point), -dot(point.normal, ray.direction)), irradiance);
+  const PointMaterial material = scene_.material_at(point);
+  const Radiance reflected = lambertian_radiance(diffuse_albedo(material.get(), -dot(point.normal, ray.direction)), irradiance);
+  return point.emissive ? reflected + emitted_radiance(point.emission_cd_m2) : reflected;
 }
 
 CachedSkyLight BandsIntegrator::sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const {
@@ -94,7 +96,8 @@ Irradiance BandsIntegrator::irradiance(const SurfacePoint& point, const Irradian
 }
 
 Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const {
-  const Material& material = material_of(point);
+  const PointMaterial point_material = scene_.material_at(point);
+  const Material& material = point_material.get();
   const Vec3 to_viewer = -ray.direction;
   const Irradiance sun = sun_reaching(point);
   // Sky light, dimmed by any fog above the point.
@@ -111,6 +114,8 @@ Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const
   // Mirror part (window glass): what lies in the mirror direction.
   if (const std::optional<Reflectance> mirror = mirror_reflectance(material, point.normal, to_viewer))
     radiance += *mirror * mirrored(point, mirror_direction(point.normal, to_viewer));
+  // Light the surface gives off itself (a lit window, a sign).
+  if (point.emissive) radiance += emitted_radiance(point.emission_cd_m2);
   return radiance;
 }
 

@@ -211,7 +211,9 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     const SurfacePoint point = scene_.surface_point(ray, *hit);
     if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
     const Vec3 to_viewer = -ray.direction;
-    const Material& material = scene_.material(point.material);
+    const PointMaterial point_material = scene_.material_at(point);
+    const Material& material = point_material.get();
+    if (point.emissive) radiance += throughput * emitted_radiance(point.emission_cd_m2).spectrum();
     radiance += throughput * direct_light(point.position, Scatterer{ScattererKind::surface, &material, point.normal},
                                           to_viewer, random)
                                  .spectrum();

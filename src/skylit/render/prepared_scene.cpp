@@ -1,9 +1,19 @@
 #include "skylit/render/prepared_scene.h"
 
+#include <cmath>
+
+#include "skylit/core/angles.h"
+#include "skylit/spectrum/rgb_spectrum_table.h"
+
 namespace skylit {
+
+PointMaterial::PointMaterial(const Material& material, const SurfacePoint& point) : material_(material) {
+  if (point.has_color) textured_ = with_body_reflectance(material, rgb_spectrum_table().reflectance(point.color));
+}
 
 PreparedScene::PreparedScene(const Scene& scene)
     : scene_(scene),
+      pixel_angle_rad_(radians(scene.camera.vertical_fov_deg) / std::max(scene.render.height, 1)),
       to_sun_(direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg)),
       atmosphere_(scene.atmosphere),
       sky_(atmosphere_, to_sun_, scene.camera.position.z) {
@@ -40,6 +50,77 @@ void PreparedScene::shade_smooth(const SceneObject& object, const Hit& hit, cons
   point.position =
       shading_point({object.mesh.vertices[tri[0]], object.mesh.vertices[tri[1]], object.mesh.vertices[tri[2]]}, normals,
                     hit.u, hit.v);
+}
+
+}  // namespace skylit
+
+namespace skylit {
+namespace {
+
+// The change of texture coordinates along a step `d` within a triangle's plane: d
+// written as a e1 + b e2 in the triangle's edges, then a Δuv1 + b Δuv2. Zero for a
+// degenerate triangle.
+std::array<double, 2> uv_change(const Vec3& e1, const Vec3& e2, const std::array<double, 4>& duv, const Vec3& d) {
+  const double g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2);
+  const double det = g11 * g22 - g12 * g12;
+  if (!(std::abs(det) > 1e-30)) return {0.0, 0.0};
+  const double p1 = dot(d, e1), p2 = dot(d, e2);
+  const double a = (g22 * p1 - g12 * p2) / det, b = (g11 * p2 - g12 * p1) / det;
+  return {a * duv[0] + b * duv[2], a * duv[1] + b * duv[3]};
+}
+
+}  // namespace
+
+void PreparedScene::appearance_at(const SurfaceAppearance& appearance, const SceneObject& object, const Hit& hit,
+                                  const Ray& ray, SurfacePoint& point) const {
+  const std::array<float, 3> mean_color = [&] {
+    std::array<float, 3> c{};
+    if (appearance.base_color) {
+      const Rgba m = appearance.base_color->mean();
+      for (size_t i = 0; i < 3; ++i) c[i] = static_cast<float>(appearance.base_color_factor[i]) * m[i];
+    }
+    return c;
+  }();
+  Rgba color{mean_color[0], mean_color[1], mean_color[2], 1}, emission{1, 1, 1, 1};
+  if (!object.corner_uvs.empty()) {
+    const CornerUvs& uv = object.corner_uvs[hit.triangle];
+    const auto& tri = object.mesh.triangles[hit.triangle];
+    const Vec3& p0 = object.mesh.vertices[tri[0]];
+    const Vec3 e1 = object.mesh.vertices[tri[1]] - p0, e2 = object.mesh.vertices[tri[2]] - p0;
+    const std::array<double, 4> duv{uv[1][0] - uv[0][0], uv[1][1] - uv[0][1], uv[2][0] - uv[0][0],
+                                    uv[2][1] - uv[0][1]};
+    const double b1 = hit.u, b2 = hit.v, b0 = 1.0 - b1 - b2;
+    const double u = b0 * uv[0][0] + b1 * uv[1][0] + b2 * uv[2][0];
+    const double v = b0 * uv[0][1] + b1 * uv[1][1] + b2 * uv[2][1];
+    // The pixel's footprint on the triangle's plane: its width r across the view, and
+    // r / cos θ along it, where the plane is seen at an angle θ from its normal.
+    const double length_dir = length(ray.direction);
+    const Vec3 view = ray.direction / length_dir;
+    const Vec3& n = hit.geometric_normal;
+    const double r = hit.t * length_dir * pixel_angle_rad_;
+    const double cos_view = std::max(std::abs(dot(n, view)), 1e-4);
+    Vec3 across = cross(n, view);
+    if (!(length(across) > 1e-9)) across = std::abs(n.x) < 0.9 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0});
+    across = normalize(across);
+    const Vec3 along = normalize(cross(across, n));
+    const auto a = uv_change(e1, e2, duv, r * across), b = uv_change(e1, e2, duv, (r / cos_view) * along);
+    if (appearance.base_color) {
+      const Rgba t = appearance.base_color->filtered(u, v, a[0], a[1], b[0], b[1]);
+      for (size_t i = 0; i < 3; ++i) color[i] = static_cast<float>(appearance.base_color_factor[i]) * t[i];
+    }
+    if (appearance.emission) emission = appearance.emission->filtered(u, v, a[0], a[1], b[0], b[1]);
+  } else if (appearance.emission) {
+    emission = appearance.emission->mean();
+  }
+  if (appearance.textured()) {
+    point.has_color = true;
+    point.color = {color[0], color[1], color[2]};
+  }
+  if (appearance.emissive()) {
+    for (size_t i = 0; i < 3; ++i)
+      point.emission_cd_m2[i] = static_cast<float>(appearance.emission_cd_m2[i]) * emission[i];
+    point.emissive = point.emission_cd_m2[0] > 0 || point.emission_cd_m2[1] > 0 || point.emission_cd_m2[2] > 0;
+  }
 }
 
 }  // namespace skylit

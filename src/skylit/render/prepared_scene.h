@@ -5,17 +5,31 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/clouds/clouds_in_sky.h"
 #include "skylit/geometry/ray_tracer.h"
+#include "skylit/material/surface_appearance.h"
 #include "skylit/render/fog_medium.h"
 #include "skylit/render/scene_lamps.h"
 #include "skylit/render/surface_point.h"
 #include "skylit/scene/scene.h"
 
 namespace skylit {
+
+// The material at a surface point: the scene's, or at a textured point a copy whose body
+// has the texel's colour (surface_appearance.h, with_body_reflectance).
+class PointMaterial {
+ public:
+  PointMaterial(const Material& material, const SurfacePoint& point);
+  const Material& get() const { return textured_ ? *textured_ : material_; }
+
+ private:
+  const Material& material_;
+  std::optional<Material> textured_;
+};
 
 class PreparedScene {
  public:
@@ -35,7 +49,9 @@ class PreparedScene {
   // two-sided), with the material of the triangle it meets. On a smooth-shaded mesh the
   // normal is the interpolated shading normal and the point is lifted onto the curved
   // surface it describes, so that shadow rays do not cut the terminator into facets
-  // (geometry/vertex_normals.h).
+  // (geometry/vertex_normals.h). Where the material has textures, they are read with a
+  // filter as wide as a camera pixel seen at the hit's distance along the ray
+  // (appearance_at); where it shines, so does the point.
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const {
     const SceneObject& object = scene_.objects[hit.mesh_id];
     SurfacePoint point{ray.origin + hit.t * ray.direction, hit.geometric_normal, hit.t,
@@ -43,14 +59,22 @@ class PreparedScene {
     const bool front = dot(point.normal, ray.direction) <= 0;
     if (!front) point.normal = -point.normal;
     if (!object.corner_normals.empty()) shade_smooth(object, hit, ray, front, point);
+    if (const SurfaceAppearance* a = scene_.materials[point.material].appearance.get())
+      appearance_at(*a, object, hit, ray, point);
     return point;
   }
   const Material& material(uint32_t index) const { return scene_.materials[index].material; }
+  PointMaterial material_at(const SurfacePoint& point) const { return {material(point.material), point}; }
 
  private:
   static void shade_smooth(const SceneObject& object, const Hit& hit, const Ray& ray, bool front, SurfacePoint& point);
+  void appearance_at(const SurfaceAppearance& appearance, const SceneObject& object, const Hit& hit, const Ray& ray,
+                     SurfacePoint& point) const;
 
   const Scene& scene_;
+  // The angle a camera pixel spans, radians: the image's vertical field over its rows
+  // (exact at a perspective image's centre, and for fisheyes and panoramas on average).
+  double pixel_angle_rad_;
   RayTracer tracer_;  // mesh ids are the indices of scene_.objects
   Vec3 to_sun_;
   Atmosphere atmosphere_;

@@ -134,6 +134,9 @@ struct SceneObject {
   // Smooth shading normals at each triangle's corners (geometry/vertex_normals.h);
   // empty: shaded flat with the geometric normal.
   std::vector<CornerNormals> corner_normals{};
+  // Texture coordinates at each triangle's corners, for materials with textures; empty
+  // when the file gives none.
+  std::vector<CornerUvs> corner_uvs{};
   std::optional<ModelSource> source{};  // for mesh files
   std::optional<CitySource> city{};     // for city models
 

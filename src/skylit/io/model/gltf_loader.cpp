@@ -2,11 +2,15 @@
 // tinygltf: triangle-list primitives of every mesh instance in the scene, placed by
 // the node hierarchy, each triangle with its primitive's material (metallic-roughness
 // factors and the transmission, ior and volume extensions; docs/model-materials.md).
-// Everything else in the file is ignored. The file's own axes are kept (+Y up);
-// load_model_file turns them into skylit's frame.
+// Base-colour and emissive textures (PNG, JPEG: io/model/texture_file.h) with the
+// primitives' texture coordinates, and emission. Everything else in the file is
+// ignored. The file's own axes are kept (+Y up); load_model_file turns them into
+// skylit's frame.
 //
-// This is the one translation unit that compiles tinygltf's implementation. Images
-// are not decoded here: no stb_image, no image files.
+// This is the one translation unit that compiles tinygltf's implementation. tinygltf
+// hands over the image bytes it finds inside the file (buffer views, data URIs); images
+// in files beside it are read here; both are decoded by texture_file.h, only when a
+// material uses them.
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
@@ -27,6 +31,7 @@
 #include "skylit/core/text_file.h"
 #include "skylit/geometry/transform.h"
 #include "skylit/io/model/mesh_io.h"
+#include "skylit/io/model/texture_file.h"
 
 namespace skylit {
 namespace {
@@ -71,10 +76,21 @@ ModelMaterial model_material(const tinygltf::Material& m, size_t index) {
   } else {
     out.kind = ModelMaterial::Kind::coated;
   }
+  // emissiveFactor × KHR_materials_emissive_strength, taken as cd/m²
+  // (docs/model-materials.md).
+  const double strength = extension_number(m, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+  if (m.emissiveFactor.size() >= 3)
+    for (size_t i = 0; i < 3; ++i) out.emission_cd_m2[i] = m.emissiveFactor[i] * strength;
   return out;
 }
 
-bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// The encoded bytes of the images inside the file, by image index, as tinygltf finds
+// them; decoded later, only if a material uses them.
+using ImageBytes = std::map<int, std::vector<unsigned char>>;
+
+bool keep_image_bytes(tinygltf::Image*, const int index, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void* user) {
+  if (bytes != nullptr && size > 0) (*static_cast<ImageBytes*>(user))[index].assign(bytes, bytes + size);
   return true;
 }
 
@@ -153,9 +169,18 @@ struct AccessorView {
 
 class GltfReader {
  public:
-  GltfReader(const tinygltf::Model& model, std::string name) : model_(model), name_(std::move(name)) {
-    for (size_t i = 0; i < model_.materials.size(); ++i)
-      out_.materials.push_back(model_material(model_.materials[i], i));
+  GltfReader(const tinygltf::Model& model, std::string name, const ImageBytes& images,
+             std::filesystem::path folder)
+      : model_(model), name_(std::move(name)), images_(images), folder_(std::move(folder)) {
+    for (size_t i = 0; i < model_.materials.size(); ++i) {
+      const tinygltf::Material& m = model_.materials[i];
+      ModelMaterial material = model_material(m, i);
+      material.color_texture = texture(m.pbrMetallicRoughness.baseColorTexture.index);
+      if (material.color_texture) uv_set_[i] = m.pbrMetallicRoughness.baseColorTexture.texCoord;
+      material.emission_texture = texture(m.emissiveTexture.index);
+      if (material.emission_texture && !material.color_texture) uv_set_[i] = m.emissiveTexture.texCoord;
+      out_.materials.push_back(std::move(material));
+    }
   }
 
   LoadedModel read_scene() {
@@ -167,6 +192,7 @@ class GltfReader {
     else
       roots = root_nodes();
     for (int node : roots) visit(node, Transform::identity(), 0);
+    if (!any_uv_) out_.corner_uvs.clear();
     return std::move(out_);
   }
 
@@ -216,6 +242,7 @@ class GltfReader {
       const Part& part = mesh(node.mesh);
       out_.mesh.append(transformed(part.mesh, world));
       out_.triangle_material.insert(out_.triangle_material.end(), part.material.begin(), part.material.end());
+      out_.corner_uvs.insert(out_.corner_uvs.end(), part.uvs.begin(), part.uvs.end());
     }
     for (int child : node.children) visit(child, world, depth + 1);
   }
@@ -224,6 +251,7 @@ class GltfReader {
   struct Part {
     TriangleMesh mesh;
     std::vector<int32_t> material;
+    std::vector<CornerUvs> uvs;  // per triangle, zero without TEXCOORD
   };
 
   // A mesh, built once however many nodes use it.
@@ -235,7 +263,9 @@ class GltfReader {
       for (const auto& primitive : model_.meshes[index].primitives) {
         const TriangleMesh triangles = read_primitive(primitive);
         it->second.mesh.append(triangles);
-        it->second.material.insert(it->second.material.end(), triangles.triangles.size(), material_of(primitive));
+        const int32_t material = material_of(primitive);
+        it->second.material.insert(it->second.material.end(), triangles.triangles.size(), material);
+        read_uvs(primitive, material, triangles, it->second.uvs);
       }
     return it->second;
   }
@@ -284,6 +314,58 @@ class GltfReader {
     return mesh;
   }
 
+  // The texture coordinates of the set the primitive's material's texture uses, at each
+  // corner of the primitive's triangles (read again by index: read_primitive keeps
+  // only positions).
+  void read_uvs(const tinygltf::Primitive& primitive, int32_t material, const TriangleMesh& triangles,
+                std::vector<CornerUvs>& uvs) {
+    const auto set = uv_set_.find(material);
+    const auto attribute = primitive.attributes.find("TEXCOORD_" + std::to_string(set == uv_set_.end() ? 0 : set->second));
+    if (triangles.empty() || set == uv_set_.end() || attribute == primitive.attributes.end()) {
+      uvs.insert(uvs.end(), triangles.triangles.size(), CornerUvs{});
+      return;
+    }
+    const AccessorView t = view(attribute->second, "TEXCOORD");
+    if (t.components != 2) fail("a TEXCOORD accessor is not VEC2");
+    if (t.count < triangles.vertices.size()) fail("a TEXCOORD accessor has fewer elements than POSITION");
+    for (const auto& tri : triangles.triangles) {
+      CornerUvs corner{};
+      for (size_t k = 0; k < 3; ++k) {
+        const double u = t.get(tri[k], 0), v = t.get(tri[k], 1);
+        corner[k] = {std::isfinite(u) ? static_cast<float>(u) : 0.0f, std::isfinite(v) ? static_cast<float>(v) : 0.0f};
+      }
+      uvs.push_back(corner);
+    }
+    any_uv_ = true;
+  }
+
+  // The texture a material's textureInfo names, decoded once per image; null for none,
+  // and for an image file that cannot be found (listed as missing).
+  std::shared_ptr<const Texture> texture(int index) {
+    if (index < 0) return nullptr;
+    if (static_cast<size_t>(index) >= model_.textures.size())
+      fail("a material refers to texture " + std::to_string(index) + " which does not exist");
+    const int source = model_.textures[static_cast<size_t>(index)].source;
+    if (source < 0) return nullptr;  // an extension's image source (WebP, KTX2): not read
+    if (static_cast<size_t>(source) >= model_.images.size())
+      fail("texture " + std::to_string(index) + " refers to image " + std::to_string(source) + " which does not exist");
+    auto [it, added] = textures_.try_emplace(source);
+    if (!added) return it->second;
+    const tinygltf::Image& image = model_.images[static_cast<size_t>(source)];
+    const std::string where = name_ + ": image " + std::to_string(source);
+    if (const auto bytes = images_.find(source); bytes != images_.end()) {
+      it->second = decode_texture(bytes->second.data(), bytes->second.size(), TextureEncoding::srgb, where);
+    } else if (!image.uri.empty()) {
+      const std::filesystem::path file = folder_ / image.uri;
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(file, ec))
+        it->second = read_texture_file(file, TextureEncoding::srgb);
+      else
+        out_.missing_libraries.push_back(image.uri);
+    }
+    return it->second;
+  }
+
   AccessorView view(int accessor_index, const char* what) const {
     const std::string label = std::string(what) + " accessor " + std::to_string(accessor_index);
     if (accessor_index < 0 || static_cast<size_t>(accessor_index) >= model_.accessors.size())
@@ -325,6 +407,11 @@ class GltfReader {
   static constexpr size_t kMaxDepth = 1000;
   const tinygltf::Model& model_;
   std::string name_;
+  const ImageBytes& images_;
+  std::filesystem::path folder_;
+  std::map<int, std::shared_ptr<const Texture>> textures_;  // by image
+  std::map<int32_t, int> uv_set_;                          // by material: its texture's TEXCOORD set
+  bool any_uv_ = false;
   std::map<int, Part> meshes_;
   LoadedModel out_;
 };
@@ -334,7 +421,8 @@ class GltfReader {
 LoadedModel load_gltf_file(const std::filesystem::path& path) {
   const std::string name = path.string();
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&ignore_image, nullptr);
+  ImageBytes images;
+  loader.SetImageLoader(&keep_image_bytes, &images);
   tinygltf::FsCallbacks files{};
   files.FileExists = &file_exists;
   files.ExpandFilePath = &tinygltf::ExpandFilePath;
@@ -354,7 +442,7 @@ LoadedModel load_gltf_file(const std::filesystem::path& path) {
   for (const std::string& ext : model.extensionsRequired)
     if (!harmless_extension(ext))
       throw InputError(name + ": requires glTF extension " + ext + ", which skylit does not read");
-  return GltfReader(model, name).read_scene();
+  return GltfReader(model, name, images, path.parent_path()).read_scene();
 }
 
 }  // namespace skylit

@@ -59,6 +59,8 @@ LoadedModel load_model_file(const std::filesystem::path& path, UpAxis up_axis) {
   check(model.mesh, path);
   if (model.triangle_material.size() != model.mesh.triangles.size())  // a slip in a reader
     throw std::logic_error("load_model_file: a material per triangle is missing");
+  if (!model.corner_uvs.empty() && model.corner_uvs.size() != model.mesh.triangles.size())
+    throw std::logic_error("load_model_file: texture coordinates per triangle are missing");
   return model;
 }
 

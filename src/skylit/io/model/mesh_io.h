@@ -1,6 +1,7 @@
 // Loading triangle meshes from files: glTF 2.0 (.gltf, .glb) and Wavefront OBJ with
-// its MTL libraries. Geometry and each triangle's material are read; normals, UVs,
-// textures, cameras, lights and animation in the file are ignored.
+// its MTL libraries. Geometry, each triangle's material with its textures (PNG, JPEG)
+// and texture coordinates are read; normals, cameras, lights and animation in the file
+// are ignored.
 #pragma once
 
 #include <cstdint>
@@ -27,7 +28,11 @@ struct LoadedModel {
   // Per triangle of `mesh`: an index into `materials`, or kNoMaterial where the file
   // gives none (the scene's object material is used there).
   std::vector<int32_t> triangle_material;
-  // Material libraries the file names (OBJ `mtllib`) that could not be read.
+  // Per triangle of `mesh`, its corners' texture coordinates (zero where the file gives
+  // none); empty when the file gives none at all.
+  std::vector<CornerUvs> corner_uvs;
+  // Material libraries (OBJ `mtllib`) and texture images the file names that could not
+  // be read (the materials are then used without them).
   std::vector<std::string> missing_libraries;
 };
 

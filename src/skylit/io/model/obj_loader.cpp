@@ -2,8 +2,8 @@
 // concave ones too, are split into triangles by our ear clipping
 // (geometry/polygon_triangulation.h); tinyobjloader's own splitting cuts concave faces
 // wrongly. Each face takes its `usemtl` material from the `mtllib` libraries beside
-// the file (docs/model-materials.md gives the mapping). Lines, points, normals and UVs
-// are ignored.
+// the file (docs/model-materials.md gives the mapping), with its `map_Kd` and `map_Ke`
+// textures and the faces' texture coordinates. Lines, points and normals are ignored.
 // Vertex lines are also read here, in double precision, because tinyobjloader
 // (Debian's float build) reads an unparsable number such as "nan" as 0 without a
 // word, and rounds site coordinates (e.g. 500123.25 m east) to float.
@@ -11,6 +11,8 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -22,6 +24,7 @@
 #include "skylit/core/text_file.h"
 #include "skylit/geometry/polygon_triangulation.h"
 #include "skylit/io/model/mesh_io.h"
+#include "skylit/io/model/texture_file.h"
 
 namespace skylit {
 namespace {
@@ -128,8 +131,36 @@ ModelMaterial model_material(const tinyobj::material_t& m) {
   } else {
     out.kind = ModelMaterial::Kind::diffuse;
   }
+  // Ke is taken as cd/m² per channel, as glTF's emission (docs/model-materials.md).
+  out.emission_cd_m2 = {m.emission[0], m.emission[1], m.emission[2]};
   return out;
 }
+
+// A texture an MTL names, read once per file name from the model's folder; null for
+// none, and for a file that cannot be found (listed in `missing`).
+class ObjTextures {
+ public:
+  ObjTextures(std::filesystem::path folder, std::vector<std::string>& missing)
+      : folder_(std::move(folder)), missing_(missing) {}
+
+  std::shared_ptr<const Texture> get(const std::string& name) {
+    if (name.empty()) return nullptr;
+    auto [it, added] = cache_.try_emplace(name);
+    if (!added) return it->second;
+    std::error_code ec;
+    const std::filesystem::path file = folder_ / name;
+    if (std::filesystem::is_regular_file(file, ec))
+      it->second = read_texture_file(file, TextureEncoding::srgb);
+    else
+      missing_.push_back(name);
+    return it->second;
+  }
+
+ private:
+  std::filesystem::path folder_;
+  std::vector<std::string>& missing_;
+  std::map<std::string, std::shared_ptr<const Texture>> cache_;
+};
 
 }  // namespace
 
@@ -153,7 +184,23 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
   if (reader.Warning().find("invalid vertex index") != std::string::npos)
     throw InputError(name + ": a face refers to a vertex that does not exist");
 
-  for (const tinyobj::material_t& m : reader.GetMaterials()) model.materials.push_back(model_material(m));
+  ObjTextures textures(path.parent_path(), model.missing_libraries);
+  for (const tinyobj::material_t& m : reader.GetMaterials()) {
+    ModelMaterial material = model_material(m);
+    material.color_texture = textures.get(m.diffuse_texname);
+    material.emission_texture = textures.get(m.emissive_texname);
+    model.materials.push_back(std::move(material));
+  }
+  const auto& texcoords = reader.GetAttrib().texcoords;
+  // A corner's (u, v), v turned over (OBJ's v runs up from the image's bottom row);
+  // zero for a corner without one.
+  const auto uv = [&](const tinyobj::index_t& index) -> std::array<float, 2> {
+    const auto i = static_cast<size_t>(index.texcoord_index);
+    if (index.texcoord_index < 0 || 2 * i + 1 >= texcoords.size()) return {0.0f, 0.0f};
+    const float u = texcoords[2 * i], v = texcoords[2 * i + 1];
+    return {std::isfinite(u) ? u : 0.0f, std::isfinite(v) ? 1.0f - v : 0.0f};
+  };
+  const bool any_uv = !texcoords.empty();
   TriangleMesh& mesh = model.mesh;
   mesh.vertices = std::move(positions);
   // Should the two readers ever disagree on what is a vertex line (line
@@ -187,11 +234,15 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
         face.push_back(vertex(indices[first + k]));
         rings[0].push_back(mesh.vertices[face.back()]);
       }
+      const auto add = [&](size_t a, size_t b, size_t c) {
+        mesh.triangles.push_back({face[a], face[b], face[c]});
+        if (any_uv)
+          model.corner_uvs.push_back({uv(indices[first + a]), uv(indices[first + b]), uv(indices[first + c])});
+      };
       if (n == 3)
-        mesh.triangles.push_back({face[0], face[1], face[2]});
+        add(0, 1, 2);
       else
-        for (const TriangleIndices& t : triangulate_polygon_3d(rings))
-          mesh.triangles.push_back({face[t[0]], face[t[1]], face[t[2]]});
+        for (const TriangleIndices& t : triangulate_polygon_3d(rings)) add(t[0], t[1], t[2]);
       const bool known = material >= 0 && static_cast<size_t>(material) < model.materials.size();
       model.triangle_material.insert(model.triangle_material.end(), mesh.triangles.size() - before,
                                      known ? material : LoadedModel::kNoMaterial);

@@ -183,7 +183,8 @@ void assign_model_materials(const JsonReader& j, const LoadedModel& model, std::
         source.materials.push_back({file_material.name, materials[o->material].name, true});
       } else {
         it->second = static_cast<uint32_t>(materials.size());
-        materials.push_back({object.name + "/" + file_material.name, material_from_model(file_material)});
+        materials.push_back({object.name + "/" + file_material.name, material_from_model(file_material),
+                             appearance_from_model(file_material)});
         source.materials.push_back(
             {file_material.name, materials.back().name + " (" + kind_name(file_material.kind) + ")", false});
       }
@@ -234,6 +235,7 @@ std::vector<SceneObject> read_objects(const JsonReader& j, std::vector<NamedMate
       LoadedModel model = read_mesh(o, base_dir, *object.source);
       assign_model_materials(o, model, materials, overrides, override_used, object);
       object.mesh = std::move(model.mesh);
+      object.corner_uvs = std::move(model.corner_uvs);
       // Smooth normals in the placed mesh's frame; a mesh that is flat everywhere (to
       // 0.1°) keeps its geometric normals and needs no memory for them.
       const double crease = o.optional("crease_angle_deg") ? o.required("crease_angle_deg").number_in(0, 180) : 30.0;

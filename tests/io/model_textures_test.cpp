@@ -1,0 +1,134 @@
+// Textures and emission from model files reach the surface points: a texture read at a
+// known place on an OBJ + MTL quad and on a glTF quad gives that texel's colour, Ke and
+// emissiveFactor become the emitted luminance, and a missing image is listed, not fatal.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "../test_support.h"
+#include "skylit/io/image/image_encoders.h"
+#include "skylit/io/scene/scene_loader.h"
+#include "skylit/render/prepared_scene.h"
+#include "skylit/spectrum/cie.h"
+#include "skylit/spectrum/color_space.h"
+
+namespace skylit {
+namespace {
+
+using testing::TempDir;
+
+// 2 × 2 texels, top row red and green, bottom row blue and white (8-bit sRGB).
+void write_texture(const TempDir& dir, const std::string& name) {
+  const uint8_t rgb[] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+  const Bytes png = encode_png_rgb8(2, 2, rgb);
+  dir.write(name, std::string(png.begin(), png.end()));
+}
+
+std::string scene_json(const std::string& file, const std::string& up) {
+  return R"({"camera": {"position": [0, 0, 10], "look_at": [0, 0.001, 0]},
+    "sun": {"altitude_deg": 40, "azimuth_deg": 135},
+    "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
+    "objects": [{"type": "mesh", "name": "quad", "file": ")" +
+         file + R"(", "up_axis": ")" + up + R"(", "material": "white"}],
+    "render": {"width": 64, "height": 48}})";
+}
+
+// The surface point straight below (x, y), seen from 10 m above.
+SurfacePoint point_below(const PreparedScene& prepared, double x, double y) {
+  const Ray ray{{x, y, 10}, {0, 0, -1}};
+  const std::optional<Hit> hit = prepared.tracer().intersect(ray);
+  EXPECT_TRUE(hit.has_value());
+  return prepared.surface_point(ray, *hit);
+}
+
+void expect_color(const SurfacePoint& p, double r, double g, double b) {
+  ASSERT_TRUE(p.has_color);
+  // Bilinear at a texel's centre with a footprint of 0.01 texels: the texel itself.
+  EXPECT_NEAR(p.color[0], r, 1e-4);
+  EXPECT_NEAR(p.color[1], g, 1e-4);
+  EXPECT_NEAR(p.color[2], b, 1e-4);
+}
+
+TEST(ModelTextures, ObjMapKdAtKnownUvs) {
+  TempDir dir;
+  write_texture(dir, "tex.png");
+  // A 2 m quad on the ground with the image across it; OBJ's v runs up from the image's
+  // bottom row. Kd 0.5 scales the texels (as glTF's factor does).
+  dir.write("quad.mtl", "newmtl Painted\nKd 0.5 1 1\nmap_Kd tex.png\nKe 20 10 5\n");
+  dir.write("quad.obj",
+            "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl Painted\nf 1/1 2/2 3/3 4/4\n");
+  const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.obj", "z")));
+  const PreparedScene prepared(scene);
+  expect_color(point_below(prepared, -0.5, 0.5), 0.5, 0, 0);  // top left: red
+  expect_color(point_below(prepared, 0.5, 0.5), 0, 1, 0);     // top right: green
+  expect_color(point_below(prepared, -0.5, -0.5), 0, 0, 1);   // bottom left: blue
+  expect_color(point_below(prepared, 0.5, -0.5), 0.5, 1, 1);  // bottom right: white
+  // Half way between the left texels' centres: their mean (linear).
+  expect_color(point_below(prepared, -0.5, 0.0), 0.25, 0, 0.5);
+  // Ke: 20, 10, 5 cd/m² per channel; the emitted radiance has the colour's luminance.
+  const SurfacePoint p = point_below(prepared, 0.2, 0.3);
+  ASSERT_TRUE(p.emissive);
+  EXPECT_FLOAT_EQ(p.emission_cd_m2[0], 20);
+  const double y = xyz_from_linear_srgb({20, 10, 5}).y;
+  EXPECT_NEAR(luminance(emitted_radiance(p.emission_cd_m2)), y, 1e-3 * y);
+}
+
+// A glTF quad (y up: the file's x–z plane is skylit's ground) with its geometry in
+// quad.bin and the texture beside it, emissive by the strength extension.
+void write_gltf(const TempDir& dir, const std::string& image_uri) {
+  const float positions[] = {-1, 0, 1, 1, 0, 1, 1, 0, -1, -1, 0, -1};  // glTF +z is skylit's −y
+  const float uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};                         // v down from the top row
+  const uint16_t indices[] = {0, 1, 2, 0, 2, 3};
+  std::string bin(sizeof positions + sizeof uvs + sizeof indices, '\0');
+  std::memcpy(bin.data(), positions, sizeof positions);
+  std::memcpy(bin.data() + sizeof positions, uvs, sizeof uvs);
+  std::memcpy(bin.data() + sizeof positions + sizeof uvs, indices, sizeof indices);
+  dir.write("quad.bin", bin);
+  dir.write("quad.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+    "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]}],
+    "materials": [{"name": "Sign", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1],
+      "baseColorTexture": {"index": 0}, "metallicFactor": 0}, "emissiveFactor": [1, 0.5, 0.25],
+      "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 40}}}],
+    "textures": [{"source": 0}], "images": [{"uri": ")" +
+                               image_uri + R"("}],
+    "buffers": [{"uri": "quad.bin", "byteLength": 92}],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 32},
+                    {"buffer": 0, "byteOffset": 80, "byteLength": 12}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, 0, -1], "max": [1, 0, 1]},
+                  {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+                  {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}]})");
+}
+
+TEST(ModelTextures, GltfBaseColorTextureAndEmissiveStrength) {
+  TempDir dir;
+  write_texture(dir, "tex.png");
+  write_gltf(dir, "tex.png");
+  const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.gltf", "y")));
+  const PreparedScene prepared(scene);
+  expect_color(point_below(prepared, -0.5, 0.5), 1, 0, 0);
+  expect_color(point_below(prepared, 0.5, 0.5), 0, 1, 0);
+  expect_color(point_below(prepared, -0.5, -0.5), 0, 0, 1);
+  const SurfacePoint p = point_below(prepared, 0.5, -0.5);  // white texel: the factor × strength
+  ASSERT_TRUE(p.emissive);
+  EXPECT_FLOAT_EQ(p.emission_cd_m2[0], 40);
+  EXPECT_FLOAT_EQ(p.emission_cd_m2[1], 20);
+  EXPECT_FLOAT_EQ(p.emission_cd_m2[2], 10);
+}
+
+TEST(ModelTextures, AMissingImageIsListedAndABrokenOneIsAnError) {
+  TempDir dir;
+  write_gltf(dir, "nowhere.png");
+  const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.gltf", "y")));
+  ASSERT_TRUE(scene.objects[0].source.has_value());
+  EXPECT_EQ(scene.objects[0].source->missing_libraries, std::vector<std::string>{"nowhere.png"});
+  dir.write("broken.png", "\x89PNG\r\n\x1a\nnot really");
+  write_gltf(dir, "broken.png");
+  const std::string message =
+      testing::input_error_of([&] { load_scene(dir.write("broken.json", scene_json("quad.gltf", "y"))); });
+  EXPECT_NE(message.find("broken.png: not a PNG or JPEG image"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace skylit
