@@ -11,6 +11,7 @@ packages=(
   g++ cmake make pkg-config
   libembree-dev libtbb-dev libopenexr-dev libpng-dev
   nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev libcli11-dev
+  libstb-dev
   libgtest-dev libbenchmark-dev
   libproj-dev proj-bin
   chromium  # the HTML report's test opens it in a real browser (docs/report.md)
