@@ -78,7 +78,7 @@ TEST(ModelTextures, ObjMapKdAtKnownUvs) {
 // quad.bin and the texture beside it, emissive by the strength extension.
 void write_gltf(const TempDir& dir, const std::string& image_uri) {
   const float positions[] = {-1, 0, 1, 1, 0, 1, 1, 0, -1, -1, 0, -1};  // glTF +z is skylit's −y
-  const float uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};                         // v down from the top row
+  const float uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};                        // v down from the top row
   const uint16_t indices[] = {0, 1, 2, 0, 2, 3};
   std::string bin(sizeof positions + sizeof uvs + sizeof indices, '\0');
   std::memcpy(bin.data(), positions, sizeof positions);
@@ -92,7 +92,7 @@ void write_gltf(const TempDir& dir, const std::string& image_uri) {
       "baseColorTexture": {"index": 0}, "metallicFactor": 0}, "emissiveFactor": [1, 0.5, 0.25],
       "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 40}}}],
     "textures": [{"source": 0}], "images": [{"uri": ")" +
-                               image_uri + R"("}],
+                             image_uri + R"("}],
     "buffers": [{"uri": "quad.bin", "byteLength": 92}],
     "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 32},
                     {"buffer": 0, "byteOffset": 80, "byteLength": 12}],

@@ -62,12 +62,10 @@ TEST(Texture, AWideFootprintIsTheMeanOfWhatItCovers) {
   EXPECT_NEAR(t.filtered(6 * texel, 2 * texel, texel, 0, 0, texel)[0], 1.0, 1e-6);
   // 16 texels square: 4 × 4 squares, mean 0.5 wherever it lies (within the linear
   // encoding's 8-bit step, 0.002).
-  for (double u : {0.1, 0.37, 0.81})
-    EXPECT_NEAR(t.filtered(u, 0.4, 16 * texel, 0, 0, 16 * texel)[0], 0.5, 0.01) << u;
+  for (double u : {0.1, 0.37, 0.81}) EXPECT_NEAR(t.filtered(u, 0.4, 16 * texel, 0, 0, 16 * texel)[0], 0.5, 0.01) << u;
   // Long and thin (a grazing view): 32 texels along u, one across; 8 look-ups along u
   // each 4 texels wide cover 8 squares, half of them white.
-  for (double v : {0.1, 0.52})
-    EXPECT_NEAR(t.filtered(0.3, v, 32 * texel, 0, 0, texel)[0], 0.5, 0.06) << v;
+  for (double v : {0.1, 0.52}) EXPECT_NEAR(t.filtered(0.3, v, 32 * texel, 0, 0, texel)[0], 0.5, 0.06) << v;
   // Non-finite coordinates or footprints give the mean, not NaN.
   EXPECT_NEAR(t.filtered(std::nan(""), 0.1, texel, 0, 0, texel)[0], t.bilinear(0, 0, 0)[0], 1e-6);
   EXPECT_NEAR(t.filtered(0.1, 0.1, INFINITY, 0, 0, texel)[0], t.mean()[0], 1e-6);

@@ -42,8 +42,9 @@ XyzImage render_ground(const TempDir& dir, const std::string& file) {
   const Scene scene = load_scene(dir.write(file + ".json", R"({
     "camera": {"position": [0.3, 0.2, 1.6], "look_at": [0.3, 100, 1.0], "vertical_fov_deg": 30},
     "sun": {"altitude_deg": 35, "azimuth_deg": 200}, "materials": {},
-    "objects": [{"type": "mesh", "name": "ground", "file": ")" + file +
-                                                              R"(.obj", "up_axis": "z"}],
+    "objects": [{"type": "mesh", "name": "ground", "file": ")" +
+                                                               file +
+                                                               R"(.obj", "up_axis": "z"}],
     "render": {"width": 96, "height": 64, "samples_per_axis": 1}})"));
   const PreparedScene prepared(scene);
   const BandsIntegrator integrator(prepared);

@@ -12,8 +12,8 @@
 #include "skylit/core/embedded_data.h"
 #include "skylit/core/error.h"
 #include "skylit/spectrum/cie.h"
-#include "skylit/spectrum/illuminants.h"
 #include "skylit/spectrum/color_difference.h"
+#include "skylit/spectrum/illuminants.h"
 
 namespace skylit {
 namespace {

@@ -79,7 +79,6 @@ Material material_from_model(const ModelMaterial& m) {
   return DiffuseMaterial{reflectance_from_linear_srgb(color)};
 }
 
-
 std::shared_ptr<const SurfaceAppearance> appearance_from_model(const ModelMaterial& m) {
   SurfaceAppearance a;
   const bool has_body = m.kind == ModelMaterial::Kind::diffuse || m.kind == ModelMaterial::Kind::coated;

@@ -72,8 +72,9 @@ Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) cons
   const Irradiance irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
                                 sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   const PointMaterial material = scene_.material_at(point);
-  const Radiance reflected = lambertian_radiance(diffuse_albedo(material.get(), -dot(point.normal, ray.direction)), irradiance);
-  return point.emissive ? reflected + emitted_radiance(point.emission_cd_m2) : reflected;
+  // No emission here: an emitting surface is seen, but does not light others (a sky band
+  // element's ray that meets a small lit window would stand for the whole element).
+  return lambertian_radiance(diffuse_albedo(material.get(), -dot(point.normal, ray.direction)), irradiance);
 }
 
 CachedSkyLight BandsIntegrator::sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const {

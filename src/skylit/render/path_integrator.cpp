@@ -213,7 +213,9 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     const Vec3 to_viewer = -ray.direction;
     const PointMaterial point_material = scene_.material_at(point);
     const Material& material = point_material.get();
-    if (point.emissive) radiance += throughput * emitted_radiance(point.emission_cd_m2).spectrum();
+    // Emission is seen from the camera only, as the bands integrator shows it: surfaces
+    // that shine do not light others (docs/model-materials.md).
+    if (event == 0 && point.emissive) radiance += throughput * emitted_radiance(point.emission_cd_m2).spectrum();
     radiance += throughput * direct_light(point.position, Scatterer{ScattererKind::surface, &material, point.normal},
                                           to_viewer, random)
                                  .spectrum();

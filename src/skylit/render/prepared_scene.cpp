@@ -87,8 +87,7 @@ void PreparedScene::appearance_at(const SurfaceAppearance& appearance, const Sce
     const auto& tri = object.mesh.triangles[hit.triangle];
     const Vec3& p0 = object.mesh.vertices[tri[0]];
     const Vec3 e1 = object.mesh.vertices[tri[1]] - p0, e2 = object.mesh.vertices[tri[2]] - p0;
-    const std::array<double, 4> duv{uv[1][0] - uv[0][0], uv[1][1] - uv[0][1], uv[2][0] - uv[0][0],
-                                    uv[2][1] - uv[0][1]};
+    const std::array<double, 4> duv{uv[1][0] - uv[0][0], uv[1][1] - uv[0][1], uv[2][0] - uv[0][0], uv[2][1] - uv[0][1]};
     const double b1 = hit.u, b2 = hit.v, b0 = 1.0 - b1 - b2;
     const double u = b0 * uv[0][0] + b1 * uv[1][0] + b2 * uv[2][0];
     const double v = b0 * uv[0][1] + b1 * uv[1][1] + b2 * uv[2][1];

@@ -27,8 +27,8 @@ void locate(float value, int& cell, float& t) {
     for (int i = 0; i < kRgbTableNodes; ++i) values[static_cast<size_t>(i)] = rgb_table_node_value(i);
     return values;
   }();
-  cell = std::clamp(static_cast<int>(std::upper_bound(nodes.begin(), nodes.end(), v) - nodes.begin()) - 1, 0,
-                    kLast - 1);
+  cell =
+      std::clamp(static_cast<int>(std::upper_bound(nodes.begin(), nodes.end(), v) - nodes.begin()) - 1, 0, kLast - 1);
   const double lo = rgb_table_node_value(cell), hi = rgb_table_node_value(cell + 1);
   t = static_cast<float>(std::clamp((v - lo) / (hi - lo), 0.0, 1.0));
 }
@@ -45,8 +45,8 @@ std::vector<SigmoidPolynomial> fit_rgb_table_nodes() {
   tbb::parallel_for(0, kRgbTableNodes, [&](int b) {
     for (int g = 0; g < kRgbTableNodes; ++g)
       for (int r = 0; r < kRgbTableNodes; ++r)
-        nodes[node_index(r, g, b)] = fit_reflectance_to_linear_srgb(
-            {rgb_table_node_value(r), rgb_table_node_value(g), rgb_table_node_value(b)});
+        nodes[node_index(r, g, b)] =
+            fit_reflectance_to_linear_srgb({rgb_table_node_value(r), rgb_table_node_value(g), rgb_table_node_value(b)});
   });
   return nodes;
 }
@@ -77,8 +77,8 @@ std::vector<SigmoidPolynomial> parse_rgb_table_csv(std::string_view text) {
     if (line.empty()) continue;
     int r = -1, g = -1, b = -1;
     char c0[40], c1[40], c2[40];
-    if (std::sscanf(line.c_str(), "%d,%d,%d,%39[^,],%39[^,],%39s", &r, &g, &b, c0, c1, c2) != 6 || r < 0 ||
-        g < 0 || b < 0 || r > kLast || g > kLast || b > kLast)
+    if (std::sscanf(line.c_str(), "%d,%d,%d,%39[^,],%39[^,],%39s", &r, &g, &b, c0, c1, c2) != 6 || r < 0 || g < 0 ||
+        b < 0 || r > kLast || g > kLast || b > kLast)
       throw InputError("rgb_spectrum_coefficients.csv: malformed line: " + line.substr(0, 60));
     const size_t i = node_index(r, g, b);
     nodes[i] = {std::strtod(c0, nullptr), std::strtod(c1, nullptr), std::strtod(c2, nullptr)};

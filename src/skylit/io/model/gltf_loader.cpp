@@ -169,8 +169,7 @@ struct AccessorView {
 
 class GltfReader {
  public:
-  GltfReader(const tinygltf::Model& model, std::string name, const ImageBytes& images,
-             std::filesystem::path folder)
+  GltfReader(const tinygltf::Model& model, std::string name, const ImageBytes& images, std::filesystem::path folder)
       : model_(model), name_(std::move(name)), images_(images), folder_(std::move(folder)) {
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const tinygltf::Material& m = model_.materials[i];
@@ -320,7 +319,8 @@ class GltfReader {
   void read_uvs(const tinygltf::Primitive& primitive, int32_t material, const TriangleMesh& triangles,
                 std::vector<CornerUvs>& uvs) {
     const auto set = uv_set_.find(material);
-    const auto attribute = primitive.attributes.find("TEXCOORD_" + std::to_string(set == uv_set_.end() ? 0 : set->second));
+    const auto attribute =
+        primitive.attributes.find("TEXCOORD_" + std::to_string(set == uv_set_.end() ? 0 : set->second));
     if (triangles.empty() || set == uv_set_.end() || attribute == primitive.attributes.end()) {
       uvs.insert(uvs.end(), triangles.triangles.size(), CornerUvs{});
       return;
@@ -410,7 +410,7 @@ class GltfReader {
   const ImageBytes& images_;
   std::filesystem::path folder_;
   std::map<int, std::shared_ptr<const Texture>> textures_;  // by image
-  std::map<int32_t, int> uv_set_;                          // by material: its texture's TEXCOORD set
+  std::map<int32_t, int> uv_set_;                           // by material: its texture's TEXCOORD set
   bool any_uv_ = false;
   std::map<int, Part> meshes_;
   LoadedModel out_;
