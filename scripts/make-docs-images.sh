@@ -49,4 +49,7 @@ $skylit render examples/city_block.json --quiet --set render.width=960 --set ren
 # A city block read from CityGML in PLATEAU's form, on its own TIN relief
 # (examples/models/city_block.gml, from scripts/make-citygml-example.py).
 $skylit render examples/citygml_block.json --quiet --set render.width=960 --set render.height=540 -o "$out/citygml-block.png"
+# The same house at night, its ground floor's windows lit (emission, docs/model-materials.md).
+$skylit render examples/house-night.json --quiet --set render.width=960 --set render.height=540 \
+  -o "$out/house-night.png"
 echo "Remade $out/"
