@@ -24,12 +24,12 @@ void write_texture(const TempDir& dir, const std::string& name) {
   dir.write(name, std::string(png.begin(), png.end()));
 }
 
-std::string scene_json(const std::string& file, const std::string& up) {
+std::string scene_json(const std::string& file, const std::string& up, const std::string& more = "") {
   return R"({"camera": {"position": [0, 0, 10], "look_at": [0, 0.001, 0]},
     "sun": {"altitude_deg": 40, "azimuth_deg": 135},
     "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
     "objects": [{"type": "mesh", "name": "quad", "file": ")" +
-         file + R"(", "up_axis": ")" + up + R"(", "material": "white"}],
+         file + R"(", "up_axis": ")" + up + R"(", "material": "white")" + more + R"(}],
     "render": {"width": 64, "height": 48}})";
 }
 
@@ -66,6 +66,13 @@ TEST(ModelTextures, ObjMapKdAtKnownUvs) {
   expect_color(point_below(prepared, 0.5, -0.5), 0.5, 1, 1);  // bottom right: white
   // Half way between the left texels' centres: their mean (linear).
   expect_color(point_below(prepared, -0.5, 0.0), 0.25, 0, 0.5);
+  // Mirrored left to right (the winding reversed to keep the normal up): the texture
+  // follows its corners, so red is now top right.
+  const Scene mirrored =
+      load_scene(dir.write("mirrored.json", scene_json("quad.obj", "z", R"(, "transform": {"scale": [-1, 1, 1]})")));
+  const PreparedScene prepared_mirror(mirrored);
+  expect_color(point_below(prepared_mirror, 0.5, 0.5), 0.5, 0, 0);
+  expect_color(point_below(prepared_mirror, -0.5, -0.5), 0.5, 1, 1);
   // Ke: 20, 10, 5 cd/m² per channel; the emitted radiance has the colour's luminance.
   const SurfacePoint p = point_below(prepared, 0.2, 0.3);
   ASSERT_TRUE(p.emissive);

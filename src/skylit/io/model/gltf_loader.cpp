@@ -241,7 +241,9 @@ class GltfReader {
       const Part& part = mesh(node.mesh);
       out_.mesh.append(transformed(part.mesh, world));
       out_.triangle_material.insert(out_.triangle_material.end(), part.material.begin(), part.material.end());
-      out_.corner_uvs.insert(out_.corner_uvs.end(), part.uvs.begin(), part.uvs.end());
+      std::vector<CornerUvs> uvs = part.uvs;
+      if (world.determinant() < 0) reverse_corner_order(uvs);  // as transformed() turned the triangles
+      out_.corner_uvs.insert(out_.corner_uvs.end(), uvs.begin(), uvs.end());
     }
     for (int child : node.children) visit(child, world, depth + 1);
   }

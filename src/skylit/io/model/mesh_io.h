@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "skylit/geometry/triangle_mesh.h"
@@ -35,6 +36,14 @@ struct LoadedModel {
   // be read (the materials are then used without them).
   std::vector<std::string> missing_libraries;
 };
+
+// Per-corner data (texture coordinates) kept with its corners when a mirroring
+// transform reverses the triangles' winding (geometry/transform.h, transformed(): corners
+// 1 and 2 trade places).
+template <typename Corners>
+void reverse_corner_order(std::vector<Corners>& per_triangle) {
+  for (Corners& c : per_triangle) std::swap(c[1], c[2]);
+}
 
 // The largest mesh file (OBJ, glTF, GLB, or a glTF buffer) read, bytes: 1 GiB, a city
 // model of tens of millions of triangles. Only regular files are read (not folders,

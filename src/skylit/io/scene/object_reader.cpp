@@ -144,7 +144,11 @@ LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir
   if (const double f = metres_per_unit(source.units); f != 1.0)
     model.mesh = transformed(model.mesh, Transform::scale({f, f, f}));
   const auto t = j.optional("transform");
-  if (t) model.mesh = transformed(model.mesh, read_transform(*t));
+  if (t) {
+    const Transform transform = read_transform(*t);
+    model.mesh = transformed(model.mesh, transform);
+    if (transform.determinant() < 0) reverse_corner_order(model.corner_uvs);  // as transformed() turned the triangles
+  }
   source.offset_m = place(j, model.mesh);
   // The file's vertices are finite; placed, they must also lie in the scene's extent.
   for (std::size_t i = 0; i < model.mesh.vertices.size(); ++i) {
