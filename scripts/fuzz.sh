@@ -17,8 +17,8 @@ seconds=${1:-}
 shift || true
 targets=("$@")
 # Inputs per target in CI's reproducible run: about 30 s each on this two-core machine.
-declare -A ci_runs=([scene]=100000 [obj]=6000 [gltf]=40000 [ies]=300000 [eulumdat]=500000 [lamp_spectrum]=60000 [cli_numbers]=200000 [cityjson]=20000 [epw]=100000 [xyz_file]=100000 [citygml]=100000)
-[ ${#targets[@]} -eq 0 ] && targets=(scene obj gltf ies eulumdat lamp_spectrum cli_numbers cityjson epw xyz_file citygml)
+declare -A ci_runs=([scene]=100000 [obj]=6000 [gltf]=40000 [ies]=300000 [eulumdat]=500000 [lamp_spectrum]=60000 [cli_numbers]=200000 [cityjson]=20000 [epw]=100000 [xyz_file]=100000 [citygml]=100000 [texture]=20000)
+[ ${#targets[@]} -eq 0 ] && targets=(scene obj gltf ies eulumdat lamp_spectrum cli_numbers cityjson epw xyz_file citygml texture)
 
 start=$SECONDS
 scripts/build-asan.sh --target "${targets[@]/#/fuzz_}"
