@@ -108,10 +108,11 @@ void BM_Fig9Frame(benchmark::State& state) {
 }
 BENCHMARK(BM_Fig9Frame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// A model of about a million triangles with its own materials: the example house
-// (examples/models/house.obj, 886 triangles, 6 materials) repeated on a 34 × 34 grid
-// 20 m apart as one OBJ (1 024 296 triangles) beside a copy of its MTL, written once
-// into the temporary folder; a scene frames it from the south-west on a clear day.
+// A model of about a million triangles with its own materials and textures: the example
+// house (examples/models/house.obj, 886 triangles, 7 materials, brick and render
+// textures) repeated on a 34 × 34 grid 20 m apart as one OBJ (1 024 296 triangles)
+// beside copies of its MTL and textures, written once into the temporary folder; a
+// scene frames it from the south-west on a clear day.
 std::filesystem::path million_triangle_scene() {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("skylit_bench_model_" + std::to_string(getpid()));
@@ -119,12 +120,15 @@ std::filesystem::path million_triangle_scene() {
   if (fs::exists(scene)) return scene;
   fs::create_directories(dir);
   const fs::path models = fs::path(SKYLIT_SOURCE_DIR) / "examples" / "models";
-  fs::copy_file(models / "house.mtl", dir / "house.mtl", fs::copy_options::overwrite_existing);
+  for (const char* file : {"house.mtl", "brick.png", "render.png"})
+    fs::copy_file(models / file, dir / file, fs::copy_options::overwrite_existing);
   std::ifstream in(models / "house.obj");
-  std::vector<std::string> vertex_lines, face_lines;
+  std::vector<std::string> uv_lines, face_lines;
   std::vector<std::array<double, 3>> vertices;
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("v ", 0) == 0) {
+    if (line.rfind("vt ", 0) == 0) {
+      uv_lines.push_back(line);
+    } else if (line.rfind("v ", 0) == 0) {
       std::array<double, 3> v{};
       std::sscanf(line.c_str(), "v %lf %lf %lf", &v[0], &v[1], &v[2]);
       vertices.push_back(v);
@@ -142,8 +146,9 @@ std::filesystem::path million_triangle_scene() {
       std::snprintf(text, sizeof text, "v %.4f %.4f %.4f\n", v[0] + dx, v[1] + dy, v[2]);
       out << text;
     }
-    // Relative indices, so every copy's faces read the same.
-    const long n = static_cast<long>(vertices.size());
+    for (const std::string& line : uv_lines) out << line << '\n';
+    // Relative indices (vertex/uv), so every copy's faces read the same.
+    const long n = static_cast<long>(vertices.size()), nt = static_cast<long>(uv_lines.size());
     for (const std::string& line : face_lines) {
       if (line[0] == 'u') {
         out << line << '\n';
@@ -151,7 +156,11 @@ std::filesystem::path million_triangle_scene() {
       }
       std::istringstream words(line.substr(2));
       out << 'f';
-      for (long i; words >> i;) out << ' ' << i - n - 1;
+      for (std::string corner; words >> corner;) {
+        const size_t slash = corner.find('/');
+        out << ' ' << std::stol(corner) - n - 1;
+        if (slash != std::string::npos) out << '/' << std::stol(corner.substr(slash + 1)) - nt - 1;
+      }
       out << '\n';
     }
   }
