@@ -132,7 +132,7 @@ PlacedCity place_city_model(const CityModel& model, const CityPlacementOptions& 
     }
     if (std::isfinite(low)) lowest.push_back(low);
   }
-  placed.origin.height_m = median(lowest);
+  placed.origin.height_m = options.ground_height_m ? *options.ground_height_m : median(lowest);
   placed.curvature_applied = options.curvature == EarthCurvature::on ||
                              (options.curvature == EarthCurvature::automatic && farthest > kCurvatureAutoDistanceM);
   for (Vec3& p : local) {

@@ -49,6 +49,10 @@ struct CityPlacementOptions {
   std::optional<CityRegion> region;
   EarthCurvature curvature = EarthCurvature::automatic;
   double refraction_k = kStandardRefractionK;
+  // The height (metres, as the CRS gives heights) that becomes z = 0; empty: the
+  // median of the objects' lowest points. A DEM placed beside a city model takes the
+  // model's, so that both share one vertical frame.
+  std::optional<double> ground_height_m;
 };
 
 struct PlacedCityObject {

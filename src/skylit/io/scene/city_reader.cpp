@@ -2,6 +2,7 @@
 // the scene's site by its coordinate reference system, its surfaces given materials by
 // their class: the object's `city_materials`, else the default palette
 // (io/city/city_palette.h). docs/city-models.md describes it.
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -11,6 +12,7 @@
 #include "skylit/io/city/city_placement.h"
 #include "skylit/io/city/citygml_reader.h"
 #include "skylit/io/city/cityjson_reader.h"
+#include "skylit/io/city/dem_reader.h"
 #include "skylit/io/scene/scene_parts.h"
 
 namespace skylit {
@@ -25,6 +27,31 @@ CityModel read_city_file(const JsonReader& file_value, const std::filesystem::pa
   if (extension == ".gml" || extension == ".xml") return read_citygml_file(file, CityGmlOptions{options.lod});
   file_value.fail("unknown city model file '" + file.filename().string() +
                   "': expected CityJSON (.json, .city.json, .city.jsonl) or CityGML (.gml, .xml)");
+}
+
+// The object's `terrain`: a DEM (GeoTIFF or any raster GDAL reads) placed in the city
+// model's frame, at its ground level, as one more TIN relief of the model.
+void add_dem_terrain(const JsonReader& terrain, const std::filesystem::path& base_dir, CityPlacementOptions options,
+                     PlacedCity& placed) {
+  terrain.allow_only({"file", "crs"});
+  const std::filesystem::path file = base_dir / terrain.required("file").string();
+  const CityModel dem = read_dem_terrain(file);
+  options.crs = terrain.optional("crs") ? terrain.required("crs").string() : "";
+  options.origin = GeoPoint{placed.origin.latitude_deg, placed.origin.longitude_deg, 0};
+  options.ground_height_m = placed.origin.height_m;
+  options.region.reset();  // the DEM is one object: a region would take all or none of it
+  options.curvature = placed.curvature_applied ? EarthCurvature::on : EarthCurvature::off;
+  PlacedCity relief = place_city_model(dem, options, file.string());
+  if (relief.objects.empty()) terrain.required("file").fail("the DEM gives no terrain");
+  for (PlacedCityObject& o : relief.objects) {
+    for (uint32_t& c : o.triangle_class) {
+      const std::string& key = relief.classes[c];
+      const auto found = std::find(placed.classes.begin(), placed.classes.end(), key);
+      c = static_cast<uint32_t>(found - placed.classes.begin());
+      if (found == placed.classes.end()) placed.classes.push_back(key);
+    }
+    placed.objects.push_back(std::move(o));
+  }
 }
 
 // A TIN relief in the file is the terrain: each building (and building part) is set
@@ -134,7 +161,8 @@ class CityMaterials {
 
 SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir, std::vector<NamedMaterial>& materials,
                       std::optional<SiteLocation>& site) {
-  j.allow_only({"type", "name", "file", "crs", "lod", "region", "city_materials", "earth_curvature", "refraction_k"});
+  j.allow_only(
+      {"type", "name", "file", "crs", "lod", "region", "city_materials", "earth_curvature", "refraction_k", "terrain"});
   SceneObject object;
   object.name = j.optional("name") ? j.required("name").string() : j.path();
   const JsonReader file_value = j.required("file");
@@ -152,6 +180,7 @@ SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir
   if (auto k = j.optional("refraction_k")) options.refraction_k = k->number_in(0, 1);
   PlacedCity placed = place_city_model(model, options, file.string());
   if (placed.objects.empty()) file_value.fail("the city model has no surfaces to show (in the region, at the LoD)");
+  if (auto terrain = j.optional("terrain")) add_dem_terrain(*terrain, base_dir, options, placed);
   if (!site)  // the model's centre becomes the site, for the sun
     site = SiteLocation{placed.origin.latitude_deg, placed.origin.longitude_deg,
                         std::clamp(placed.origin.height_m, -500.0, 9000.0)};
