@@ -32,7 +32,10 @@ std::string encode_video(const std::filesystem::path& ffmpeg, const std::filesys
                          double frames_per_second, const std::filesystem::path& video) {
   std::string temporary_name = ".";
   temporary_name += video.filename().string();
-  temporary_name += "." + std::to_string(getpid()) + ".tmp.mp4";
+  // Appended piece by piece: `"." + std::string` trips GCC 12's false -Wrestrict (GCC bug 105329).
+  temporary_name += '.';
+  temporary_name += std::to_string(getpid());
+  temporary_name += ".tmp.mp4";
   const std::filesystem::path temporary = video.parent_path() / temporary_name;
   char rate[32];
   std::snprintf(rate, sizeof rate, "%g", frames_per_second);

@@ -18,7 +18,13 @@ constexpr int64_t kMaxStepSeconds = 366 * kSecondsPerDay;
   throw InputError(std::string(where) + ": " + what);
 }
 
-std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
+// Appended piece by piece: `"\"" + std::string` trips GCC 12's false -Wrestrict (GCC bug 105329).
+std::string quoted(std::string_view text) {
+  std::string result = "\"";
+  result += text;
+  result += '"';
+  return result;
+}
 
 // Whole seconds of the local clock since 1970-01-01T00:00 on that clock; the fraction of
 // a second stays in the OffsetDateTime.
@@ -153,7 +159,11 @@ std::string format_clock(const OffsetDateTime& t) {
 std::string format_offset(int utc_offset_minutes) {
   if (utc_offset_minutes == 0) return "Z";
   const int magnitude = std::abs(utc_offset_minutes);
-  return (utc_offset_minutes < 0 ? "-" : "+") + two_digits(magnitude / 60) + ":" + two_digits(magnitude % 60);
+  std::string text(1, utc_offset_minutes < 0 ? '-' : '+');  // not `"-" + std::string`: GCC bug 105329
+  text += two_digits(magnitude / 60);
+  text += ':';
+  text += two_digits(magnitude % 60);
+  return text;
 }
 
 std::string format_offset_date_time(const OffsetDateTime& t) {
