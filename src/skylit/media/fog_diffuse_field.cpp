@@ -125,6 +125,7 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
     u[static_cast<size_t>(s)] = s < kN ? -mu[static_cast<size_t>(s)] : mu[static_cast<size_t>(s)];
   }
   std::vector<std::vector<double>> p_node;
+  p_node.reserve(u.size());
   for (double us : u) p_node.push_back(legendre(us, kStreamsAll));
   const double mu0 = lighting.sun_cosine;
   const bool sun = mu0 > 0 && !lighting.sun_irradiance.is_black();

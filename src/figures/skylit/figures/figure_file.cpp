@@ -8,7 +8,7 @@ namespace skylit {
 
 std::string figure_extension(const std::filesystem::path& path, std::initializer_list<std::string_view> allowed,
                              std::string_view what) {
-  const std::string ext = lower_case_extension(path);
+  std::string ext = lower_case_extension(path);  // not const: returned, so moved
   std::string list;
   std::size_t i = 0;
   for (std::string_view a : allowed) {
