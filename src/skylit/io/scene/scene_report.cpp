@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "skylit/core/formatted.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/render/camera.h"
 
@@ -20,12 +20,6 @@ constexpr double kOffGround_m = 0.5;
 constexpr double kLargestModel_m = 2e3;
 constexpr double kSmallestModel_m = 0.2;
 
-std::string format(const char* pattern, double a, double b = 0, double c = 0) {
-  char text[160];
-  std::snprintf(text, sizeof text, pattern, a, b, c);
-  return text;
-}
-
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 void check_model_placement(const SceneObject& object, std::vector<std::string>& warnings) {
@@ -35,22 +29,22 @@ void check_model_placement(const SceneObject& object, std::vector<std::string>& 
   const Vec3 c = box.center();
   const double distance = std::hypot(c.x, c.y);
   if (distance > kFarFromOrigin_m)
-    warnings.push_back(who + format(" lies %.1f km from the origin: set \"center\": true (or translate it) so that "
-                                    "single-precision ray tracing keeps its detail",
-                                    distance / 1e3));
+    warnings.push_back(who + formatted(" lies %.1f km from the origin: set \"center\": true (or translate it) so that "
+                                       "single-precision ray tracing keeps its detail",
+                                       distance / 1e3));
   if (box.lo.z > kOffGround_m)
     warnings.push_back(
-        who + format(" floats %.2f m above the ground (its lowest point): \"place_on_ground\": true?", box.lo.z));
+        who + formatted(" floats %.2f m above the ground (its lowest point): \"place_on_ground\": true?", box.lo.z));
   if (box.lo.z < -kOffGround_m)
     warnings.push_back(
-        who + format(" sinks %.2f m below the ground (its lowest point): \"place_on_ground\": true?", -box.lo.z));
+        who + formatted(" sinks %.2f m below the ground (its lowest point): \"place_on_ground\": true?", -box.lo.z));
   const Vec3 size = box.size();
   const double largest = std::max({size.x, size.y, size.z});
   if (largest > kLargestModel_m)
     warnings.push_back(
-        who + format(" is %.0f m across: is the file in mm or cm? Set \"units\" (m, cm, mm, ft, in)", largest));
+        who + formatted(" is %.0f m across: is the file in mm or cm? Set \"units\" (m, cm, mm, ft, in)", largest));
   if (largest < kSmallestModel_m)
-    warnings.push_back(who + format(" is only %.3f m across: is the file in another unit? Set \"units\"", largest));
+    warnings.push_back(who + formatted(" is only %.3f m across: is the file in another unit? Set \"units\"", largest));
 }
 
 // Inside a closed mesh, every ray from the camera leaves through the back of a face.
@@ -95,9 +89,9 @@ void check_camera_view(const Scene& scene, const RayTracer& tracer, std::vector<
 // their materials.
 std::string describe_city(const CitySource& c) {
   std::string out = c.file + ", CRS " + c.crs + "\n";
-  out += format("  site %.7f° N, %.7f° E", c.latitude_deg, c.longitude_deg) +
+  out += formatted("  site %.7f° N, %.7f° E", c.latitude_deg, c.longitude_deg) +
          (c.site_from_model ? " (the model's centre: no site given)" : " (the scene's site)") +
-         format("; ground level %.2f m (z = 0)", c.ground_height_m) +
+         formatted("; ground level %.2f m (z = 0)", c.ground_height_m) +
          (c.curvature_applied ? "; earth curvature and refraction applied" : "") + "\n";
   out += "  city objects:";
   for (const auto& [type, count] : c.objects_by_type)
@@ -123,7 +117,7 @@ std::string describe_objects(const Scene& scene) {
       const ModelSource& s = *object.source;
       out += s.file + ", up axis " + s.up_axis + ", units " + s.units;
       if (s.offset_m.x != 0 || s.offset_m.y != 0 || s.offset_m.z != 0)
-        out += format(", shifted by (%.3f, %.3f, %.3f) m", s.offset_m.x, s.offset_m.y, s.offset_m.z);
+        out += formatted(", shifted by (%.3f, %.3f, %.3f) m", s.offset_m.x, s.offset_m.y, s.offset_m.z);
       out += "\n";
     } else if (object.city) {
       out += describe_city(*object.city);
@@ -133,9 +127,9 @@ std::string describe_objects(const Scene& scene) {
     out += "  " + std::to_string(object.mesh.triangles.size()) + " triangles";
     if (!box.empty()) {
       const Vec3 size = box.size();
-      out += format("; extent %.2f × %.2f", size.x, size.y) + format(" × %.2f m", size.z);
-      out += format(" (x %.2f to %.2f,", box.lo.x, box.hi.x) + format(" y %.2f to %.2f,", box.lo.y, box.hi.y) +
-             format(" z %.2f to %.2f)", box.lo.z, box.hi.z);
+      out += formatted("; extent %.2f × %.2f", size.x, size.y) + formatted(" × %.2f m", size.z);
+      out += formatted(" (x %.2f to %.2f,", box.lo.x, box.hi.x) + formatted(" y %.2f to %.2f,", box.lo.y, box.hi.y) +
+             formatted(" z %.2f to %.2f)", box.lo.z, box.hi.z);
     }
     out += "\n";
     if (object.source && !object.source->materials.empty()) {

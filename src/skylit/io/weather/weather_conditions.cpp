@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "skylit/atmosphere/atmosphere.h"
+#include "skylit/core/formatted.h"
 #include "skylit/spectrum/cie.h"
 #include "skylit/sun/solar_position.h"
 
@@ -26,12 +26,6 @@ constexpr double kDefaultCloudAltitudeM = 2000.0;
 constexpr double kMaxFittedAod = 5.0;
 // Below this the beam counts as none (the file's illuminances are whole hundreds of lx).
 constexpr double kNoBeamLux = 1.0;
-
-std::string formatted(const char* pattern, double a, double b = 0, double c = 0) {
-  char text[256];
-  std::snprintf(text, sizeof text, pattern, a, b, c);
-  return text;
-}
 
 double direct_normal_lux(AtmosphereSettings air, double aod, double sun_elevation_rad) {
   air.aerosol.aod_550 = aod;
