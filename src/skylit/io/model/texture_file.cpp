@@ -18,6 +18,7 @@
 
 #include "skylit/io/model/texture_file.h"
 
+#include <algorithm>
 #include <climits>
 #include <cstring>
 #include <fstream>
@@ -29,9 +30,37 @@
 
 namespace skylit {
 
+namespace {
+
+// Whether every JPEG Huffman table (DHT segment) codes at most 256 symbols. Debian
+// 12's stb_image writes past its 257-entry table for one that codes more (found by
+// the texture fuzz target), so such a file is refused before it reaches stb. In
+// entropy-coded data 0xFF is stuffed as FF 00, so FF C4 is always a DHT marker.
+bool jpeg_huffman_tables_fit(const unsigned char* bytes, size_t size) {
+  // stb takes as JPEG what is not a PNG (its start marker may follow fill bytes).
+  if (size >= 4 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G') return true;
+  for (size_t p = 0; p + 4 <= size; ++p) {
+    if (bytes[p] != 0xFF || bytes[p + 1] != 0xC4) continue;
+    const size_t end = std::min(size, p + 2 + (size_t{bytes[p + 2]} << 8 | bytes[p + 3]));
+    // As stb reads it: tables while the segment lasts, each table's 16 counts even
+    // where they run past the segment's stated end.
+    for (size_t q = p + 4; q < end;) {
+      size_t symbols = 0;
+      for (size_t i = 1; i <= 16 && q + i < size; ++i) symbols += bytes[q + i];
+      if (symbols > 256) return false;
+      q += 17 + symbols;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t size, TextureEncoding encoding,
                                               const std::string& where) {
   if (size == 0 || size > static_cast<size_t>(INT_MAX)) throw InputError(where + ": not a PNG or JPEG image");
+  if (!jpeg_huffman_tables_fit(bytes, size))
+    throw InputError(where + ": cannot decode the image (a JPEG Huffman table codes more than 256 symbols)");
   int width = 0, height = 0, channels = 0;
   if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
     throw InputError(where + ": not a PNG or JPEG image (" + stbi_failure_reason() + ")");
