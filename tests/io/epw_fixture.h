@@ -19,18 +19,18 @@ inline std::string epw_header(const std::string& location =
 // One record: month, day, hour and the 30 values after the data-source field, as
 // text (fields 7 to 35). The defaults: a clear summer noon with plausible values.
 struct EpwRecordFields {
-  int month = 6, day = 21, hour = 13;
+  int year = 2001, month = 6, day = 21, hour = 13, minute = 60;
   std::string dry_bulb = "20.0", ghi = "800", dni = "700", dhi = "150", gh_lux = "90000", dn_lux = "70000",
               dh_lux = "18000", total_cover = "0", opaque_cover = "0", visibility = "30.0", ceiling = "77777",
               snow_depth = "0", albedo = "0.2";
 };
 
 inline std::string epw_record(const EpwRecordFields& f) {
-  return "2001," + std::to_string(f.month) + "," + std::to_string(f.day) + "," + std::to_string(f.hour) +
-         ",60,?9?9?9?9E0?9?9?9*9*9?9?9?9," + f.dry_bulb + ",10.0,50,101300,1300,1360,350," + f.ghi + "," + f.dni + "," +
-         f.dhi + "," + f.gh_lux + "," + f.dn_lux + "," + f.dh_lux + ",9999,180,3.0," + f.total_cover + "," +
-         f.opaque_cover + "," + f.visibility + "," + f.ceiling + ",9,999999999,15,0.100," + f.snow_depth + ",88," +
-         f.albedo + ",0.0,0.0\n";
+  return std::to_string(f.year) + "," + std::to_string(f.month) + "," + std::to_string(f.day) + "," +
+         std::to_string(f.hour) + "," + std::to_string(f.minute) + ",?9?9?9?9E0?9?9?9*9*9?9?9?9," + f.dry_bulb +
+         ",10.0,50,101300,1300,1360,350," + f.ghi + "," + f.dni + "," + f.dhi + "," + f.gh_lux + "," + f.dn_lux + "," +
+         f.dh_lux + ",9999,180,3.0," + f.total_cover + "," + f.opaque_cover + "," + f.visibility + "," + f.ceiling +
+         ",9,999999999,15,0.100," + f.snow_depth + ",88," + f.albedo + ",0.0,0.0\n";
 }
 
 // The fixture: the header and records for 06-21 hours 12, 13, 14 and 06-22 hour 1.

@@ -7,6 +7,7 @@
 
 #include "skylit/core/error.h"
 #include "skylit/core/text_file.h"
+#include "skylit/core/utf8.h"
 #include "skylit/sun/time.h"
 
 namespace skylit {
@@ -104,6 +105,12 @@ class LineReader {
     return static_cast<int>(v);
   }
   std::string text(int index) const { return std::string(trimmed(fields_[static_cast<size_t>(index)])); }
+  // Whether every field from `first` on is blank (trailing commas some exports write).
+  bool blank_from(size_t first) const {
+    for (size_t i = first; i < fields_.size(); ++i)
+      if (!trimmed(fields_[i]).empty()) return false;
+    return true;
+  }
 
  private:
   const std::string& name_;
@@ -117,7 +124,9 @@ EpwLocation read_location(const LineReader& r, const std::string& name) {
                      " fields, expected 10 (LOCATION, city, region, country, source, WMO, latitude, longitude, "
                      "time zone, elevation)");
   EpwLocation l;
-  l.city = r.text(1), l.region = r.text(2), l.country = r.text(3), l.source = r.text(4), l.wmo_station = r.text(5);
+  // Station names in Latin-1, as older files and some exports write them, become UTF-8.
+  l.city = utf8_or_latin1(r.text(1)), l.region = utf8_or_latin1(r.text(2)), l.country = utf8_or_latin1(r.text(3));
+  l.source = utf8_or_latin1(r.text(4)), l.wmo_station = utf8_or_latin1(r.text(5));
   const auto in = [&](int index, const char* field, double lo, double hi) {
     const double v = r.required(index, field);
     if (!(v >= lo && v <= hi)) {
@@ -135,7 +144,7 @@ EpwLocation read_location(const LineReader& r, const std::string& name) {
 }
 
 EpwHour read_record(const LineReader& r, int line, const std::string& name) {
-  if (r.size() < kRequiredFields || r.size() > kMaxFields)
+  if (r.size() < kRequiredFields || (r.size() > kMaxFields && !r.blank_from(kMaxFields)))
     throw InputError(name + ":" + std::to_string(line) + ": a data record has " + std::to_string(r.size()) +
                      " fields, expected 35 (at least the 31 up to snow depth)");
   EpwHour h;
@@ -168,12 +177,14 @@ EpwFile parse_epw(std::string_view text, const std::string& name) {
   file.name = name;
   int line_number = 0;
   bool location_seen = false, data_periods_seen = false;
-  size_t start = 0;
+  // A byte order mark (Windows editors write one) is not part of the first line.
+  size_t start = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
   while (start < text.size()) {
-    size_t end = text.find('\n', start);
+    // Lines end in LF, CR LF (Windows) or a lone CR (classic Mac OS exports).
+    size_t end = text.find_first_of("\r\n", start);
     if (end == std::string_view::npos) end = text.size();
     const std::string_view line = text.substr(start, end - start);
-    start = end + 1;
+    start = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
     ++line_number;
     if (trimmed(line).empty()) continue;
     const LineReader r(name, line_number, split_commas(line));
@@ -222,8 +233,23 @@ const EpwHour& epw_hour_containing(const EpwFile& file, int month, int day, int 
     throw InputError(where + ": " + file.name + " has no record for " + shown + " (hour " + std::to_string(wanted) +
                      " of that day)");
   }
-  if (on_the_hour && hour == 0) return file.hours[(index + file.hours.size() - 1) % file.hours.size()];
-  return *found;
+  if (!(on_the_hour && hour == 0)) return *found;
+  // Midnight: the record before, which must be the day before's hour 24 (a typical year
+  // wraps from 12-31 to 01-01; a file holding only part of a year may not have it).
+  const EpwHour& before = file.hours[(index + file.hours.size() - 1) % file.hours.size()];
+  const int previous_month = day > 1 ? month : month == 1 ? 12 : month - 1;
+  const bool day_before =
+      before.month == previous_month &&
+      (day > 1 ? before.day == day - 1
+               : before.day == days_in_month(2001, previous_month) || (previous_month == 2 && before.day == 29));
+  if (before.hour != 24 || !day_before) {
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%02d-%02dT00:00", month, day);
+    throw InputError(where + ": " + file.name + " has no record for " + shown +
+                     " (hour 24 of the day before; the record before that day's hour 1 is line " +
+                     std::to_string(before.line) + ")");
+  }
+  return before;
 }
 
 }  // namespace skylit
