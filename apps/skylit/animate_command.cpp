@@ -81,10 +81,6 @@ std::string frame_name(std::size_t number, std::size_t count, const std::string&
   return "frame_" + digits + extension;
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  AtomicFile(path).commit(std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
-}
-
 // Places the sun for the frame's instant, as the scene's `time` would.
 void place_sun(Scene& scene, const SolarPosition& sun) {
   scene.sun.altitude_deg = sun.altitude_deg;
@@ -154,10 +150,10 @@ int run_animate(AnimateArguments& args) {
     for (const std::string& format : args.frame_formats)
       write_image((*images)[i], folder / frame_name(i + 1, frames.size(), "." + format), display);
   }
-  write_text(folder / "frames.csv", frames_csv(frames, png_names, *display.exposure_ev));
+  AtomicFile(folder / "frames.csv").commit(frames_csv(frames, png_names, *display.exposure_ev));
   const std::string title =
       args.title.empty() ? std::filesystem::path(args.scene_file).filename().string() : args.title;
-  write_text(folder / "viewer.html", frame_viewer_html(title, labels, pngs, args.frames_per_second));
+  AtomicFile(folder / "viewer.html").commit(frame_viewer_html(title, labels, pngs, args.frames_per_second));
 
   if (args.statistics) {
     // The objects each pixel sees do not change with the sun: one tracing serves all frames.
@@ -166,7 +162,7 @@ int run_animate(AnimateArguments& args) {
     const PixelLayers layers = trace_pixel_layers(renderer.prepared());
     std::vector<RenderStatistics> statistics;
     for (const XyzImage& image : *images) statistics.push_back(render_statistics(image, layers, scene));
-    write_text(folder / "statistics.csv", study_statistics_csv(frames, statistics));
+    AtomicFile(folder / "statistics.csv").commit(study_statistics_csv(frames, statistics));
     write_plot(study_statistics_plot(title, frames, statistics), folder / "statistics.svg");
   }
 

@@ -16,14 +16,18 @@
 #include "job_split.h"
 #include "process_group.h"
 #include "progress_bar.h"
+#include "skylit/assess/render_statistics.h"
 #include "skylit/core/error.h"
 #include "skylit/core/file_names.h"
 #include "skylit/figures/contact_sheet.h"
+#include "skylit/figures/study_statistics.h"
 #include "skylit/figures/sweep.h"
 #include "skylit/io/atomic_file.h"
 #include "skylit/io/image/image.h"
 #include "skylit/io/scene/scene_loader.h"
+#include "skylit/render/pixel_layers.h"
 #include "skylit/render/renderer.h"
+#include "skylit/sun/time_steps.h"
 
 namespace skylit::cli {
 
@@ -36,6 +40,7 @@ struct SweepArguments {
   std::vector<std::string> overrides;
   std::vector<std::string> cell_formats;  // besides png
   std::string title;
+  bool statistics = false;
   int threads = 0;
   bool quiet = false;
   std::string shard;
@@ -77,6 +82,43 @@ std::optional<double> check_combinations(const SweepArguments& args, const Sweep
   return *shared;
 }
 
+// The varied paths that set the instant: a sweep over them is a sweep over time.
+bool sets_the_time(const std::string& path) { return path == "time" || path == "weather.hour"; }
+
+// --stats: each combination as a frame at its scene's instant (the `time`, or the one
+// weather.hour sets), grouped by its values other than the time; InputError if a
+// combination's scene has no instant.
+struct SweepFrames {
+  std::vector<AnimationFrame> frames;
+  std::vector<std::string> groups;
+};
+
+SweepFrames sweep_frames(const SweepArguments& args, const SweepPlan& plan) {
+  SweepFrames out;
+  for (const SweepCombination& combination : plan.combinations) {
+    const Scene scene = load_scene(args.scene_file, with_overrides(args.overrides, sweep_overrides(plan, combination)));
+    const std::string label = combination_label(plan, combination);
+    if (scene.time.empty())
+      throw InputError("sweep --stats plots the statistics over time, and combination " +
+                       std::to_string(combination.index + 1) + " (" + label +
+                       ") has none: give the scene a 'time' and a 'site', or vary time or weather.hour");
+    const OffsetDateTime time = parse_offset_date_time(scene.time, args.scene_file + ": time");
+    out.frames.push_back(
+        {static_cast<int>(combination.index) + 1, time, scene.sun.altitude_deg, scene.sun.azimuth_deg});
+    std::string group;
+    for (std::size_t p = 0; p < plan.parameters.size(); ++p)
+      if (!sets_the_time(plan.parameters[p].path))
+        group += (group.empty() ? "" : " / ") + plan.parameters[p].path + " = " + combination.values[p];
+    out.groups.push_back(group);
+  }
+  return out;
+}
+
+// NAME_statistics.csv and NAME_statistics.svg beside the sheet NAME.png.
+std::filesystem::path beside_sheet(const std::filesystem::path& sheet, const std::string& suffix) {
+  return sheet.parent_path() / (sheet.stem().string() + suffix);
+}
+
 int run_sweep(SweepArguments& args) {
   if (!args.shard.empty()) args.split.shard = parse_shard(args.shard);
   check_split_options(args.split);
@@ -91,6 +133,7 @@ int run_sweep(SweepArguments& args) {
     if (std::find(extensions.begin(), extensions.end(), "." + format) == extensions.end())
       extensions.push_back("." + format);
   const std::optional<double> fixed_exposure = check_combinations(args, plan);
+  const SweepFrames frames = args.statistics ? sweep_frames(args, plan) : SweepFrames{};
   if (!sheet_path.parent_path().empty()) std::filesystem::create_directories(sheet_path.parent_path());
 
   const bool show_progress = !args.quiet && is_first_process() && isatty(STDERR_FILENO) != 0;
@@ -128,6 +171,22 @@ int run_sweep(SweepArguments& args) {
     for (const std::string& extension : extensions)
       write_image((*images)[combination.index], sweep_cell_path(sheet_path, plan, combination, extension), display);
   write_contact_sheet(sheet, sheet_path);
+
+  if (args.statistics) {
+    std::vector<RenderStatistics> statistics;
+    for (const SweepCombination& combination : plan.combinations) {
+      // Each combination traces its own objects: a sweep may vary the geometry too.
+      const Scene scene =
+          load_scene(args.scene_file, with_overrides(args.overrides, sweep_overrides(plan, combination)));
+      const Renderer renderer(scene);
+      statistics.push_back(
+          render_statistics((*images)[combination.index], trace_pixel_layers(renderer.prepared()), scene));
+    }
+    AtomicFile(beside_sheet(sheet_path, "_statistics.csv"))
+        .commit(study_statistics_csv(frames.frames, statistics, frames.groups));
+    write_plot(study_statistics_plot(sheet.title, frames.frames, statistics, frames.groups),
+               beside_sheet(sheet_path, "_statistics.svg"));
+  }
   return 0;
 }
 
@@ -163,6 +222,10 @@ CommandRunner add_sweep_command(CLI::App& app) {
       ->allow_extra_args(false)
       ->check(CLI::IsMember({"exr", "pfm", "hdr"}));
   sweep->add_option("--title", args->title, "The sheet's title (default: the scene file's name)");
+  sweep->add_flag("--stats", args->statistics,
+                  "Also write NAME_statistics.csv (every combination's luminance statistics, by its instant) and "
+                  "NAME_statistics.svg (mean luminance of each object and the sky over time); for sweeps over "
+                  "time or weather.hour");
   sweep->add_option("--threads", args->threads, "Worker threads (0: all cores); the images do not depend on it")
       ->check(CLI::Range(0, 1024));
   sweep->add_flag("-q,--quiet", args->quiet, "No progress lines");

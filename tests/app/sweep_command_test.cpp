@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <set>
 #include <string>
 
 #include "../test_support.h"
+#include "study_csv.h"
 
 namespace skylit {
 namespace {
@@ -158,6 +160,45 @@ TEST(SweepCommand, Fig7ExampleSweepsAtATinySize) {
   ASSERT_EQ(r.exit_status, 0) << r.output;
   EXPECT_EQ(files_in(dir.path()).size(), 7u);
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "fig7_6_4_aluminium.png"));
+}
+
+// A sweep over hours with --stats: one statistics CSV over every combination, led by its
+// instant and grouped by the other varied value, and the plot of each object's mean
+// luminance over time per group, whose points are the CSV's. 4 renders at 24 × 16.
+TEST(SweepCommand, StatisticsOverHoursGatherIntoOneCsvAndAPlot) {
+  TempDir dir;
+  std::string text = testing::small_scene_json(24, 16);
+  const std::string sun = R"("sun": {"altitude_deg": 40, "azimuth_deg": 135})";
+  text.replace(text.find(sun), sun.size(),
+               R"("site": {"latitude_deg": 48.2, "longitude_deg": 16.37}, "time": "2026-06-21T12:00+02:00")");
+  text.replace(text.find(R"({"type": "box")"), 1, R"({"name": "box", )");
+  const auto scene = dir.write("scene.json", text);
+  const auto r = run_skylit("sweep " + quoted(scene) +
+                            " --vary time=2026-06-21T08:00+02:00,2026-06-21T15:00+02:00"
+                            " --vary objects.1.material=white,red --set render.samples_per_axis=1 --stats -q -o " +
+                            quoted(dir.path() / "out" / "day.png"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto csv = testing::csv_rows(testing::read_file(dir.path() / "out" / "day_statistics.csv"));
+  ASSERT_GT(csv.size(), 1u);
+  EXPECT_EQ(csv[0][5], "group");
+  std::map<std::string, double> box_mean;  // "<time> <group>"
+  for (std::size_t i = 1; i < csv.size(); ++i)
+    if (csv[i][6] == "object" && csv[i][7] == "box") box_mean[csv[i][2] + " " + csv[i][5]] = std::stod(csv[i][9]);
+  ASSERT_EQ(box_mean.size(), 4u);  // two hours × two materials
+  // The white box outshines the red one at both hours (a check that the groups are kept apart).
+  EXPECT_GT(box_mean["08:00 objects.1.material = white"], box_mean["08:00 objects.1.material = red"]);
+  EXPECT_GT(box_mean["15:00 objects.1.material = white"], box_mean["15:00 objects.1.material = red"]);
+  testing::expect_plot_shows_csv(csv, dir.path() / "out" / "day_statistics.svg", 5);
+  EXPECT_NE(testing::read_file(dir.path() / "out" / "day_statistics.svg").find("box (objects.1.material = red)"),
+            std::string::npos);
+
+  // Without an instant there is nothing to plot against: exit 2 before any output.
+  const auto unsited = dir.write("unsited.json", testing::small_scene_json(24, 16));
+  const auto no_time = run_skylit("sweep " + quoted(unsited) + " --vary sun.altitude_deg=20,50 --stats -q -o " +
+                                  quoted(dir.path() / "none" / "s.png"));
+  EXPECT_EQ(no_time.exit_status, 2) << no_time.output;
+  EXPECT_NE(no_time.output.find("--stats plots the statistics over time"), std::string::npos) << no_time.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "none"));
 }
 
 TEST(SweepCommand, HelpExitsZero) {

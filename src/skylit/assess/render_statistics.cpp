@@ -76,14 +76,6 @@ std::string named_list_json(const std::vector<NamedSummary>& list) {
   return out + (list.empty() ? "]" : "\n  ]");
 }
 
-// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
 std::string summary_fields(const LuminanceSummary& s) {
   return number(s.mean) + "," + number(s.min) + "," + number(s.max) + "," + number(s.p5) + "," + number(s.p50) + "," +
          number(s.p95);
@@ -165,6 +157,13 @@ std::string statistics_json(const RenderStatistics& stats) {
            ", \"source_mean_luminance_cd_m2\": " + number(g.source_mean_luminance) + "}";
   }
   return out + "\n}\n";
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
 }
 
 std::string statistics_csv(const RenderStatistics& stats) {

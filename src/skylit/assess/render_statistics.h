@@ -45,4 +45,7 @@ RenderStatistics render_statistics(const XyzImage& image, const PixelLayers& lay
 std::string statistics_json(const RenderStatistics& stats);
 std::string statistics_csv(const RenderStatistics& stats);
 
+// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+std::string csv_field(const std::string& s);
+
 }  // namespace skylit

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string_view>
 
 namespace skylit {
 
@@ -45,6 +46,7 @@ class AtomicFile {
     write(bytes);
     publish();
   }
+  void commit(std::string_view text) { commit(std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size())); }
   // commit() in two steps, for a set of files written all or nothing: write each, and
   // publish them only when every write succeeded.
   void write(std::span<const uint8_t> bytes);
