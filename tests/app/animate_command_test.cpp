@@ -1,26 +1,31 @@
 // `skylit animate` as a user runs it: frames in time order with their labels, one
 // exposure for all (each frame remade alone at that exposure gives the same pixels),
 // the viewer holding every frame, the MP4 as ffprobe reads it, the statistics, and the
-// mistakes. Images are 32 × 24 at one sample per pixel; 13 renders in all.
+// mistakes, and the viewer in headless Chromium. Images are 32 × 24 (the viewer's 64 × 36)
+// at one sample per pixel; 17 renders in all.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
-#include <sstream>
 
 #include "../io/png_read_util.h"
 #include "../test_support.h"
+#include "browser_support.h"
 #include "skylit/figures/animation_frames.h"
 #include "skylit/figures/raster.h"
+#include "study_csv.h"
 
 namespace skylit {
 namespace {
 
+using testing::csv_rows;
+using testing::expect_plot_shows_csv;
 using testing::quoted;
 using testing::run_skylit;
 using testing::TempDir;
 
 // A small scene placed in Munich, its sun set by the time.
-std::string sited_scene(const std::string& time) {
+std::string sited_scene(const std::string& time, int width = 32, int height = 24) {
   return R"({
   "camera": {"position": [0, -20, 2], "look_at": [0, 0, 3], "vertical_fov_deg": 60},
   "site": {"latitude_deg": 48.14, "longitude_deg": 11.58},
@@ -31,21 +36,9 @@ std::string sited_scene(const std::string& time) {
     {"name": "ground", "type": "plane", "material": "white", "size_m": 200},
     {"name": "box", "type": "box", "material": "white", "center": [0, 0, 3], "size": [4, 4, 6]}
   ],
-  "render": {"width": 32, "height": 24, "samples_per_axis": 1}
+  "render": {"width": )" +
+         std::to_string(width) + R"(, "height": )" + std::to_string(height) + R"(, "samples_per_axis": 1}
 })";
-}
-
-std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::istringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    rows.emplace_back();
-    std::istringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) rows.back().push_back(cell);
-  }
-  return rows;
 }
 
 TEST(AnimateCommand, FramesInOrderAtOneExposureWithViewerVideoAndStatistics) {
@@ -97,7 +90,7 @@ TEST(AnimateCommand, FramesInOrderAtOneExposureWithViewerVideoAndStatistics) {
   std::size_t box_rows = 0;
   for (const auto& row : stats) box_rows += row.size() > 6 && row[6] == "box" ? 1 : 0;
   EXPECT_EQ(box_rows, 5u);
-  EXPECT_NE(testing::read_file(out / "statistics.svg").find("<svg"), std::string::npos);
+  expect_plot_shows_csv(stats, out / "statistics.svg", {});
 
   if (std::system("ffprobe -version > /dev/null 2>&1") != 0) GTEST_SKIP() << "no ffprobe: the MP4 is not checked";
   const std::filesystem::path probe = dir.path() / "probe.txt";
@@ -124,6 +117,59 @@ TEST(AnimateCommand, DatesAtNoonAndNoFfmpegStillWritesTheFrames) {
   EXPECT_NE(without.output.find("no ffmpeg"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "n" / "frame_0001.png"));
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "n" / "animation.mp4"));
+}
+
+// The viewer as a person uses it, in Debian's headless Chromium: every position of the
+// slider, the arrow key and the play button show the frame animate wrote for that
+// position (its pixels, read back through a canvas) and its label (date, time and sun
+// altitude as in frames.csv), with no script error. Four frames at 64 × 36; about 3 s,
+// most of it Chromium's start. Skipped only when no Chromium is installed.
+TEST(AnimateCommand, ViewerInChromiumShowsEachFrameWithItsLabel) {
+  const std::filesystem::path chromium = testing::find_chromium();
+  if (!std::filesystem::exists(chromium))
+    GTEST_SKIP() << "no Chromium (" << chromium
+                 << " does not exist): the viewer's browser test needs it; scripts/install-deps.sh installs it";
+  TempDir dir;
+  const auto scene = dir.write("scene.json", sited_scene("2026-03-21T12:00+01:00", 64, 36));
+  const auto out = dir.path() / "study";
+  const auto r =
+      run_skylit("animate " + quoted(scene) +
+                 " --from 2026-03-21T09:00+01:00 --to 2026-03-21T18:00+01:00 --every 3h --fps 20 -q -o " + quoted(out));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto rows = csv_rows(testing::read_file(out / "frames.csv"));
+  ASSERT_EQ(rows.size(), 5u);  // the header and four frames
+
+  const testing::PageResult page = testing::run_page_script("viewer_frames.mjs", chromium, out / "viewer.html");
+  ASSERT_EQ(page.command.exit_status, 0) << page.command.output;
+  const nlohmann::json& seen = page.json;
+  ASSERT_TRUE(seen.is_object()) << page.command.output;
+  EXPECT_TRUE(seen["errors"].empty()) << seen["errors"].dump();
+  ASSERT_EQ(seen["count"], 4);
+  // What the viewer shows for frame i (0-based) is frame_000<i+1>.png, labelled as in
+  // frames.csv: "<n>/4  <date> <time><offset>  sun <altitude to 0.1°>°".
+  const auto expect_frame = [&](const nlohmann::json& shown, std::size_t i, const std::string& how) {
+    SCOPED_TRACE(how + ", frame " + std::to_string(i + 1));
+    ASSERT_LT(i, 4u);
+    EXPECT_EQ(shown["slider"], i);
+    EXPECT_TRUE(shown["complete"].get<bool>());
+    const Raster png = test::read_png_raster(out / rows[i + 1][1]);
+    ASSERT_EQ(shown["width"], png.width);
+    ASSERT_EQ(shown["height"], png.height);
+    EXPECT_TRUE(shown["rgb"].get<std::vector<uint8_t>>() == png.rgb);  // the very pixels written
+    const std::vector<std::string>& row = rows[i + 1];
+    char altitude[32];
+    std::snprintf(altitude, sizeof altitude, "%.1f", std::stod(row[5]));
+    EXPECT_EQ(shown["label"], row[0] + "/4  " + row[2] + " " + row[3] + row[4] + "  sun " + altitude + "°");
+  };
+  expect_frame(seen["first"], 0, "opened");
+  ASSERT_EQ(seen["bySlider"].size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) expect_frame(seen["bySlider"][i], i, "slider");
+  expect_frame(seen["byKey"], 1, "arrow key from the first");
+  expect_frame(seen["afterPlay"], seen["afterPlay"]["slider"].get<std::size_t>(), "played and paused");
+  EXPECT_NE(seen["afterPlay"]["slider"], 1);  // play moved on from the second frame
+  EXPECT_EQ(seen["playText"], "play");        // paused again
+  // The frames differ (the sun moves), so showing the right one is a real check.
+  EXPECT_NE(seen["bySlider"][0]["rgb"], seen["bySlider"][1]["rgb"]);
 }
 
 TEST(AnimateCommand, MistakesExitTwoAndMakeNoFolder) {

@@ -1,6 +1,6 @@
 // The HTML report in a real browser (docs/report.md): `skylit render --report` writes a
 // page that Debian's headless Chromium, driven by playwright-core
-// (tests/browser/run-report-readout.sh installs it with npm ci), opens; every image must
+// (tests/browser/run-in-chromium.sh installs it with npm ci), opens; every image must
 // load and the read-out with the mouse over a known pixel must show the luminance the
 // EXR of the same render holds. Skipped only when no Chromium is installed.
 #include <OpenEXR/ImfChannelList.h>
@@ -10,35 +10,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "../test_support.h"
+#include "browser_support.h"
 #include "skylit/figures/report_luminance.h"
 #include "skylit/io/image/image_reader.h"
 
 namespace skylit {
 namespace {
 
+using testing::find_chromium;
 using testing::quoted;
 using testing::read_file;
 using testing::run_skylit;
 using testing::TempDir;
-
-// $SKYLIT_CHROMIUM, else `chromium` on the PATH, else Debian's /usr/bin/chromium.
-std::filesystem::path find_chromium() {
-  if (const char* given = std::getenv("SKYLIT_CHROMIUM")) return given;
-  if (const char* path = std::getenv("PATH")) {
-    std::stringstream folders(path);
-    std::string folder;
-    while (std::getline(folders, folder, ':'))
-      if (!folder.empty() && std::filesystem::exists(std::filesystem::path(folder) / "chromium"))
-        return std::filesystem::path(folder) / "chromium";
-  }
-  return "/usr/bin/chromium";
-}
 
 // The EXR's illuminance layer (render.exr_layers), read through OpenEXR.
 std::vector<float> exr_illuminance(const std::filesystem::path& path) {
@@ -75,11 +62,11 @@ TEST(ReportInBrowser, ImagesLoadAndReadOutShowsTheExrLuminance) {
   const XyzImage exr = read_image(dir.path() / "v.exr");
   const std::vector<float> lux = exr_illuminance(dir.path() / "v.exr");
   const std::vector<std::pair<int, int>> pixels{{24, 14}, {5, 29}};
-  const auto page = testing::run_command(
-      quoted(std::filesystem::path(SKYLIT_SOURCE_DIR) / "tests/browser/run-report-readout.sh") + " browser-test-deps " +
-      quoted(chromium) + " " + quoted(dir.path() / "report.html") + " 24 14 5 29");
-  ASSERT_EQ(page.exit_status, 0) << page.output;
-  const nlohmann::json result = nlohmann::json::parse(page.output.substr(page.output.find('{')));
+  const testing::PageResult page =
+      testing::run_page_script("report_readout.mjs", chromium, dir.path() / "report.html", "24 14 5 29");
+  ASSERT_EQ(page.command.exit_status, 0) << page.command.output;
+  const nlohmann::json& result = page.json;
+  ASSERT_TRUE(result.is_object()) << page.command.output;
   EXPECT_TRUE(result["errors"].empty()) << result["errors"].dump();
   ASSERT_EQ(result["images"].size(), 3u);  // the display image, luminance and illuminance in false colour
   for (const auto& image : result["images"]) {

@@ -1,30 +1,13 @@
-// Opens a skylit HTML report in headless Chromium (Debian's, through playwright-core)
-// and prints, as one JSON line, what a person would get from it: each image's natural
-// size once loaded, and the read-out with the mouse over each pixel (x, y) given, in
-// every image that has one. tests/app/report_browser_test.cpp runs it and checks the
-// numbers.
+// Opens a skylit HTML report in headless Chromium and prints, as one JSON line, what a
+// person would get from it: each image's natural size once loaded, and the read-out with
+// the mouse over each pixel (x, y) given, in every image that has one.
+// tests/app/report_browser_test.cpp runs it and checks the numbers.
 //
 //   node report_readout.mjs CHROMIUM PAGE.html X Y [X Y …]
-import { mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { withPage } from './chromium_page.mjs';
 
 const [executablePath, pagePath, ...coordinates] = process.argv.slice(2);
-const profile = mkdtempSync(join(tmpdir(), 'skylit-chromium-'));  // a fresh --user-data-dir
-const context = await chromium.launchPersistentContext(profile, {
-  executablePath,
-  headless: true,
-  viewport: { width: 1600, height: 1200 },
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking',
-         '--disable-component-update', '--disable-sync', '--no-first-run'],
-});
-try {
-  const page = context.pages()[0] ?? await context.newPage();
-  const errors = [];
-  page.on('pageerror', error => errors.push(String(error)));
-  await page.goto(pathToFileURL(pagePath).href, { waitUntil: 'load' });
+const result = await withPage(executablePath, pagePath, async (page, errors) => {
   const images = await page.$$eval('img', all => all.map(img => ({
     alt: img.alt, complete: img.complete, naturalWidth: img.naturalWidth, naturalHeight: img.naturalHeight })));
   const readouts = [];
@@ -40,8 +23,6 @@ try {
       readouts.push(await page.$eval('#readout', p => ({ text: p.textContent, ...p.dataset })));
     }
   }
-  console.log(JSON.stringify({ images, readouts, errors }));
-} finally {
-  await context.close();
-  rmSync(profile, { recursive: true, force: true });
-}
+  return { images, readouts, errors };
+});
+console.log(JSON.stringify(result));
