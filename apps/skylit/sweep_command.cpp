@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,6 +27,7 @@
 #include "skylit/io/image/image.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/pixel_layers.h"
+#include "skylit/render/prepared_scene.h"
 #include "skylit/render/renderer.h"
 #include "skylit/sun/time_steps.h"
 
@@ -82,6 +84,8 @@ std::optional<double> check_combinations(const SweepArguments& args, const Sweep
   return *shared;
 }
 
+constexpr int kTypicalYear = 2000;
+
 // The varied paths that set the instant: a sweep over them is a sweep over time.
 bool sets_the_time(const std::string& path) { return path == "time" || path == "weather.hour"; }
 
@@ -102,7 +106,10 @@ SweepFrames sweep_frames(const SweepArguments& args, const SweepPlan& plan) {
       throw InputError("sweep --stats plots the statistics over time, and combination " +
                        std::to_string(combination.index + 1) + " (" + label +
                        ") has none: give the scene a 'time' and a 'site', or vary time or weather.hour");
-    const OffsetDateTime time = parse_offset_date_time(scene.time, args.scene_file + ": time");
+    OffsetDateTime time = parse_offset_date_time(scene.time, args.scene_file + ": time");
+    // A typical year's months come from different years: its hours are placed in one
+    // year, 2000 (a leap year, so that February 29 exists), to lie in calendar order.
+    if (scene.weather) time.year = kTypicalYear;
     out.frames.push_back(
         {static_cast<int>(combination.index) + 1, time, scene.sun.altitude_deg, scene.sun.azimuth_deg});
     std::string group;
@@ -111,6 +118,9 @@ SweepFrames sweep_frames(const SweepArguments& args, const SweepPlan& plan) {
         group += (group.empty() ? "" : " / ") + plan.parameters[p].path + " = " + combination.values[p];
     out.groups.push_back(group);
   }
+  // A sweep over the time alone has no groups (and its CSV no group column).
+  if (std::all_of(out.groups.begin(), out.groups.end(), [](const std::string& g) { return g.empty(); }))
+    out.groups.clear();
   return out;
 }
 
@@ -173,14 +183,18 @@ int run_sweep(SweepArguments& args) {
   write_contact_sheet(sheet, sheet_path);
 
   if (args.statistics) {
+    // The objects each pixel sees change only with the values other than the time: one
+    // tracing of the camera's rays per group serves its combinations.
+    std::map<std::string, PixelLayers> layers_of_group;
     std::vector<RenderStatistics> statistics;
     for (const SweepCombination& combination : plan.combinations) {
-      // Each combination traces its own objects: a sweep may vary the geometry too.
       const Scene scene =
           load_scene(args.scene_file, with_overrides(args.overrides, sweep_overrides(plan, combination)));
-      const Renderer renderer(scene);
-      statistics.push_back(
-          render_statistics((*images)[combination.index], trace_pixel_layers(renderer.prepared()), scene));
+      const std::string group = frames.groups.empty() ? "" : frames.groups[combination.index];
+      auto layers = layers_of_group.find(group);
+      if (layers == layers_of_group.end())
+        layers = layers_of_group.emplace(group, trace_pixel_layers(PreparedScene(scene))).first;
+      statistics.push_back(render_statistics((*images)[combination.index], layers->second, scene));
     }
     AtomicFile(beside_sheet(sheet_path, "_statistics.csv"))
         .commit(study_statistics_csv(frames.frames, statistics, frames.groups));

@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "../io/epw_fixture.h"
 #include "../test_support.h"
 #include "study_csv.h"
 
@@ -199,6 +200,32 @@ TEST(SweepCommand, StatisticsOverHoursGatherIntoOneCsvAndAPlot) {
   EXPECT_EQ(no_time.exit_status, 2) << no_time.output;
   EXPECT_NE(no_time.output.find("--stats plots the statistics over time"), std::string::npos) << no_time.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "none"));
+}
+
+// A sweep over the hours of a weather file: a typical year's records come from different
+// years (here 2001 and 1995), and the statistics place them in one year, in calendar
+// order. 2 renders at 16 × 12.
+TEST(SweepCommand, StatisticsOverWeatherFileHoursLieInOneYear) {
+  TempDir dir;
+  testing::EpwRecordFields other_year;
+  other_year.year = 1995, other_year.day = 22;
+  dir.write("site.epw", testing::epw_fixture({other_year}));
+  const auto scene = dir.write("scene.json", R"({
+  "camera": {"position": [0, -20, 2], "look_at": [0, 0, 3]},
+  "weather": {"epw": "site.epw", "hour": "06-21T13:00"},
+  "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
+  "objects": [{"name": "ground", "type": "plane", "material": "white", "size_m": 200}],
+  "render": {"width": 16, "height": 12, "samples_per_axis": 1}
+})");
+  const auto r = run_skylit("sweep " + quoted(scene) + " --vary weather.hour=06-22T13:00,06-21T13:00 --stats -q -o " +
+                            quoted(dir.path() / "year.png"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  const auto csv = testing::csv_rows(testing::read_file(dir.path() / "year_statistics.csv"));
+  std::set<std::string> dates;
+  for (std::size_t i = 1; i < csv.size(); ++i) dates.insert(csv[i][1] + "T" + csv[i][2] + csv[i][3]);
+  // The sun at each hour's middle, 12:30 at the fixture's UTC−3:30.
+  EXPECT_EQ(dates, (std::set<std::string>{"2000-06-21T12:30-03:30", "2000-06-22T12:30-03:30"}));
+  testing::expect_plot_shows_csv(csv, dir.path() / "year_statistics.svg", std::nullopt);
 }
 
 TEST(SweepCommand, HelpExitsZero) {
