@@ -62,7 +62,7 @@ Spectrum fixed_step(const FogSkyLight& light, const Vec3& p, const Vec3& d, doub
   for (int k = 0; k <= steps; ++k) {
     const double s = span.lo + k * h, weight = (k == 0 || k == steps) ? 0.5 * h : h;
     const double z = std::clamp(p.z + d.z * s, fog.bottom_m(), fog.top_m());
-    const Spectrum j = light.source(z, -d.z);  // J/4π, or the multiple-scattering field's
+    const Spectrum j = light.source(z, -d.z, light.relative_azimuth(d));  // J/4π, or the multiple-scattering field's
     const Spectrum t = fog.transmittance(fog.column(p.z, d.z, 0.0, s));
     for (int i = 0; i < kSpectralBins; ++i)
       sum[static_cast<size_t>(i)] +=
@@ -198,7 +198,8 @@ TEST(FogSkyLight, VanishingDensityScattersNothing) {
     const double i = bin_mean(light.in_scattered({0, 0, 1.6}, {1, 0, 0}, 0, 1000));
     EXPECT_LT(i, previous);
     if (rho0 > 0 && rho0 < 0.01) {  // thin fog: I ≈ τ·L/4π·J·length, linear in ρ0
-      const double expected = rho0 * 0.02 * std::exp(-1.6 / 10.0) * bin_mean(light.source(1.6, 0.0)) * 1000;
+      const double expected = rho0 * 0.02 * std::exp(-1.6 / 10.0) *
+                              bin_mean(light.source(1.6, 0.0, light.relative_azimuth({1, 0, 0}))) * 1000;
       EXPECT_NEAR(i / expected, 1.0, 0.01) << rho0;
     }
     previous = i;

@@ -98,10 +98,19 @@ TEST(FogMultipleScattering, MatchesThePathTracedReferenceWhereTheFieldIsAzimutha
   compare(10.0, 30, 0.85, {2, 30, 85}, {90}, 4000);
 }
 
+TEST(FogMultipleScattering, FollowsTheSunInAzimuthWithTheDropletPhaseFunction) {
+  // The droplet fit (15 µm) at optical depth 1 with a low sun (10°), 30° up, looking away
+  // from the sun and 30° from it: the light scattered more than once still travels near
+  // the sun there, and the azimuthal mean alone read 1.84 and 0.71 of the reference;
+  // with the field's Fourier terms, 1.05 and 1.15 (standard errors 4 % and 10 % with
+  // 2000 paths). Within 10 % plus three standard errors.
+  compare(1.0, 10, 1.0, {30}, {0, 150}, 2000);
+}
+
 TEST(FogMultipleScattering, FullGridAgainstThePathTracedReference) {
-  // The droplet fit (15 µm). Known to fail at optical depths 1–10 (docs/fog.md): the
-  // azimuthal mean of the sun's multiply scattered light, which stays near the sun
-  // there, is spread over all azimuths.
+  // The droplet fit (15 µm). Known to fail in places (docs/fog.md): 10–50 % too bright
+  // in some views at optical depths 1–3, and the reference's heavy tail at 30 needs
+  // 20,000 paths or more.
   if (!std::getenv("SKYLIT_FOG_MS_FULL")) GTEST_SKIP() << "set SKYLIT_FOG_MS_FULL=1 for the full grid";
   const int paths = std::getenv("SKYLIT_FOG_MS_PATHS") ? std::atoi(std::getenv("SKYLIT_FOG_MS_PATHS")) : 20000;
   double worst = 0;

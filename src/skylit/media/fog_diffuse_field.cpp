@@ -11,13 +11,15 @@
 // level where the stream enters and S_out where it leaves, x = Δ/μ:
 //     L_out = e^{−x}·L_in + (g(x) − e^{−x})·S_in + (1 − g(x))·S_out,   g(x) = (1 − e^{−x})/x,
 // exact for a linear source, with weights ≥ 0 for any x (no oscillation in thick layers).
-// S = ω'·Σ_t 2π w_t p'(u, u_t)·L_t + ω'·p'(u, −μ0)·E0·e^{−τ'/μ0}, p' the azimuthal mean
-// of the δ-M phase function, Σ_l (2l + 1)/4π·χ'_l·P_l(u)·P_l(u').
+// For the field's Fourier term m in azimuth about the sunbeam (L = Σ_m L_m(τ, u)·cos mφ),
+// S_m = ω'·Σ_t 2π w_t p'_m(u, u_t)·L_m,t + (2 − δ_m0)·ω'·p'_m(u, −μ0)·E0·e^{−τ'/μ0},
+// p'_m = Σ_l (2l + 1)/4π·χ'_l·Λ_l^m(u)·Λ_l^m(u') the δ-M phase function's term m.
 #include "skylit/media/fog_diffuse_field.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 #include "skylit/core/angles.h"
 #include "skylit/core/banded_matrix.h"
@@ -59,6 +61,27 @@ std::vector<double> legendre(double u, int count) {
   for (int l = 2; l < count; ++l)
     p[static_cast<size_t>(l)] =
         ((2 * l - 1) * u * p[static_cast<size_t>(l - 1)] - (l - 1) * p[static_cast<size_t>(l - 2)]) / l;
+  return p;
+}
+
+// The normalised associated Legendre functions Λ_l^m(u) = √((l−m)!/(l+m)!)·P_l^m(u) for
+// l = 0 … count−1 (0 for l < m), without the Condon–Shortley phase, which cancels in the
+// products Λ_l^m(u)·Λ_l^m(u') that the addition theorem needs:
+//     P_l(cos Θ) = Σ_m (2 − δ_m0)·Λ_l^m(u)·Λ_l^m(u')·cos(m(φ − φ')).
+// The recurrences are those of the normalised functions (stable for the l, m ≤ 2N here).
+std::vector<double> associated_legendre(double u, int m, int count) {
+  std::vector<double> p(static_cast<size_t>(count), 0.0);
+  if (m >= count) return p;
+  const double s = std::sqrt(std::max(0.0, 1 - u * u));
+  double pmm = 1;  // Λ_m^m = √((2m)!)/(2^m m!)·s^m, built factor by factor
+  for (int k = 1; k <= m; ++k) pmm *= std::sqrt((2.0 * k - 1) / (2.0 * k)) * s;
+  p[static_cast<size_t>(m)] = pmm;
+  if (m + 1 < count) p[static_cast<size_t>(m + 1)] = std::sqrt(2.0 * m + 1) * u * pmm;
+  for (int l = m + 2; l < count; ++l) {
+    const double a = (2.0 * l - 1) / std::sqrt(static_cast<double>(l * l - m * m));
+    const double b = std::sqrt(static_cast<double>((l - 1) * (l - 1) - m * m) / static_cast<double>(l * l - m * m));
+    p[static_cast<size_t>(l)] = a * u * p[static_cast<size_t>(l - 1)] - b * p[static_cast<size_t>(l - 2)];
+  }
   return p;
 }
 
@@ -105,7 +128,9 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
   f_ = std::clamp(chi[static_cast<size_t>(kept)], 0.0, 0.999);
   std::vector<double> chi_scaled(kStreamsAll, 0.0);
   for (int l = 0; l < kept; ++l) chi_scaled[static_cast<size_t>(l)] = (chi[static_cast<size_t>(l)] - f_) / (1 - f_);
-  auto phase_mean = [&](const std::vector<double>& pa, const std::vector<double>& pb) {
+  // p'_m(u, u') = Σ_l (2l + 1)/4π·χ'_l·Λ_l^m(u)·Λ_l^m(u'): Fourier term m of the δ-M
+  // phase function between two cosines (m = 0: its azimuthal mean).
+  auto phase_term = [&](const std::vector<double>& pa, const std::vector<double>& pb) {
     double sum = 0;
     for (int l = 0; l < kStreamsAll; ++l)
       sum += (2 * l + 1) / (4 * kPi) * chi_scaled[static_cast<size_t>(l)] * pa[static_cast<size_t>(l)] *
@@ -124,29 +149,17 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
     w[static_cast<size_t>(s)] = w_node[static_cast<size_t>(s % kN)];
     u[static_cast<size_t>(s)] = s < kN ? -mu[static_cast<size_t>(s)] : mu[static_cast<size_t>(s)];
   }
-  std::vector<std::vector<double>> p_node;
-  p_node.reserve(u.size());
-  for (double us : u) p_node.push_back(legendre(us, kStreamsAll));
   const double mu0 = lighting.sun_cosine;
   const bool sun = mu0 > 0 && !lighting.sun_irradiance.is_black();
-  const std::vector<double> p_sun = legendre(-std::max(mu0, 0.0), kStreamsAll);
-  // The coupling ω'·2π·w_t·p'(u_s, u_t) and the sun's ω'·p'(u_s, −μ0).
-  std::vector<double> coupling(kStreamsAll * kStreamsAll), sun_coupling(kStreamsAll);
-  for (int s = 0; s < kStreamsAll; ++s) {
-    for (int t = 0; t < kStreamsAll; ++t)
-      coupling[static_cast<size_t>(s * kStreamsAll + t)] =
-          omega_scaled * 2 * kPi * w[static_cast<size_t>(t)] *
-          phase_mean(p_node[static_cast<size_t>(s)], p_node[static_cast<size_t>(t)]);
-    sun_coupling[static_cast<size_t>(s)] = sun ? omega_scaled * phase_mean(p_node[static_cast<size_t>(s)], p_sun) : 0.0;
-  }
 
-  // Output directions: upward cosines ±((m + 1)/M)², crowding toward the horizon.
-  constexpr int kM = kDirectionsPerHemisphere;
-  for (int m = kM - 1; m >= 0; --m) direction_.push_back(-std::pow((m + 1.0) / kM, 2));
-  for (int m = 0; m < kM; ++m) direction_.push_back(std::pow((m + 1.0) / kM, 2));
+  // Output directions: elevations ±90°·((k + 1)/K)², crowding toward the horizon (0.1°
+  // apart there) and 5.6° apart at the zenith and nadir, where the terms m ≥ 1 vary as
+  // sin^m θ (even spacing in the cosine would leave the top 20° to one interval).
+  constexpr int kK = kDirectionsPerHemisphere;
+  auto cosine = [](int k) { return std::sin(0.5 * kPi * std::pow((k + 1.0) / kK, 2)); };
+  for (int k = kK - 1; k >= 0; --k) direction_.push_back(-cosine(k));
+  for (int k = 0; k < kK; ++k) direction_.push_back(cosine(k));
   const size_t directions = direction_.size();
-  std::vector<std::vector<double>> p_out;
-  for (double uo : direction_) p_out.push_back(legendre(uo, kStreamsAll));
 
   // Levels in the column from the top, for the largest extinction of the bins.
   const double total = layer.column(layer.bottom_m(), 1.0, 0.0, layer.top_m() - layer.bottom_m());
@@ -171,125 +184,197 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
   }
   const int levels = static_cast<int>(column_.size()), layers = levels - 1;
 
-  // The sky at the streams' and the output directions' cosines.
-  std::vector<Spectrum> sky_node(kN), sky_out(directions);
-  for (int s = 0; s < kN; ++s) sky_node[static_cast<size_t>(s)] = lighting.sky(mu[static_cast<size_t>(s)]);
-  for (size_t m = 0; m < directions; ++m)
-    if (direction_[m] < 0) sky_out[m] = lighting.sky(-direction_[m]);
+  // The sky's Fourier terms in azimuth about the sunbeam, a_m(μ) = (2 − δ_m0)/2π ∫ L cos mφ dφ,
+  // by the midpoint rule over the half circle (the sky is symmetric about the sun's
+  // vertical plane), at the streams' and the output directions' cosines.
+  constexpr int kSkyAzimuths = 4 * kModes;
+  auto sky_terms = [&](double mu_down) {
+    std::vector<Spectrum> terms(kModes, Spectrum(0.0f));
+    for (int j = 0; j < kSkyAzimuths; ++j) {
+      const double phi = (j + 0.5) * kPi / kSkyAzimuths;
+      const Spectrum l = lighting.sky(mu_down, phi);
+      for (int m = 0; m < kModes; ++m)
+        terms[static_cast<size_t>(m)] +=
+            l * static_cast<float>((m == 0 ? 1.0 : 2.0) * std::cos(m * phi) / kSkyAzimuths);
+    }
+    return terms;
+  };
+  std::vector<std::vector<Spectrum>> sky_node(kN), sky_out(directions);
+  for (int s = 0; s < kN; ++s) sky_node[static_cast<size_t>(s)] = sky_terms(mu[static_cast<size_t>(s)]);
+  for (size_t d = 0; d < directions; ++d)
+    if (direction_[d] < 0) sky_out[d] = sky_terms(-direction_[d]);
 
-  scattered_.assign(static_cast<size_t>(levels) * directions, Spectrum(0.0f));
+  scattered_.assign(static_cast<size_t>(levels) * directions * kModes, Spectrum(0.0f));
   radiance_.assign(scattered_.size(), Spectrum(0.0f));
   downward_.assign(static_cast<size_t>(levels), Spectrum(0.0f));
   const double ground = std::clamp(lighting.ground_albedo, 0.0, 1.0) / kPi;
 
-  // Bins of equal σ share one system (all of them for grey fog).
+  // Bins of equal σ share one system per Fourier term (all of them for grey fog).
   std::map<double, std::vector<int>> groups;
   for (int b = 0; b < kSpectralBins; ++b) groups[sigma[static_cast<size_t>(b)]].push_back(b);
   const int n = kStreamsAll * levels;
-  for (const auto& [sigma_group, bins] : groups) {
-    const double per_column = depth_scale * sigma_group;
-    std::vector<double> tau(static_cast<size_t>(levels));
-    for (int k = 0; k < levels; ++k)
-      tau[static_cast<size_t>(k)] = std::min(per_column * column_[static_cast<size_t>(k)], 1e12);
-    auto weights = [&](int k, double mu_s) {
-      return step_weights(tau[static_cast<size_t>(k + 1)] - tau[static_cast<size_t>(k)], mu_s);
-    };
-    BandedMatrix a(n, 3 * kN - 1, 3 * kN - 1);
-    auto column_of = [](int level, int stream) { return kStreamsAll * level + stream; };
-    for (int s = 0; s < kN; ++s) a.at(s, column_of(0, s)) = 1.0;  // the sky at the top
-    for (int k = 0; k < layers; ++k) {
-      for (int s = 0; s < kStreamsAll; ++s) {
-        const int row = kN + kStreamsAll * k + s;
-        const StepWeights sw = weights(k, mu[static_cast<size_t>(s)]);
-        const bool down = s < kN;
-        const int in = down ? k : k + 1, out = down ? k + 1 : k;
-        a.at(row, column_of(out, s)) += 1.0;
-        a.at(row, column_of(in, s)) -= sw.through;
-        for (int t = 0; t < kStreamsAll; ++t) {
-          const double c = coupling[static_cast<size_t>(s * kStreamsAll + t)];
-          a.at(row, column_of(in, t)) -= sw.entry * c;
-          a.at(row, column_of(out, t)) -= sw.exit * c;
-        }
-      }
+  auto column_of = [](int level, int stream) { return kStreamsAll * level + stream; };
+  // A term m ≥ 1 has a source only in the sun and in the sky's azimuthal structure
+  // (without either, e.g. under a uniform sky, it is 0 and is not solved).
+  // (The midpoint sums leave terms of ~1e-8 of the mean for a uniform sky.)
+  auto has_term = [](const std::vector<Spectrum>& terms, int m) {
+    for (int b = 0; b < kSpectralBins; ++b)
+      if (std::abs(terms[static_cast<size_t>(m)][b]) > 1e-6f * std::abs(terms[0][b])) return true;
+    return false;
+  };
+  auto sky_has_term = [&](int m) {
+    for (const auto& terms : sky_node)
+      if (has_term(terms, m)) return true;
+    for (const auto& terms : sky_out)
+      if (!terms.empty() && has_term(terms, m)) return true;
+    return false;
+  };
+  for (int m = 0; m < kModes; ++m) {
+    if (m > 0 && !sun && !sky_has_term(m)) continue;
+    // Term m of the phase function at the streams, the sun and the output directions.
+    std::vector<std::vector<double>> p_node;
+    for (double us : u) p_node.push_back(associated_legendre(us, m, kStreamsAll));
+    const std::vector<double> p_sun = associated_legendre(-std::max(mu0, 0.0), m, kStreamsAll);
+    // The coupling ω'·2π·w_t·p'_m(u_s, u_t) (2π for every m: ∫cos m(φ−φ')·cos mφ' dφ' = π
+    // meets the factor 2 of the addition theorem) and the sun's (2 − δ_m0)·ω'·p'_m(u_s, −μ0).
+    const double sun_factor = m == 0 ? 1.0 : 2.0;
+    std::vector<double> coupling(kStreamsAll * kStreamsAll), sun_coupling(kStreamsAll);
+    for (int s = 0; s < kStreamsAll; ++s) {
+      for (int t = 0; t < kStreamsAll; ++t)
+        coupling[static_cast<size_t>(s * kStreamsAll + t)] =
+            omega_scaled * 2 * kPi * w[static_cast<size_t>(t)] *
+            phase_term(p_node[static_cast<size_t>(s)], p_node[static_cast<size_t>(t)]);
+      sun_coupling[static_cast<size_t>(s)] =
+          sun ? sun_factor * omega_scaled * phase_term(p_node[static_cast<size_t>(s)], p_sun) : 0.0;
     }
-    for (int s = kN; s < kStreamsAll; ++s) {  // the ground reflects the downward flux
-      const int row = kN + kStreamsAll * layers + (s - kN);
-      a.at(row, column_of(layers, s)) += 1.0;
-      for (int t = 0; t < kN; ++t)
-        a.at(row, column_of(layers, t)) -= ground * 2 * kPi * w[static_cast<size_t>(t)] * mu[static_cast<size_t>(t)];
+    // The output directions' coupling to the streams and to the sun.
+    std::vector<double> out_coupling(directions * kStreamsAll), out_sun(directions);
+    for (size_t d = 0; d < directions; ++d) {
+      const std::vector<double> p_out = associated_legendre(direction_[d], m, kStreamsAll);
+      for (int t = 0; t < kStreamsAll; ++t)
+        out_coupling[d * kStreamsAll + static_cast<size_t>(t)] =
+            2 * kPi * w[static_cast<size_t>(t)] * phase_term(p_out, p_node[static_cast<size_t>(t)]);
+      out_sun[d] = sun ? sun_factor * omega_scaled * phase_term(p_out, p_sun) : 0.0;
     }
-    if (!a.factorise()) continue;  // cannot happen for ω' ≤ 1; the field stays 0
 
-    for (int b : bins) {
-      const double e0 = sun ? lighting.sun_irradiance[b] : 0.0;
-      auto beam = [&](int k) { return sun ? e0 * std::exp(-tau[static_cast<size_t>(k)] / mu0) : 0.0; };
-      std::vector<double> rhs(static_cast<size_t>(n), 0.0);
-      for (int s = 0; s < kN; ++s) rhs[static_cast<size_t>(s)] = sky_node[static_cast<size_t>(s)][b];
-      for (int k = 0; k < layers; ++k)
+    for (const auto& [sigma_group, bins] : groups) {
+      const double per_column = depth_scale * sigma_group;
+      std::vector<double> tau(static_cast<size_t>(levels));
+      for (int k = 0; k < levels; ++k)
+        tau[static_cast<size_t>(k)] = std::min(per_column * column_[static_cast<size_t>(k)], 1e12);
+      auto weights = [&](int k, double mu_s) {
+        return step_weights(tau[static_cast<size_t>(k + 1)] - tau[static_cast<size_t>(k)], mu_s);
+      };
+      BandedMatrix a(n, 3 * kN - 1, 3 * kN - 1);
+      for (int s = 0; s < kN; ++s) a.at(s, column_of(0, s)) = 1.0;  // the sky at the top
+      for (int k = 0; k < layers; ++k) {
         for (int s = 0; s < kStreamsAll; ++s) {
+          const int row = kN + kStreamsAll * k + s;
           const StepWeights sw = weights(k, mu[static_cast<size_t>(s)]);
           const bool down = s < kN;
           const int in = down ? k : k + 1, out = down ? k + 1 : k;
-          rhs[static_cast<size_t>(kN + kStreamsAll * k + s)] =
-              sun_coupling[static_cast<size_t>(s)] * (sw.entry * beam(in) + sw.exit * beam(out));
+          a.at(row, column_of(out, s)) += 1.0;
+          a.at(row, column_of(in, s)) -= sw.through;
+          for (int t = 0; t < kStreamsAll; ++t) {
+            const double c = coupling[static_cast<size_t>(s * kStreamsAll + t)];
+            a.at(row, column_of(in, t)) -= sw.entry * c;
+            a.at(row, column_of(out, t)) -= sw.exit * c;
+          }
         }
-      const double ground_direct = sun ? ground * mu0 * beam(layers) : 0.0;
-      for (int s = kN; s < kStreamsAll; ++s)
-        rhs[static_cast<size_t>(kN + kStreamsAll * layers + (s - kN))] = ground_direct;
-      a.solve(rhs);
-      auto node = [&](int k, int t) { return std::max(0.0, rhs[static_cast<size_t>(column_of(k, t))]); };
-
-      for (int k = 0; k < levels; ++k) {
-        double flux = 0;
-        for (int t = 0; t < kN; ++t)
-          flux += 2 * kPi * w[static_cast<size_t>(t)] * mu[static_cast<size_t>(t)] * node(k, t);
-        downward_[static_cast<size_t>(k)][b] = static_cast<float>(flux);
       }
-      const double ground_up = ground * (downward_[static_cast<size_t>(layers)][b] + mu0 * beam(layers));
+      // The Lambertian ground reflects the downward flux, into the azimuthal mean only.
+      const double ground_m = m == 0 ? ground : 0.0;
+      for (int s = kN; s < kStreamsAll; ++s) {
+        const int row = kN + kStreamsAll * layers + (s - kN);
+        a.at(row, column_of(layers, s)) += 1.0;
+        for (int t = 0; t < kN; ++t)
+          a.at(row, column_of(layers, t)) -=
+              ground_m * 2 * kPi * w[static_cast<size_t>(t)] * mu[static_cast<size_t>(t)];
+      }
+      if (!a.factorise()) continue;  // cannot happen for ω' ≤ 1; the term stays 0
 
-      // Each output direction: its source at every level, its radiance by the formal
-      // solution, and the light scattered toward it.
-      std::vector<double> source(static_cast<size_t>(levels)), body(static_cast<size_t>(levels));
-      for (size_t m = 0; m < directions; ++m) {
-        const double uo = direction_[m], mu_o = std::abs(uo);
-        const double sun_c = sun ? omega_scaled * phase_mean(p_out[m], p_sun) : 0.0;
-        for (int k = 0; k < levels; ++k) {
-          double integral = 0;  // ∫ p' L over the streams
-          for (int t = 0; t < kStreamsAll; ++t)
-            integral +=
-                2 * kPi * w[static_cast<size_t>(t)] * phase_mean(p_out[m], p_node[static_cast<size_t>(t)]) * node(k, t);
-          body[static_cast<size_t>(k)] = integral;
-          source[static_cast<size_t>(k)] = omega_scaled * integral + sun_c * beam(k);
-        }
+      for (int b : bins) {
+        const double e0 = sun ? lighting.sun_irradiance[b] : 0.0;
+        auto beam = [&](int k) { return sun ? e0 * std::exp(-tau[static_cast<size_t>(k)] / mu0) : 0.0; };
+        std::vector<double> rhs(static_cast<size_t>(n), 0.0);
+        for (int s = 0; s < kN; ++s)
+          rhs[static_cast<size_t>(s)] = sky_node[static_cast<size_t>(s)][static_cast<size_t>(m)][b];
+        for (int k = 0; k < layers; ++k)
+          for (int s = 0; s < kStreamsAll; ++s) {
+            const StepWeights sw = weights(k, mu[static_cast<size_t>(s)]);
+            const bool down = s < kN;
+            const int in = down ? k : k + 1, out = down ? k + 1 : k;
+            rhs[static_cast<size_t>(kN + kStreamsAll * k + s)] =
+                sun_coupling[static_cast<size_t>(s)] * (sw.entry * beam(in) + sw.exit * beam(out));
+          }
+        const double ground_direct = sun ? ground_m * mu0 * beam(layers) : 0.0;
+        for (int s = kN; s < kStreamsAll; ++s)
+          rhs[static_cast<size_t>(kN + kStreamsAll * layers + (s - kN))] = ground_direct;
+        a.solve(rhs);
+        // Terms m ≥ 1 change sign with azimuth; only the azimuthal mean is a radiance.
+        auto node = [&](int k, int t) {
+          const double v = rhs[static_cast<size_t>(column_of(k, t))];
+          return m == 0 ? std::max(0.0, v) : v;
+        };
+
+        if (m == 0)
+          for (int k = 0; k < levels; ++k) {
+            double flux = 0;
+            for (int t = 0; t < kN; ++t)
+              flux += 2 * kPi * w[static_cast<size_t>(t)] * mu[static_cast<size_t>(t)] * node(k, t);
+            downward_[static_cast<size_t>(k)][b] = static_cast<float>(flux);
+          }
+        const double ground_up =
+            m == 0 ? ground * (downward_[static_cast<size_t>(layers)][b] + mu0 * beam(layers)) : 0.0;
+
+        // Each output direction: its source at every level, its radiance by the formal
+        // solution, and the light scattered toward it.
+        std::vector<double> source(static_cast<size_t>(levels)), body(static_cast<size_t>(levels));
         std::vector<double> l(static_cast<size_t>(levels));
-        if (uo < 0) {
-          l[0] = sky_out[m][b];
-          for (int k = 0; k < layers; ++k) {
-            const StepWeights sw = weights(k, mu_o);
-            l[static_cast<size_t>(k + 1)] = sw.through * l[static_cast<size_t>(k)] +
-                                            sw.entry * source[static_cast<size_t>(k)] +
-                                            sw.exit * source[static_cast<size_t>(k + 1)];
+        for (size_t d = 0; d < directions; ++d) {
+          const double uo = direction_[d], mu_o = std::abs(uo);
+          for (int k = 0; k < levels; ++k) {
+            double integral = 0;  // ∫ p'_m L_m over the streams
+            for (int t = 0; t < kStreamsAll; ++t)
+              integral += out_coupling[d * kStreamsAll + static_cast<size_t>(t)] * node(k, t);
+            body[static_cast<size_t>(k)] = integral;
+            source[static_cast<size_t>(k)] = omega_scaled * integral + out_sun[d] * beam(k);
           }
-        } else {
-          l[static_cast<size_t>(layers)] = ground_up;
-          for (int k = layers - 1; k >= 0; --k) {
-            const StepWeights sw = weights(k, mu_o);
-            l[static_cast<size_t>(k)] = sw.through * l[static_cast<size_t>(k + 1)] +
-                                        sw.entry * source[static_cast<size_t>(k + 1)] +
-                                        sw.exit * source[static_cast<size_t>(k)];
+          if (uo < 0) {
+            l[0] = sky_out[d][static_cast<size_t>(m)][b];
+            for (int k = 0; k < layers; ++k) {
+              const StepWeights sw = weights(k, mu_o);
+              l[static_cast<size_t>(k + 1)] = sw.through * l[static_cast<size_t>(k)] +
+                                              sw.entry * source[static_cast<size_t>(k)] +
+                                              sw.exit * source[static_cast<size_t>(k + 1)];
+            }
+          } else {
+            l[static_cast<size_t>(layers)] = ground_up;
+            for (int k = layers - 1; k >= 0; --k) {
+              const StepWeights sw = weights(k, mu_o);
+              l[static_cast<size_t>(k)] = sw.through * l[static_cast<size_t>(k + 1)] +
+                                          sw.entry * source[static_cast<size_t>(k + 1)] +
+                                          sw.exit * source[static_cast<size_t>(k)];
+            }
           }
-        }
-        for (int k = 0; k < levels; ++k) {
-          const size_t at = static_cast<size_t>(k) * directions + m;
-          const double radiance = std::max(0.0, l[static_cast<size_t>(k)]);
-          const double scattered = std::max(0.0, f_ * radiance + (1 - f_) * body[static_cast<size_t>(k)]);
-          radiance_[at][b] = static_cast<float>(radiance);
-          scattered_[at][b] = static_cast<float>(scattered);
-          largest_[static_cast<size_t>(b)] = std::max(largest_[static_cast<size_t>(b)], scattered);
+          for (int k = 0; k < levels; ++k) {
+            const size_t at = (static_cast<size_t>(k) * directions + d) * kModes + static_cast<size_t>(m);
+            const double radiance = m == 0 ? std::max(0.0, l[static_cast<size_t>(k)]) : l[static_cast<size_t>(k)];
+            const double scattered = f_ * radiance + (1 - f_) * body[static_cast<size_t>(k)];
+            radiance_[at][b] = static_cast<float>(radiance);
+            scattered_[at][b] = static_cast<float>(m == 0 ? std::max(0.0, scattered) : scattered);
+          }
         }
       }
     }
   }
+  // The largest light scattered toward any direction: bounded by Σ_m |S_m| per bin.
+  for (size_t at = 0; at < scattered_.size(); at += kModes)
+    for (int b = 0; b < kSpectralBins; ++b) {
+      double bound = 0;
+      for (int m = 0; m < kModes; ++m) bound += std::abs(scattered_[at + static_cast<size_t>(m)][b]);
+      largest_[static_cast<size_t>(b)] = std::max(largest_[static_cast<size_t>(b)], bound);
+    }
 }
 
 FogDiffuseField::LevelWeight FogDiffuseField::level_at(double z) const {
@@ -301,21 +386,52 @@ FogDiffuseField::LevelWeight FogDiffuseField::level_at(double z) const {
   return {k, span > 0 ? static_cast<float>(std::clamp((c - column_[k]) / span, 0.0, 1.0)) : 0.0f};
 }
 
-Spectrum FogDiffuseField::lookup(const std::vector<Spectrum>& table, double z, double up) const {
-  if (std::isnan(z) || std::isnan(up)) return Spectrum(0.0f);
+FogDiffuseField::AzimuthTerms FogDiffuseField::azimuth_terms(double relative_azimuth) {
+  AzimuthTerms c{};
+  for (int m = 0; m < kModes; ++m) c[static_cast<size_t>(m)] = static_cast<float>(std::cos(m * relative_azimuth));
+  return c;
+}
+
+void FogDiffuseField::lookup_terms(const std::vector<Spectrum>& table, double z, double up,
+                                   std::array<Spectrum, kModes>& terms) const {
+  terms.fill(Spectrum(0.0f));
+  if (std::isnan(z) || std::isnan(up)) return;
   const LevelWeight level = level_at(z);
   const size_t k = level.below, directions = direction_.size();
   up = std::clamp(up, direction_.front(), direction_.back());
-  size_t m = static_cast<size_t>(std::upper_bound(direction_.begin(), direction_.end(), up) - direction_.begin());
-  m = std::clamp<size_t>(m, 1, directions - 1) - 1;
-  const float fm = static_cast<float>((up - direction_[m]) / (direction_[m + 1] - direction_[m]));
-  auto at = [&](size_t kk, size_t mm) { return table[kk * directions + mm]; };
-  return (at(k, m) * (1 - fm) + at(k, m + 1) * fm) * (1 - level.above) +
-         (at(k + 1, m) * (1 - fm) + at(k + 1, m + 1) * fm) * level.above;
+  size_t d = static_cast<size_t>(std::upper_bound(direction_.begin(), direction_.end(), up) - direction_.begin());
+  d = std::clamp<size_t>(d, 1, directions - 1) - 1;
+  const float fd = static_cast<float>((up - direction_[d]) / (direction_[d + 1] - direction_[d]));
+  const std::array<std::pair<size_t, float>, 4> corners{{{k * directions + d, (1 - fd) * (1 - level.above)},
+                                                         {k * directions + d + 1, fd * (1 - level.above)},
+                                                         {(k + 1) * directions + d, (1 - fd) * level.above},
+                                                         {(k + 1) * directions + d + 1, fd * level.above}}};
+  for (const auto& [cell, weight] : corners) {
+    const Spectrum* t = &table[cell * kModes];
+    for (int m = 0; m < kModes; ++m) terms[static_cast<size_t>(m)] += t[m] * weight;
+  }
 }
 
-Spectrum FogDiffuseField::scattered(double z, double up) const { return lookup(scattered_, z, up); }
-Spectrum FogDiffuseField::radiance(double z, double up) const { return lookup(radiance_, z, up); }
+Spectrum FogDiffuseField::lookup(const std::vector<Spectrum>& table, double z, double up,
+                                 const AzimuthTerms& weights) const {
+  std::array<Spectrum, kModes> terms;
+  lookup_terms(table, z, up, terms);
+  Spectrum v(0.0f);
+  for (int m = 0; m < kModes; ++m) v += terms[static_cast<size_t>(m)] * weights[static_cast<size_t>(m)];
+  for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);  // a truncated series may dip below 0
+  return v;
+}
+
+void FogDiffuseField::scattered_terms(double z, double up, std::array<Spectrum, kModes>& terms) const {
+  lookup_terms(scattered_, z, up, terms);
+}
+
+Spectrum FogDiffuseField::scattered(double z, double up, double relative_azimuth) const {
+  return lookup(scattered_, z, up, azimuth_terms(relative_azimuth));
+}
+Spectrum FogDiffuseField::radiance(double z, double up, double relative_azimuth) const {
+  return lookup(radiance_, z, up, azimuth_terms(relative_azimuth));
+}
 
 Spectrum FogDiffuseField::downward_irradiance(double z) const {
   if (std::isnan(z)) return Spectrum(0.0f);

@@ -9,11 +9,14 @@
 //   moments χ_l are cut at 2N, a fraction f = χ_2N of the scattering going into a forward
 //   spike that is treated as not scattered at all. The slab's optical depth becomes
 //   (1 − ωf)τ, its albedo ω(1 − f)/(1 − ωf), its phase function the smooth rest.
-// - Discrete ordinates: N Gauss–Legendre cosines per hemisphere (double Gauss), the
-//   azimuthal mean (m = 0) of the field only. Between levels, each stream is integrated
-//   along its characteristic with a source linear in depth (positive weights for any
-//   layer thickness); with the sky at the top and the ground's reflection at the bottom
-//   this is one banded linear system per distinct extinction (one for grey fog).
+// - Discrete ordinates: N Gauss–Legendre cosines per hemisphere (double Gauss), and the
+//   field's Fourier terms m = 0 … 2N−1 in azimuth about the sunbeam (DISORT's splitting:
+//   the addition theorem separates the δ-M phase function into terms that do not couple).
+//   Between levels, each stream is integrated along its characteristic with a source
+//   linear in depth (positive weights for any layer thickness); with the sky's term at the
+//   top and the ground's reflection at the bottom (term 0 only: the ground is Lambertian)
+//   this is one banded linear system per term and distinct extinction (grey fog: one per
+//   term).
 // - The field toward any direction is then the formal solution along it (the "source
 //   function integration"), and the light a unit of scattering sends toward a direction
 //   is f·L(u) + (1 − f)·∫p'L: what replaces Eq. 11's single-scattered source.
@@ -33,9 +36,10 @@ namespace skylit {
 
 // What lights the layer.
 struct FogLayerLighting {
-  // The sky's radiance entering the top, averaged over azimuth, toward a downward
-  // direction whose cosine with the nadir is mu (0 < mu ≤ 1).
-  std::function<Spectrum(double mu)> sky;
+  // The sky's radiance entering the top toward a downward direction whose cosine with the
+  // nadir is mu (0 < mu ≤ 1) and whose azimuth of travel is phi (radians) from the
+  // sunbeam's (0: travelling the way the sunlight does, i.e. seen looking toward the sun).
+  std::function<Spectrum(double mu, double phi)> sky;
   Spectrum sun_irradiance;   // normal to the beam at the top (W m⁻² nm⁻¹)
   double sun_cosine = 0;     // μ0; ≤ 0: no sun
   double ground_albedo = 0;  // Lambertian, grey, at the layer's bottom
@@ -50,6 +54,10 @@ class FogDiffuseField {
  public:
   static constexpr int kStreams = 8;                   // per hemisphere (N)
   static constexpr int kDirectionsPerHemisphere = 32;  // of the output table
+  static constexpr int kModes = 2 * kStreams;          // Fourier terms in azimuth
+  // cos(m·φ) for m = 0 … kModes−1: what the terms are weighed by at a relative azimuth φ.
+  using AzimuthTerms = std::array<float, kModes>;
+  static AzimuthTerms azimuth_terms(double relative_azimuth);
 
   FogDiffuseField(const FogLayer& layer, const FogLayerLighting& lighting);
 
@@ -59,15 +67,18 @@ class FogDiffuseField {
   double sun_depth_scale() const { return 1.0 - omega_ * f_; }
 
   // The light a unit of scattering at altitude z sends in the direction of travel with
-  // upward cosine `up` (per steradian): ∫ p(Θ) L_diffuse dω, with the sun's single
-  // scattering left out (the beams carry it). W m⁻² sr⁻¹ nm⁻¹ per unit scattering; the
-  // paper's isotropic J(z)/4π is its single-scattering, isotropic counterpart.
-  Spectrum scattered(double z_m, double up) const;
+  // upward cosine `up` and azimuth `relative_azimuth` (radians) from the sunbeam's (per
+  // steradian): ∫ p(Θ) L_diffuse dω, with the sun's single scattering left out (the beams
+  // carry it). W m⁻² sr⁻¹ nm⁻¹ per unit scattering; the paper's isotropic J(z)/4π is its
+  // single-scattering, isotropic counterpart.
+  Spectrum scattered(double z_m, double up, double relative_azimuth) const;
+  // Its Fourier terms S_m(z, up), unclamped: scattered = max(0, Σ_m cos(mφ)·S_m).
+  void scattered_terms(double z_m, double up, std::array<Spectrum, kModes>& terms) const;
   // The diffuse radiance itself toward the same direction (for tests).
-  Spectrum radiance(double z_m, double up) const;
+  Spectrum radiance(double z_m, double up, double relative_azimuth) const;
   // The diffuse irradiance on a horizontal plane facing up (downward flux) at z.
   Spectrum downward_irradiance(double z_m) const;
-  // The largest value `scattered` takes, per bin.
+  // A bound on the largest value `scattered` takes (Σ_m |S_m|), per bin.
   const std::array<double, kSpectralBins>& largest() const { return largest_; }
 
  private:
@@ -77,13 +88,16 @@ class FogDiffuseField {
     float above;
   };
   LevelWeight level_at(double z_m) const;
-  Spectrum lookup(const std::vector<Spectrum>& table, double z_m, double up) const;
+  // The table's terms interpolated in altitude and direction.
+  void lookup_terms(const std::vector<Spectrum>& table, double z_m, double up,
+                    std::array<Spectrum, kModes>& terms) const;
+  Spectrum lookup(const std::vector<Spectrum>& table, double z_m, double up, const AzimuthTerms& weights) const;
 
   FogLayer layer_;
   double omega_, f_;
   std::vector<double> column_;                  // column from the top (m) at each level, increasing
   std::vector<double> direction_;               // output directions' upward cosines, increasing
-  std::vector<Spectrum> scattered_, radiance_;  // [level][direction]
+  std::vector<Spectrum> scattered_, radiance_;  // [level][direction][term]
   std::vector<Spectrum> downward_;              // [level]
   std::array<double, kSpectralBins> largest_{};
 };

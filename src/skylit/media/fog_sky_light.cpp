@@ -40,6 +40,8 @@ FogSkyLight::FogSkyLight(const FogLayer& fog, const SkyModel& sky, int altitudes
   Vec3 e1{sky.to_sun().x, sky.to_sun().y, 0.0};
   e1 = length(e1) > 1e-9 ? normalize(e1) : Vec3{1, 0, 0};
   const Vec3 e2 = cross(up, e1);
+  sun_horizontal_ = e1;
+  sun_horizontal_side_ = e2;
   std::vector<double> w, dw;
   std::vector<Spectrum> a;
   const double dphi = kPi / kHalfAzimuths;
@@ -106,15 +108,11 @@ FogSkyLight::FogSkyLight(const FogLayer& fog, const SkyModel& sky, int altitudes
     FogLayerLighting light;
     // The sky's mean over azimuth at the top, toward each cosine (symmetric about the
     // sun's vertical plane, so one half circle counted twice).
-    light.sky = [&](double mu) {
+    // The sky at the top: light travelling down at azimuth φ from the sunbeam comes from
+    // the sky seen at azimuth φ from the sun.
+    light.sky = [&](double mu, double phi) {
       const double sin_zenith = std::sqrt(std::max(0.0, 1.0 - mu * mu));
-      Spectrum sum;
-      for (int j = 0; j < kHalfAzimuths; ++j) {
-        const double phi = (j + 0.5) * dphi;
-        sum +=
-            sky.sky_radiance_near_ground(sin_zenith * (std::cos(phi) * e1 + std::sin(phi) * e2) + mu * up).spectrum();
-      }
-      return sum * (1.0f / kHalfAzimuths);
+      return sky.sky_radiance_near_ground(sin_zenith * (std::cos(phi) * e1 + std::sin(phi) * e2) + mu * up).spectrum();
     };
     light.sun_cosine = sky.to_sun().z;
     light.sun_irradiance = sky.direct_sun(std::max(0.0, fog_.top_m())).spectrum();
@@ -143,29 +141,30 @@ Spectrum FogSkyLight::at(double z) const {
   return out;
 }
 
-Spectrum FogSkyLight::source(double z, double up) const {
-  if (diffuse_) return diffuse_->scattered(z, up);
+Spectrum FogSkyLight::source(double z, double up, double relative_azimuth) const {
+  if (diffuse_) return diffuse_->scattered(z, up, relative_azimuth);
   return at(z) * static_cast<float>(1.0 / (4.0 * kPi));
 }
 
-Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, double s_begin, double s_end,
-                                   int* steps) const {
+void FogSkyLight::integrate(const Vec3& viewpoint, const Vec3& dir_in, double s_begin, double s_end, int terms,
+                            const TermSource& source_terms, Spectrum* out, int* steps) const {
   if (steps) *steps = 0;
+  for (int t = 0; t < terms; ++t) out[t] = Spectrum(0.0f);
   const double albedo = fog_.single_scattering_albedo();
   const double len = length(dir_in);
   if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(viewpoint.z) || std::isnan(s_begin) || std::isnan(s_end) ||
       !(albedo > 0.0) || !(fog_.density_at_ground() > 0.0) || !(j_max_mean_ > 0.0))
-    return Spectrum(0.0f);
+    return;
   const double w = dir_in.z / len, z_p = viewpoint.z;
   const RaySpan span = fog_.clip(z_p, w, std::max(s_begin, 0.0), s_end);
-  if (span.empty()) return Spectrum(0.0f);
+  if (span.empty()) return;
   const double a = span.lo, b = span.hi;
 
   const auto& sigma = fog_.unit_density_extinction_bins();
   double sigma_mean = 0;
   for (double s : sigma) sigma_mean += s;
   sigma_mean /= kSpectralBins;
-  if (!(sigma_mean > 0.0)) return Spectrum(0.0f);
+  if (!(sigma_mean > 0.0)) return;
 
   // Largest altitude step per trapezoid: a tenth of the scale height or of the layer.
   const double thickness = fog_.top_m() - fog_.bottom_m();
@@ -175,28 +174,34 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, do
 
   // The integrand τ·source·e^(−(t − t(a))) per bin at s, given the column from a to s;
   // the factor ω0·e^(−t(a)) is applied at the end.
+  // With several terms (the Fourier terms of the multiple-scattering source), `mean` is
+  // that of Σ_t |term|, which bounds the light of any azimuth, and so paces the steps.
   struct Sample {
-    std::array<double, kSpectralBins> f{};
+    std::array<std::array<double, kSpectralBins>, kMaxTerms> f{};
     double mean = 0, tau_mean = 0;
   };
+  std::array<Spectrum, kMaxTerms> j;
   auto sample = [&](double s, double column_from_a) {
     Sample out;
     const double z = std::clamp(z_p + w * s, fog_.bottom_m(), fog_.top_m());
     const double rho = fog_.density(z);
-    const Spectrum j = source(z, -w);  // the light travels toward the viewpoint
+    source_terms(z, -w, j.data());  // the light travels toward the viewpoint
     for (int i = 0; i < kSpectralBins; ++i) {
       const double sg = sigma[static_cast<size_t>(i)];
       const double tau = std::min(sg * rho, 1e30);  // no Inf·0 for absurd densities
-      const double v = tau * j[i] * std::exp(-std::min(sg * column_from_a, 800.0));
-      out.f[static_cast<size_t>(i)] = v;
-      out.mean += v;
+      const double along = tau * std::exp(-std::min(sg * column_from_a, 800.0));
+      for (int t = 0; t < terms; ++t) {
+        const double v = along * j[static_cast<size_t>(t)][i];
+        out.f[static_cast<size_t>(t)][static_cast<size_t>(i)] = v;
+        out.mean += std::abs(v);
+      }
     }
     out.mean /= kSpectralBins;
     out.tau_mean = std::min(sigma_mean * rho, 1e30);
     return out;
   };
 
-  std::array<double, kSpectralBins> sum{};
+  std::array<std::array<double, kSpectralBins>, kMaxTerms> sum{};
   double s = a;
   Sample f0 = sample(a, 0.0);
   int n = 0;
@@ -212,7 +217,8 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, do
     const double s1 = std::min(s + ds, b);
     const double column = fog_.column(z_p, w, a, s1);
     const Sample f1 = sample(s1, column);
-    for (size_t i = 0; i < sum.size(); ++i) sum[i] += 0.5 * (s1 - s) * (f0.f[i] + f1.f[i]);
+    for (size_t t = 0; t < static_cast<size_t>(terms); ++t)
+      for (size_t i = 0; i < kSpectralBins; ++i) sum[t][i] += 0.5 * (s1 - s) * (f0.f[t][i] + f1.f[t][i]);
     ++n;
     s = s1;
     f0 = f1;
@@ -225,24 +231,76 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir_in, do
     double rest_column = std::isfinite(b) ? fog_.column(z_p, w, s, b) : kOpaqueColumnM;
     if (std::isnan(rest_column)) rest_column = kOpaqueColumnM;
     bool done = true;
-    for (size_t i = 0; i < sum.size() && done; ++i) {
+    for (size_t i = 0; i < kSpectralBins && done; ++i) {
       const double sg = sigma[i];
       const double rest =
           j_max_[i] * std::exp(-std::min(sg * column, 800.0)) * -std::expm1(-std::min(sg * rest_column, 800.0));
-      done = rest <= kTailTolerance * sum[i];
+      double summed = 0;
+      for (size_t t = 0; t < static_cast<size_t>(terms); ++t) summed += std::abs(sum[t][i]);
+      done = rest <= kTailTolerance * summed;
     }
     if (done) break;
   }
   if (steps) *steps = n;
 
   const double viewer_column = fog_.column(z_p, w, 0.0, a);
-  Spectrum out;
   for (int i = 0; i < kSpectralBins; ++i) {
     const double sg = sigma[static_cast<size_t>(i)];
-    const double v = albedo * std::exp(-std::min(sg * viewer_column, 800.0)) * sum[static_cast<size_t>(i)];
-    out[i] = static_cast<float>(std::isfinite(v) ? v : 0.0);
+    const double factor = albedo * std::exp(-std::min(sg * viewer_column, 800.0));
+    for (size_t t = 0; t < static_cast<size_t>(terms); ++t) {
+      const double v = factor * sum[t][static_cast<size_t>(i)];
+      out[t][i] = static_cast<float>(std::isfinite(v) ? v : 0.0);
+    }
   }
+}
+
+double FogSkyLight::relative_azimuth(const Vec3& dir) const {
+  const double x = dot(dir, sun_horizontal_), y = dot(dir, sun_horizontal_side_);
+  return x == 0 && y == 0 ? 0.0 : std::atan2(y, x);
+}
+
+Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end,
+                                   int* steps) const {
+  Spectrum out;
+  if (!diffuse_) {
+    integrate(
+        viewpoint, dir, s_begin, s_end, 1, [this](double z, double up, Spectrum* j) { *j = source(z, up, 0.0); }, &out,
+        steps);
+    return out;
+  }
+  // A straight ray keeps its azimuth: the source's terms are weighed once for it.
+  const FogDiffuseField::AzimuthTerms weights = FogDiffuseField::azimuth_terms(relative_azimuth(dir));
+  std::array<Spectrum, FogDiffuseField::kModes> terms;
+  integrate(
+      viewpoint, dir, s_begin, s_end, 1,
+      [&](double z, double up, Spectrum* j) {
+        diffuse_->scattered_terms(z, up, terms);
+        Spectrum sum(0.0f);
+        for (size_t m = 0; m < terms.size(); ++m) sum += terms[m] * weights[m];
+        for (int b = 0; b < kSpectralBins; ++b) sum[b] = std::max(sum[b], 0.0f);
+        *j = sum;
+      },
+      &out, steps);
   return out;
+}
+
+int FogSkyLight::in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end,
+                                    Spectrum* terms) const {
+  if (!diffuse_) {
+    integrate(
+        viewpoint, dir, s_begin, s_end, 1, [this](double z, double up, Spectrum* j) { *j = source(z, up, 0.0); }, terms,
+        nullptr);
+    return 1;
+  }
+  std::array<Spectrum, FogDiffuseField::kModes> field_terms;
+  integrate(
+      viewpoint, dir, s_begin, s_end, FogDiffuseField::kModes,
+      [&](double z, double up, Spectrum* j) {
+        diffuse_->scattered_terms(z, up, field_terms);
+        std::copy(field_terms.begin(), field_terms.end(), j);
+      },
+      terms, nullptr);
+  return FogDiffuseField::kModes;
 }
 
 }  // namespace skylit

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -71,24 +72,39 @@ class FogSkyLight {
     return in_scattered(viewpoint, dir, s_begin, s_end, nullptr);
   }
   Spectrum in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, int* steps) const;
+  // The same integral split into the source's azimuthal terms (FogDiffuseField), which
+  // along a ray depend on its altitude and elevation only: in_scattered toward any azimuth
+  // φ is then max(0, Σ_m cos(mφ)·term_m). Writes and returns the number of terms (1 in
+  // the paper's mode, whose source has no azimuth; at most kMaxTerms).
+  int in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, Spectrum* terms) const;
+  static constexpr int kMaxTerms = FogDiffuseField::kModes;
+  // The azimuth (radians) of a direction from the sun's, about the vertical.
+  double relative_azimuth(const Vec3& dir) const;
 
   const FogLayer& layer() const { return fog_; }
   // The light a unit of scattering at altitude z sends in the direction of travel of
-  // upward cosine `up` (W m⁻² sr⁻¹ nm⁻¹), the sun's single scattering left out: J(z)/4π
-  // in the paper's mode, the multiple-scattering field's otherwise.
-  Spectrum source(double z_m, double up) const;
+  // upward cosine `up` and azimuth `relative_azimuth` from the sunbeam's
+  // (W m⁻² sr⁻¹ nm⁻¹), the sun's single scattering left out: J(z)/4π in the paper's mode,
+  // the multiple-scattering field's otherwise.
+  Spectrum source(double z_m, double up, double relative_azimuth) const;
   // The factor on the fog's optical depth toward the sun for the beams (1 in the paper's
   // mode; FogDiffuseField::sun_depth_scale otherwise).
   double sun_depth_scale() const { return diffuse_ ? diffuse_->sun_depth_scale() : 1.0; }
   const FogDiffuseField* diffuse_field() const { return diffuse_ ? &*diffuse_ : nullptr; }
 
  private:
+  using TermSource = std::function<void(double z_m, double up, Spectrum* terms)>;
+  // ∫ τ (ω0) source_t e^(−t) ds for each of `terms` source terms, Eq. 14's pitch.
+  void integrate(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, int terms,
+                 const TermSource& source_terms, Spectrum* out, int* steps) const;
+
   FogLayer fog_;
-  std::vector<double> z_;                      // table altitudes
-  std::vector<Spectrum> j_;                    // J at them
-  std::optional<FogDiffuseField> diffuse_;     // with multiple scattering
-  std::array<double, kSpectralBins> j_max_{};  // the largest source (per sr), per bin
-  double j_max_mean_ = 0.0;                    // its bin mean: Eq. 14's scalar scale
+  Vec3 sun_horizontal_{1, 0, 0}, sun_horizontal_side_{0, 1, 0};  // the sun's azimuth and 90° from it
+  std::vector<double> z_;                                        // table altitudes
+  std::vector<Spectrum> j_;                                      // J at them
+  std::optional<FogDiffuseField> diffuse_;                       // with multiple scattering
+  std::array<double, kSpectralBins> j_max_{};                    // the largest source (per sr), per bin
+  double j_max_mean_ = 0.0;                                      // its bin mean: Eq. 14's scalar scale
   Spectrum unattenuated_;
 };
 

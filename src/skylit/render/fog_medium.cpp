@@ -30,8 +30,11 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
                                    layer_.unit_density_extinction_bins().end())),
       camera_(camera),
       row_length_(kElevationRows),
-      row_inscatter_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))),
-      row_depth_(row_inscatter_.size()) {
+      row_depth_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))) {
+  // The multiple-scattering source has azimuthal terms: the table keeps each one.
+  std::array<Spectrum, FogSkyLight::kMaxTerms> probe;
+  terms_ = sky_light_.in_scattered_terms(camera_, Vec3{1, 0, 0}, 0.0, 0.0, probe.data());
+  row_inscatter_.assign(row_depth_.size() * static_cast<size_t>(terms_), Spectrum(0.0f));
   const Spectrum& open = sky_light_.unattenuated();
   for (int i = 0; i < kShareAltitudes; ++i) {
     const double z = layer_.bottom_m() + (layer_.top_m() - layer_.bottom_m()) * i / (kShareAltitudes - 1);
@@ -46,15 +49,19 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
     const RaySpan inside = layer_.clip(camera_.z, dir.z, 0.0, kLongestRayM);
     const double length = inside.empty() ? 0.0 : inside.hi;
     row_length_[static_cast<size_t>(row)] = length;
-    Spectrum sum;
+    std::array<Spectrum, FogSkyLight::kMaxTerms> sum, piece;
+    sum.fill(Spectrum(0.0f));
     double previous = 0.0;
     for (int k = 0; k <= kDistanceSlices; ++k) {
       const double u = static_cast<double>(k) / kDistanceSlices;
       const double d = length * u * u;
-      if (d > previous) sum += sky_light_.in_scattered(camera_, dir, previous, d);
+      if (d > previous) {
+        sky_light_.in_scattered_terms(camera_, dir, previous, d, piece.data());
+        for (int t = 0; t < terms_; ++t) sum[static_cast<size_t>(t)] += piece[static_cast<size_t>(t)];
+      }
       previous = d;
       const size_t at = static_cast<size_t>(row * (kDistanceSlices + 1) + k);
-      row_inscatter_[at] = sum;
+      std::copy_n(sum.begin(), terms_, row_inscatter_.begin() + static_cast<std::ptrdiff_t>(at) * terms_);
       row_depth_[at] = clearest_depth(dir.z, d);
     }
   });
@@ -64,7 +71,14 @@ double FogMedium::clearest_depth(double z_v, double distance) const {
   return min_sigma_ * layer_.column(camera_.z, z_v, 0.0, distance);
 }
 
-Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance, double depth) const {
+Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double relative_azimuth, double distance,
+                                              double depth) const {
+  std::array<float, FogSkyLight::kMaxTerms> weights{};
+  weights[0] = 1.0f;
+  if (terms_ > 1) {
+    const FogDiffuseField::AzimuthTerms cosines = FogDiffuseField::azimuth_terms(relative_azimuth);
+    std::copy_n(cosines.begin(), terms_, weights.begin());
+  }
   const double u = std::clamp(elevation / (0.5 * kPi), -1.0, 1.0);
   const double f = (std::copysign(std::sqrt(std::abs(u)), u) + 1.0) * 0.5 * (kElevationRows - 1);
   const int row = std::min(static_cast<int>(f), kElevationRows - 2);
@@ -72,9 +86,15 @@ Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance,
   auto at_row = [&](int r) {
     const double length = row_length_[static_cast<size_t>(r)];
     const size_t first = static_cast<size_t>(r * (kDistanceSlices + 1));
-    const Spectrum* slices = &row_inscatter_[first];
-    if (length <= 0) return slices[0];
-    if (distance >= length) return slices[kDistanceSlices];
+    // Slice k's light toward the ray's azimuth: its terms weighed by cos(mφ).
+    auto slice = [&](int k) {
+      const Spectrum* t = &row_inscatter_[(first + static_cast<size_t>(k)) * static_cast<size_t>(terms_)];
+      Spectrum v(0.0f);
+      for (int m = 0; m < terms_; ++m) v += t[m] * weights[static_cast<size_t>(m)];
+      return v;
+    };
+    if (length <= 0) return slice(0);
+    if (distance >= length) return slice(kDistanceSlices);
     const double s = std::sqrt(distance / length) * kDistanceSlices;
     const int k = std::min(static_cast<int>(s), kDistanceSlices - 1);
     // Linear in the fog's transmittance e^−τ between the two slices around it: the
@@ -93,9 +113,11 @@ Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double distance,
       t = (distance - d0) / (d1 - d0);
     }
     const auto w = static_cast<float>(std::clamp(t, 0.0, 1.0));
-    return slices[k] * (1 - w) + slices[k + 1] * w;
+    return slice(k) * (1 - w) + slice(k + 1) * w;
   };
-  return at_row(row) * (1 - w) + at_row(row + 1) * w;
+  Spectrum v = at_row(row) * (1 - w) + at_row(row + 1) * w;
+  for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);  // a truncated series may dip below 0
+  return v;
 }
 
 FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
@@ -133,6 +155,7 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   // from the camera's table when the ray starts there.
   if (ray.origin == camera_)
     in_scattered += sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)),
+                                              sky_light_.relative_azimuth(ray.direction),
                                               std::min(distance, kLongestRayM), min_sigma_ * column);
   else
     in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));

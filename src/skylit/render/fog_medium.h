@@ -74,11 +74,12 @@ class FogMedium {
   // `depth`: the clearest bin's optical depth along the ray up to `distance`, by which
   // the slices are read (the rows around the ray, a fraction of a degree away, are
   // taken to have the same).
-  Spectrum sky_inscatter_from_camera(double elevation, double distance, double depth) const;
+  Spectrum sky_inscatter_from_camera(double elevation, double relative_azimuth, double distance, double depth) const;
   double min_sigma_;  // σ of the clearest bin (m⁻¹ per unit density)
   Vec3 camera_;
   std::vector<double> row_length_;
-  std::vector<Spectrum> row_inscatter_;  // [row][slice]
+  int terms_ = 1;                        // azimuthal terms of the sky light's source (FogSkyLight)
+  std::vector<Spectrum> row_inscatter_;  // [row][slice][term]
   std::vector<double> row_depth_;        // [row][slice]: the clearest bin's optical depth from the camera
   // The clearest bin's optical depth from the camera along a ray of vertical cosine z_v.
   double clearest_depth(double z_v, double distance) const;
