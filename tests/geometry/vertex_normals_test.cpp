@@ -55,6 +55,20 @@ TEST(VertexNormals, CylinderVerticesGetTheRadialDirection) {
   EXPECT_FALSE(any_smooth_corner(mesh, crease_angle_normals(mesh, 20), 0.01));
 }
 
+TEST(VertexNormals, CornersMeetByPositionNotByVertexIndex) {
+  // The same cylinder with every triangle on vertices of its own (as exporters often
+  // write them, one copy per face): corners at one place are still smoothed together,
+  // to the very same normals (they are summed in the same triangle order).
+  const TriangleMesh shared = cylinder(12);
+  TriangleMesh separate;
+  for (const auto& tri : shared.triangles) {
+    const auto first = static_cast<uint32_t>(separate.vertices.size());
+    for (uint32_t v : tri) separate.vertices.push_back(shared.vertices[v]);
+    separate.triangles.push_back({first, first + 1, first + 2});
+  }
+  EXPECT_EQ(crease_angle_normals(separate, 45), crease_angle_normals(shared, 45));
+}
+
 TEST(VertexNormals, ShadowRayOriginIsLiftedTowardTheCurvedSurface) {
   const TriangleMesh mesh = cylinder(12);
   const auto normals = crease_angle_normals(mesh, 45);

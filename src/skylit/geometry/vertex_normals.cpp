@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "skylit/core/angles.h"
 
@@ -34,26 +33,50 @@ std::vector<CornerNormals> crease_angle_normals(const TriangleMesh& mesh, double
       angle[t][c] = std::atan2(length(cross(e1, e2)), dot(e1, e2));
     }
   }
-  // The corners at each position.
-  std::map<std::array<double, 3>, std::vector<std::pair<uint32_t, int>>> around;
-  for (size_t t = 0; t < n; ++t)
-    for (int c = 0; c < 3; ++c) {
-      const Vec3& p = mesh.vertices[mesh.triangles[t][c]];
-      around[{p.x, p.y, p.z}].push_back({static_cast<uint32_t>(t), c});
-    }
+  // The corners at each position, in triangle order: vertices sorted by position give
+  // each distinct position a number (two vertices at one place share it), and a counting
+  // sort lists the corners by that number.
+  std::vector<uint32_t> by_position(mesh.vertices.size());
+  for (uint32_t v = 0; v < by_position.size(); ++v) by_position[v] = v;
+  const auto key = [&](uint32_t v) {
+    const Vec3& p = mesh.vertices[v];
+    return std::array<double, 3>{p.x, p.y, p.z};
+  };
+  std::sort(by_position.begin(), by_position.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+  std::vector<uint32_t> place(mesh.vertices.size());
+  uint32_t places = 0;
+  for (size_t i = 0; i < by_position.size(); ++i) {
+    if (i > 0 && key(by_position[i]) != key(by_position[i - 1])) ++places;
+    place[by_position[i]] = places;
+  }
+  std::vector<uint32_t> run_start(static_cast<size_t>(places) + 2, 0);
+  for (const auto& tri : mesh.triangles)
+    for (uint32_t v : tri) ++run_start[place[v] + 1];
+  for (size_t i = 1; i < run_start.size(); ++i) run_start[i] += run_start[i - 1];
+  std::vector<std::pair<uint32_t, int>> corners(3 * n);
+  {
+    std::vector<uint32_t> fill(run_start.begin(), run_start.end() - 1);
+    for (size_t t = 0; t < n; ++t)
+      for (int c = 0; c < 3; ++c) corners[fill[place[mesh.triangles[t][c]]]++] = {static_cast<uint32_t>(t), c};
+  }
   const double cos_crease = std::cos(radians(std::clamp(crease_angle_deg, 0.0, 180.0)));
   std::vector<CornerNormals> out(n);
-  for (const auto& [position, corners] : around)
-    for (const auto& [t, c] : corners) {
+  for (size_t run = 0; run + 1 < run_start.size(); ++run) {
+    const size_t first = run_start[run], last = run_start[run + 1];
+    for (size_t i = first; i < last; ++i) {
+      const auto [t, c] = corners[i];
       // Normals weighted by the corner angles (G. Thürmer and C. A. Wüthrich, "Computing
       // vertex normals from polygonal facets", J. Graphics Tools 3(1), 1998): unlike
       // area weights, they do not depend on how a facet was cut into triangles.
       Vec3 sum{0, 0, 0};
-      for (const auto& [other, oc] : corners)
+      for (size_t j = first; j < last; ++j) {
+        const auto [other, oc] = corners[j];
         if (other == t || dot(unit[t], unit[other]) >= cos_crease) sum += angle[other][oc] * unit[other];
+      }
       const double len = length(sum);
       out[t][c] = as_floats(len > 0 && std::isfinite(len) ? sum / len : Vec3{0, 0, 1});
     }
+  }
   return out;
 }
 
