@@ -9,8 +9,9 @@ namespace skylit {
 
 BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
     : scene_(scene), sky_(scene.sky()), to_sun_(scene.to_sun()) {
-  sky_light_ = std::make_unique<SkyLight>(
-      sky_, scene.tracer(), [this](const Ray& ray, const Hit& hit) { return obstacle_radiance(ray, hit); });
+  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return obstacle_radiance(ray, hit); };
+  sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle);
+  sliver_sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kSliverDirections));
 }
 
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {
@@ -77,10 +78,11 @@ Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) cons
   return lambertian_radiance(diffuse_albedo(material.get(), -dot(point.normal, ray.direction)), irradiance);
 }
 
-CachedSkyLight BandsIntegrator::sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const {
+CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& sky_light, const SurfacePoint& point,
+                                             const Vec3& to_viewer) const {
   const Material& material = material_of(point);
-  return {sky_light_->diffuse_irradiance(point.position, point.normal),
-          sky_light_->specular_radiance(point.position, point.normal, to_viewer, material)};
+  return {sky_light.diffuse_irradiance(point.position, point.normal),
+          sky_light.specular_radiance(point.position, point.normal, to_viewer, material)};
 }
 
 Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direction) const {
@@ -137,9 +139,12 @@ Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const 
   if (hit.is_sky())
     return glow + path().seen_from_camera(sky_.sky_radiance(ray.direction) + sky_.sun_radiance(ray.direction));
   std::optional<CachedSkyLight> sky_light;
-  if (context.caches.sky_light)
+  if (context.caches.sky_light) {
     sky_light = context.caches.sky_light->interpolate(context.image_x, context.image_y, hit.point);
-  if (!sky_light) sky_light = sky_light_at(hit.point, -ray.direction);
+    if (!sky_light) sky_light = sky_light_at(*sliver_sky_light_, hit.point, -ray.direction);
+  } else {
+    sky_light = sky_light_at(hit.point, -ray.direction);
+  }
   return glow + path().seen_from_camera(shade(ray, hit.point, *sky_light));
 }
 

@@ -8,7 +8,8 @@
 // The image loop (image_loop.h) and the tests call the same function, radiance(); the
 // loop only hands it what it found once for the whole image (the surface a pixel's
 // centre sees, the cached sky light and lamp glow), and each of these is computed
-// exactly where it is not given.
+// exactly where it is not given (but for the sky light of a sample on a sliver that the
+// cache lacks: with fewer directions, kSliverDirections).
 #pragma once
 
 #include <memory>
@@ -77,7 +78,16 @@ class BandsIntegrator {
 
   // The sky's light at a surface point seen from `to_viewer`, exactly (what the
   // surface cache holds).
-  CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const;
+  CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const {
+    return sky_light_at(*sky_light_, point, to_viewer);
+  }
+
+  // Obstruction directions for a sample whose surface the image's cache has no value
+  // for: a sliver that no pixel centre within 2 pixels sees, narrower than a pixel, so
+  // that only some of a pixel's antialiasing samples fall on it. A quarter of the
+  // directions; what this changes in the image is measured against the exact sky light
+  // by tests/render/sky_light_accuracy_test.cpp (docs/sky-light.md).
+  static constexpr int kSliverDirections = 256;
 
   const SkyLight& sky_light() const { return *sky_light_; }
 
@@ -88,6 +98,7 @@ class BandsIntegrator {
 
  private:
   const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
+  CachedSkyLight sky_light_at(const SkyLight& sky_light, const SurfacePoint& point, const Vec3& to_viewer) const;
   ViewPath view_path(const Ray& ray, double distance) const;
   // The sun's direct normal irradiance at a surface point if it reaches it (0 in
   // shadow or behind the surface).
@@ -110,6 +121,7 @@ class BandsIntegrator {
   const SkyModel& sky_;
   Vec3 to_sun_;
   std::unique_ptr<SkyLight> sky_light_;
+  std::unique_ptr<SkyLight> sliver_sky_light_;  // kSliverDirections
 };
 
 }  // namespace skylit

@@ -66,8 +66,9 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
     hits =
         std::make_unique<PrimaryHits>(camera, width, height, [&](const Ray& ray) { return integrator.first_hit(ray); });
     const Vec3& eye = scene.scene().camera.position;
-    sky_light = std::make_unique<SurfaceCache>(
-        *hits, [&](const SurfacePoint& p) { return integrator.sky_light_at(p, normalize(eye - p.position)); });
+    if (!options.exact_sky_light)
+      sky_light = std::make_unique<SurfaceCache>(
+          *hits, [&](const SurfacePoint& p) { return integrator.sky_light_at(p, normalize(eye - p.position)); });
     if (scene.lamps() && scene.fog()) glow = std::make_unique<LampGlowImage>(camera, *hits, *scene.lamps());
   });
   const ImageCaches caches{sky_light.get(), glow.get()};

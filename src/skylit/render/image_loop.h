@@ -39,6 +39,9 @@ struct RenderOptions {
   // never concurrently.
   std::function<void(int done, int total)> on_progress;
   ImageShare share{};  // the whole image by default
+  // No sky-light cache: every sample computes its sky light exactly (the reference the
+  // cache's accuracy is measured against; many times slower).
+  bool exact_sky_light = false;
 };
 
 XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integrator, const RenderOptions& options);
