@@ -42,6 +42,23 @@ void set_ray(RTCRay& r, const Ray& ray) {
   r.flags = 0;
 }
 
+// Embree's filter callbacks: a hit the mesh's HitFilter refuses is marked invalid, and
+// Embree goes on to the next one along the ray.
+template <bool kShadow>
+void filter_hits(const RTCFilterFunctionNArguments* args) {
+  const auto* filter = static_cast<const HitFilter*>(args->geometryUserPtr);
+  for (unsigned int i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    RTCRayN* r = args->ray;
+    RTCHitN* h = args->hit;
+    const unsigned int n = args->N;
+    const Vec3 direction{RTCRayN_dir_x(r, n, i), RTCRayN_dir_y(r, n, i), RTCRayN_dir_z(r, n, i)};
+    const Vec3 normal{RTCHitN_Ng_x(h, n, i), RTCHitN_Ng_y(h, n, i), RTCHitN_Ng_z(h, n, i)};
+    if (!filter->accepts(RTCHitN_primID(h, n, i), RTCHitN_u(h, n, i), RTCHitN_v(h, n, i), direction, normal, kShadow))
+      args->valid[i] = 0;
+  }
+}
+
 }  // namespace
 
 struct RayTracer::Impl {
@@ -125,7 +142,7 @@ RayTracer::~RayTracer() = default;
 RayTracer::RayTracer(RayTracer&&) noexcept = default;
 RayTracer& RayTracer::operator=(RayTracer&&) noexcept = default;
 
-uint32_t RayTracer::add_mesh(const TriangleMesh& mesh) {
+uint32_t RayTracer::add_mesh(const TriangleMesh& mesh, const HitFilter* filter) {
   Impl& im = *impl_;
   const uint32_t id = im.mesh_count;
   for (const Vec3& v : mesh.vertices)
@@ -167,6 +184,13 @@ uint32_t RayTracer::add_mesh(const TriangleMesh& mesh) {
   for (size_t i = 0; i < mesh.triangles.size(); ++i)
     for (int k = 0; k < 3; ++k) indices[3 * i + k] = mesh.triangles[i][k];
 
+  if (filter != nullptr) {
+    if (!rtcGetDeviceProperty(im.device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
+      throw std::runtime_error("Embree was built without filter functions, which masked and one-sided surfaces need");
+    rtcSetGeometryUserData(geometry, const_cast<HitFilter*>(filter));  // only read, by filter_hits
+    rtcSetGeometryIntersectFilterFunction(geometry, &filter_hits<false>);
+    rtcSetGeometryOccludedFilterFunction(geometry, &filter_hits<true>);
+  }
   rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
   rtcCommitGeometry(geometry);
   im.check("rtcCommitGeometry");

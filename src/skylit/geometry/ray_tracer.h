@@ -47,6 +47,20 @@ struct Hit {
   float u, v;
 };
 
+// Which hits on a mesh count, for meshes with holes cut by a texture (alpha-masked
+// foliage cards, railings) and faces that are seen from one side only. Called by the
+// tracer's threads at once, so it must only read.
+class HitFilter {
+ public:
+  virtual ~HitFilter() = default;
+  // Whether a ray along `direction` meeting `triangle` at barycentrics (u, v) (as in Hit)
+  // stops there; `shadow` for occluded() queries (shadow and sky-occlusion rays),
+  // otherwise intersect() (camera and bounce rays). `geometric_normal` is the
+  // triangle's cross(v1 - v0, v2 - v0), not normalised.
+  virtual bool accepts(uint32_t triangle, float u, float v, const Vec3& direction, const Vec3& geometric_normal,
+                       bool shadow) const = 0;
+};
+
 class RayTracer {
  public:
   // Throws std::runtime_error if Embree cannot start.
@@ -62,7 +76,9 @@ class RayTracer {
   // kept (so triangle indices match the mesh) and are never hit. Throws
   // std::invalid_argument for an index out of range or a coordinate that is not a
   // finite single-precision number, std::runtime_error if Embree fails.
-  uint32_t add_mesh(const TriangleMesh& mesh);
+  // With a `filter` (which must outlive the tracer), hits it refuses are passed through
+  // as if the triangle were not there; null: every hit counts (no cost per ray).
+  uint32_t add_mesh(const TriangleMesh& mesh, const HitFilter* filter = nullptr);
 
   // Builds the acceleration structure. After this, intersect / occluded may be
   // called from any number of threads at once. Adding meshes afterwards needs

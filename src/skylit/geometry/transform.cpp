@@ -111,6 +111,15 @@ Vec3 Transform::apply_vector(Vec3 v) const {
           m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
 }
 
+Vec3 Transform::apply_normal(Vec3 n) const {
+  // det(A) A^-T, the cofactor matrix, has the columns a1 × a2, a2 × a0, a0 × a1 of A's
+  // columns a_i; its sign is turned by det(A)'s.
+  const Vec3 a0{m[0][0], m[1][0], m[2][0]}, a1{m[0][1], m[1][1], m[2][1]}, a2{m[0][2], m[1][2], m[2][2]};
+  const Vec3 out = (determinant() < 0 ? -1.0 : 1.0) * (n.x * cross(a1, a2) + n.y * cross(a2, a0) + n.z * cross(a0, a1));
+  const double len = length(out);
+  return len > 0 && std::isfinite(len) ? out / len : Vec3{0, 0, 0};
+}
+
 double Transform::determinant() const {
   return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);

@@ -37,6 +37,10 @@ struct Transform {
   Vec3 apply_point(Vec3 p) const;
   // Directions: the linear part only (no translation).
   Vec3 apply_vector(Vec3 v) const;
+  // Surface normals: the inverse transpose of the linear part, so that a normal stays
+  // perpendicular to its surface under non-uniform scaling, and points to the same side
+  // of a closed surface under a mirror. Unit length; zero for a zero or singular case.
+  Vec3 apply_normal(Vec3 n) const;
   // Determinant of the linear part; negative means the transform mirrors.
   double determinant() const;
 };

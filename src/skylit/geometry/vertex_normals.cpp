@@ -80,6 +80,33 @@ std::vector<CornerNormals> crease_angle_normals(const TriangleMesh& mesh, double
   return out;
 }
 
+void sanitize_file_normals(const TriangleMesh& mesh, std::vector<CornerNormals>& normals) {
+  normals.resize(mesh.triangles.size(), CornerNormals{});
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vec3 a = mesh.vertices[tri[0]];
+    const Vec3 g = cross(mesh.vertices[tri[1]] - a, mesh.vertices[tri[2]] - a);
+    const double g_len = length(g);
+    const Vec3 flat = g_len > 0 && std::isfinite(g_len) ? g / g_len : Vec3{0, 0, 1};
+    for (auto& corner : normals[t]) {
+      const Vec3 n = as_vec3(corner);
+      const double len = length(n);
+      if (!(len > 1e-6 && std::isfinite(len)))
+        corner = as_floats(flat);
+      else
+        corner = as_floats((dot(n, flat) < 0 ? -1.0 : 1.0) * n / len);
+    }
+  }
+}
+
+void transform_corner_normals(std::vector<CornerNormals>& normals, const Transform& transform) {
+  const bool mirror = transform.determinant() < 0;
+  for (CornerNormals& corners : normals) {
+    for (auto& corner : corners) corner = as_floats(transform.apply_normal(as_vec3(corner)));
+    if (mirror) std::swap(corners[1], corners[2]);
+  }
+}
+
 bool any_smooth_corner(const TriangleMesh& mesh, const std::vector<CornerNormals>& normals, double tolerance_deg) {
   const double cos_tolerance = std::cos(radians(tolerance_deg));
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {

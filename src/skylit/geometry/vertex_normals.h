@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "skylit/geometry/transform.h"
 #include "skylit/geometry/triangle_mesh.h"
 
 namespace skylit {
@@ -19,6 +20,19 @@ using CornerNormals = std::array<std::array<float, 3>, 3>;
 // triangles take no part and get their neighbours' or +z. A crease angle of 0 gives
 // every corner its triangle's own normal.
 std::vector<CornerNormals> crease_angle_normals(const TriangleMesh& mesh, double crease_angle_deg);
+
+// A file's own corner normals (glTF NORMAL, OBJ vn) made safe to shade with: a corner
+// whose normal is missing, zero or not finite takes its triangle's geometric normal
+// (flat there, as glTF asks for absent normals), and one on the far side of its
+// triangle's counter-clockwise face is turned over (files whose winding and normals
+// disagree), so the result is a unit vector on the triangle's counter-clockwise side
+// everywhere. A degenerate triangle gets +z.
+void sanitize_file_normals(const TriangleMesh& mesh, std::vector<CornerNormals>& normals);
+
+// Corner normals carried through a transform (as `transformed` moves the mesh): turned
+// by the inverse transpose, and corners 1 and 2 swapped under a mirror, as the
+// triangles' corners are.
+void transform_corner_normals(std::vector<CornerNormals>& normals, const Transform& transform);
 
 // Whether any corner differs from its triangle's geometric normal by more than
 // `tolerance_deg` (a mesh that is flat everywhere needs no normals).

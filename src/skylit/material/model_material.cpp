@@ -95,7 +95,19 @@ std::shared_ptr<const SurfaceAppearance> appearance_from_model(const ModelMateri
     a.emission_cd_m2[i] = std::isfinite(e) ? std::clamp(e, 0.0, 1e9) : 0.0;
   }
   if (a.emissive()) a.emission = m.emission_texture;
-  if (!a.textured() && !a.emissive()) return nullptr;
+  a.single_sided = !m.double_sided;
+  if (m.alpha_cutoff > 0 && std::isfinite(m.alpha_cutoff)) {
+    a.alpha_cutoff = static_cast<float>(std::min(m.alpha_cutoff, 1.0));
+    a.alpha_factor = std::isfinite(m.alpha_factor) ? static_cast<float>(std::clamp(m.alpha_factor, 0.0, 1.0)) : 1.0f;
+    a.alpha = m.alpha_texture;
+    a.alpha_channel = m.alpha_channel;
+  }
+  if (m.normal_texture) {
+    a.normal_map = m.normal_texture;
+    // Beyond ±10 the map's tilt is all but horizontal anyway; NaN means none.
+    a.normal_scale = std::isfinite(m.normal_scale) ? static_cast<float>(std::clamp(m.normal_scale, -10.0, 10.0)) : 1.0f;
+  }
+  if (!a.textured() && !a.emissive() && !a.cuts_rays() && !a.normal_map) return nullptr;
   return std::make_shared<const SurfaceAppearance>(std::move(a));
 }
 

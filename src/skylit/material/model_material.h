@@ -34,6 +34,19 @@ struct ModelMaterial {
   // MTL Ke), times the emission texture where given (docs/model-materials.md).
   Rgb emission_cd_m2{0, 0, 0};
   std::shared_ptr<const Texture> emission_texture{};
+  // glTF doubleSided; OBJ has no such flag and its faces are two-sided.
+  bool double_sided = true;
+  // Cut-outs (glTF alphaMode, MTL map_d; docs/model-materials.md): where
+  // alpha_factor × the alpha texture's channel `alpha_channel` (3 = alpha) falls below
+  // alpha_cutoff the surface is a hole. alpha_cutoff 0: opaque.
+  double alpha_cutoff = 0;
+  double alpha_factor = 1;
+  std::shared_ptr<const Texture> alpha_texture{};
+  int alpha_channel = 3;
+  // A tangent-space normal map (glTF normalTexture, MTL norm / map_Bump -bm), linear,
+  // its x and y scaled by normal_scale; null for none.
+  std::shared_ptr<const Texture> normal_texture{};
+  double normal_scale = 1;
 };
 
 const char* kind_name(ModelMaterial::Kind kind);
@@ -46,8 +59,9 @@ const char* kind_name(ModelMaterial::Kind kind);
 // point).
 Material material_from_model(const ModelMaterial& m);
 
-// What the model material adds that varies over the surface or shines; null when it
-// has neither a base-colour texture (on a diffuse or coated kind) nor emission.
+// What the model material adds that varies over the surface, shines or cuts rays; null
+// when it has no base-colour texture (on a diffuse or coated kind), no emission, no
+// normal map, no cut-outs and two sides.
 std::shared_ptr<const SurfaceAppearance> appearance_from_model(const ModelMaterial& m);
 
 // n and k of a conductor whose normal-incidence reflectance is r and whose

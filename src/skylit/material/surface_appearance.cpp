@@ -29,4 +29,14 @@ Radiance emitted_radiance(const std::array<float, 3>& luminance_cd_m2) {
   return Radiance(shape * static_cast<float>(y / shape_luminance));
 }
 
+bool covers(const SurfaceAppearance& a, bool has_uv, double u, double v) {
+  if (!(a.alpha_cutoff > 0)) return true;
+  float alpha = a.alpha_factor;
+  if (a.alpha) {
+    const size_t channel = static_cast<size_t>(std::clamp(a.alpha_channel, 0, 3));
+    alpha *= (has_uv ? a.alpha->bilinear(0, u, v) : a.alpha->mean())[channel];
+  }
+  return alpha >= a.alpha_cutoff;
+}
+
 }  // namespace skylit

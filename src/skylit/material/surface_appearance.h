@@ -24,7 +24,22 @@ struct SurfaceAppearance {
   Rgb emission_cd_m2{0, 0, 0};
   std::shared_ptr<const Texture> emission{};
 
+  // Faces seen from behind are invisible to camera and bounce rays (glTF doubleSided
+  // false); they still cast shadows (docs/model-materials.md).
+  bool single_sided = false;
+  // A hole wherever alpha_factor × channel alpha_channel of `alpha` (or alpha_factor alone
+  // without a texture) is below alpha_cutoff; alpha_cutoff 0: no holes.
+  float alpha_cutoff = 0;
+  float alpha_factor = 1;
+  std::shared_ptr<const Texture> alpha{};
+  int alpha_channel = 3;
+  // A tangent-space normal map (linear texels, x right along u, y toward the image's top
+  // row, z out of the surface) and the scale of its x and y.
+  std::shared_ptr<const Texture> normal_map{};
+  float normal_scale = 1;
+
   bool textured() const { return base_color != nullptr; }
+  bool cuts_rays() const { return single_sided || alpha_cutoff > 0; }
   bool emissive() const { return emission_cd_m2[0] > 0 || emission_cd_m2[1] > 0 || emission_cd_m2[2] > 0; }
 };
 
@@ -38,5 +53,10 @@ Material with_body_reflectance(const Material& material, const Spectrum& reflect
 // normalised colour) times D65, sRGB's white, scaled so that its luminance is the
 // colour's luminance Y.
 Radiance emitted_radiance(const std::array<float, 3>& luminance_cd_m2);
+
+// The coverage at texture coordinates (u, v) (bilinear on the finest level, the same for
+// camera and shadow rays, so a hole seen is a hole the sun shines through): whether the
+// surface is there. `has_uv` false: the texture's mean is used.
+bool covers(const SurfaceAppearance& a, bool has_uv, double u, double v);
 
 }  // namespace skylit

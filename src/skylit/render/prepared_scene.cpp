@@ -17,7 +17,10 @@ PreparedScene::PreparedScene(const Scene& scene)
       to_sun_(direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg)),
       atmosphere_(scene.atmosphere),
       sky_(atmosphere_, to_sun_, scene.camera.position.z) {
-  for (const SceneObject& object : scene.objects) tracer_.add_mesh(object.mesh);
+  for (const SceneObject& object : scene.objects) {
+    cutouts_.push_back(surface_cutouts_for(object, scene.materials));
+    tracer_.add_mesh(object.mesh, cutouts_.back().get());
+  }
   tracer_.commit();
   if (!scene.clouds.empty() || scene.cloud_layer) {
     const Vec3 below_camera{scene.camera.position.x, scene.camera.position.y, 0.0};
@@ -108,6 +111,7 @@ void PreparedScene::appearance_at(const SurfaceAppearance& appearance, const Sce
       for (size_t i = 0; i < 3; ++i) color[i] = static_cast<float>(appearance.base_color_factor[i]) * t[i];
     }
     if (appearance.emission) emission = appearance.emission->filtered(u, v, a[0], a[1], b[0], b[1]);
+    if (appearance.normal_map) normal_mapped(appearance, object, hit, ray, {u, v, a[0], a[1], b[0], b[1]}, point);
   } else if (appearance.emission) {
     emission = appearance.emission->mean();
   }
@@ -120,6 +124,50 @@ void PreparedScene::appearance_at(const SurfaceAppearance& appearance, const Sce
       point.emission_cd_m2[i] = static_cast<float>(appearance.emission_cd_m2[i]) * emission[i];
     point.emissive = point.emission_cd_m2[0] > 0 || point.emission_cd_m2[1] > 0 || point.emission_cd_m2[2] > 0;
   }
+}
+
+// The normal a tangent-space normal map gives (glTF 2.0 §3.9.3; MikkTSpace's frame):
+// tangent T along increasing u and bitangent B toward the image's top row (decreasing v
+// in our coordinates, increasing v in OpenGL's), both from the triangle's own texture
+// coordinates (per triangle, not interpolated per corner as MikkTSpace does; the same on
+// a flat or gently curved surface), made orthogonal to the interpolated normal N. The
+// texel (r, g, b) gives n = normalize(s (2r − 1) T + s (2g − 1) B + (2b − 1) N).
+// A mapped normal can lean so far that the viewer is below its horizon, or it below
+// the surface; it is then bent toward the viewer, and toward the surface's side, just
+// far enough to see the point at a grazing 0.01 (cosine), so that no point is shaded as
+// its own back side and shadow rays leave on the lit side.
+void PreparedScene::normal_mapped(const SurfaceAppearance& appearance, const SceneObject& object, const Hit& hit,
+                                  const Ray& ray, const std::array<double, 6>& footprint, SurfacePoint& point) {
+  const CornerUvs& uv = object.corner_uvs[hit.triangle];
+  const auto& tri = object.mesh.triangles[hit.triangle];
+  const Vec3& p0 = object.mesh.vertices[tri[0]];
+  const Vec3 e1 = object.mesh.vertices[tri[1]] - p0, e2 = object.mesh.vertices[tri[2]] - p0;
+  const double du1 = uv[1][0] - uv[0][0], dv1 = uv[1][1] - uv[0][1];
+  const double du2 = uv[2][0] - uv[0][0], dv2 = uv[2][1] - uv[0][1];
+  const double det = du1 * dv2 - dv1 * du2;
+  if (!(std::abs(det) > 1e-20)) return;  // no texture mapping to take a frame from
+  const Vec3 dp_du = (dv2 * e1 - dv1 * e2) / det, dp_dv = (du1 * e2 - du2 * e1) / det;
+  // The normal on the outward (counter-clockwise) side, where the map's +z points.
+  const bool front = dot(hit.geometric_normal, ray.direction) <= 0;
+  const Vec3 n = front ? point.normal : -point.normal;
+  Vec3 t = dp_du - dot(dp_du, n) * n;
+  if (!(length(t) > 0)) return;
+  t = normalize(t);
+  Vec3 b = cross(n, t);
+  if (dot(b, dp_dv) > 0) b = -b;  // toward decreasing v: the image's top
+  const Rgba texel = appearance.normal_map->filtered(footprint[0], footprint[1], footprint[2], footprint[3],
+                                                     footprint[4], footprint[5]);
+  const double s = appearance.normal_scale;
+  Vec3 mapped = s * (2.0 * texel[0] - 1.0) * t + s * (2.0 * texel[1] - 1.0) * b + (2.0 * texel[2] - 1.0) * n;
+  if (!(length(mapped) > 0)) return;
+  mapped = (front ? 1.0 : -1.0) * normalize(mapped);
+  const Vec3 to_viewer = -normalize(ray.direction);
+  const Vec3 surface_side = front ? hit.geometric_normal : -hit.geometric_normal;
+  constexpr double kGrazing = 0.01;
+  for (const Vec3& keep_above : {surface_side, to_viewer})
+    if (const double c = dot(mapped, keep_above); c < kGrazing)
+      mapped = normalize(mapped + (kGrazing - c) * keep_above);
+  if (std::isfinite(mapped.x) && std::isfinite(mapped.y) && std::isfinite(mapped.z)) point.normal = mapped;
 }
 
 }  // namespace skylit

@@ -14,6 +14,7 @@
 #include "skylit/material/surface_appearance.h"
 #include "skylit/render/fog_medium.h"
 #include "skylit/render/scene_lamps.h"
+#include "skylit/render/surface_cutouts.h"
 #include "skylit/render/surface_point.h"
 #include "skylit/scene/scene.h"
 
@@ -46,12 +47,14 @@ class PreparedScene {
   const SceneLamps* lamps() const { return lamps_.get(); }     // null without lights
 
   // The surface point a ray meets, its normal facing the ray's origin (surfaces are
-  // two-sided), with the material of the triangle it meets. On a smooth-shaded mesh the
+  // two-sided; one-sided ones are not met from behind), with the material of the
+  // triangle it meets. On a smooth-shaded mesh the
   // normal is the interpolated shading normal and the point is lifted onto the curved
   // surface it describes, so that shadow rays do not cut the terminator into facets
   // (geometry/vertex_normals.h). Where the material has textures, they are read with a
   // filter as wide as a camera pixel seen at the hit's distance along the ray
-  // (appearance_at); where it shines, so does the point.
+  // (appearance_at); where it shines, so does the point; where it has a normal map, the
+  // normal is the map's (normal_mapped).
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const {
     const SceneObject& object = scene_.objects[hit.mesh_id];
     SurfacePoint point{ray.origin + hit.t * ray.direction, hit.geometric_normal, hit.t,
@@ -71,10 +74,16 @@ class PreparedScene {
   void appearance_at(const SurfaceAppearance& appearance, const SceneObject& object, const Hit& hit, const Ray& ray,
                      SurfacePoint& point) const;
 
+  static void normal_mapped(const SurfaceAppearance& appearance, const SceneObject& object, const Hit& hit,
+                            const Ray& ray, const std::array<double, 6>& footprint, SurfacePoint& point);
+
   const Scene& scene_;
   // The angle a camera pixel spans, radians: the image's vertical field over its rows
   // (exact at a perspective image's centre, and for fisheyes and panoramas on average).
   double pixel_angle_rad_;
+  // Per object whose materials cut rays (surface_cutouts.h); before tracer_, which
+  // points at them, so that they outlive it.
+  std::vector<std::unique_ptr<SurfaceCutouts>> cutouts_;
   RayTracer tracer_;  // mesh ids are the indices of scene_.objects
   Vec3 to_sun_;
   Atmosphere atmosphere_;

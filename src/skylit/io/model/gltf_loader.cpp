@@ -2,10 +2,10 @@
 // tinygltf: triangle-list primitives of every mesh instance in the scene, placed by
 // the node hierarchy, each triangle with its primitive's material (metallic-roughness
 // factors and the transmission, ior and volume extensions; docs/model-materials.md).
-// Base-colour and emissive textures (PNG, JPEG: io/model/texture_file.h) with the
-// primitives' texture coordinates, and emission. Everything else in the file is
-// ignored. The file's own axes are kept (+Y up); load_model_file turns them into
-// skylit's frame.
+// Base-colour, emissive and normal textures (PNG, JPEG: io/model/texture_file.h) with
+// the primitives' texture coordinates, emission, alphaMode and doubleSided, and the
+// vertex normals (NORMAL). Everything else in the file is ignored. The file's own axes are kept (+Y up);
+// load_model_file turns them into skylit's frame.
 //
 // This is the one translation unit that compiles tinygltf's implementation. tinygltf
 // hands over the image bytes it finds inside the file (buffer views, data URIs); images
@@ -174,11 +174,41 @@ class GltfReader {
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const tinygltf::Material& m = model_.materials[i];
       ModelMaterial material = model_material(m, i);
-      material.color_texture = texture(m.pbrMetallicRoughness.baseColorTexture.index);
+      material.color_texture = texture(m.pbrMetallicRoughness.baseColorTexture.index, TextureEncoding::srgb);
+      material.emission_texture = texture(m.emissiveTexture.index, TextureEncoding::srgb);
+      material.normal_texture = texture(m.normalTexture.index, TextureEncoding::linear);  // data, not colour
+      material.normal_scale = m.normalTexture.scale;
+      // One texture coordinate set per material: the base colour's, else the emission's,
+      // else the normal map's (exporters give them all TEXCOORD_0).
+      if (material.normal_texture) uv_set_[i] = m.normalTexture.texCoord;
+      if (material.emission_texture) uv_set_[i] = m.emissiveTexture.texCoord;
       if (material.color_texture) uv_set_[i] = m.pbrMetallicRoughness.baseColorTexture.texCoord;
-      material.emission_texture = texture(m.emissiveTexture.index);
-      if (material.emission_texture && !material.color_texture) uv_set_[i] = m.emissiveTexture.texCoord;
+      set_alpha(m, material);
       out_.materials.push_back(std::move(material));
+    }
+  }
+
+  // alphaMode (docs/model-materials.md): MASK cuts holes where the base colour's alpha
+  // (factor × texel) is below alphaCutoff; BLEND, which skylit cannot blend, makes a
+  // material whose factor is translucent a glass pane (as MTL's d does) and cuts holes
+  // where its texture's alpha is below one half; OPAQUE ignores alpha.
+  static void set_alpha(const tinygltf::Material& m, ModelMaterial& material) {
+    material.double_sided = m.doubleSided;
+    const auto& factor = m.pbrMetallicRoughness.baseColorFactor;
+    const double alpha = factor.size() >= 4 && std::isfinite(factor[3]) ? factor[3] : 1.0;
+    if (m.alphaMode == "MASK") {
+      material.alpha_cutoff = m.alphaCutoff;
+      material.alpha_factor = alpha;
+      material.alpha_texture = material.color_texture;
+    } else if (m.alphaMode == "BLEND") {
+      if (alpha < 0.99 && material.kind != ModelMaterial::Kind::glass) {
+        material.kind = ModelMaterial::Kind::glass;
+        material.roughness = 0;  // as MTL's d: window glass is flat
+      }
+      if (material.color_texture) {
+        material.alpha_cutoff = 0.5;
+        material.alpha_texture = material.color_texture;
+      }
     }
   }
 
@@ -192,6 +222,7 @@ class GltfReader {
       roots = root_nodes();
     for (int node : roots) visit(node, Transform::identity(), 0);
     if (!any_uv_) out_.corner_uvs.clear();
+    if (!any_normal_) out_.corner_normals.clear();
     return std::move(out_);
   }
 
@@ -244,6 +275,9 @@ class GltfReader {
       std::vector<CornerUvs> uvs = part.uvs;
       if (world.determinant() < 0) reverse_corner_order(uvs);  // as transformed() turned the triangles
       out_.corner_uvs.insert(out_.corner_uvs.end(), uvs.begin(), uvs.end());
+      std::vector<CornerNormals> normals = part.normals;
+      transform_corner_normals(normals, world);
+      out_.corner_normals.insert(out_.corner_normals.end(), normals.begin(), normals.end());
     }
     for (int child : node.children) visit(child, world, depth + 1);
   }
@@ -252,7 +286,8 @@ class GltfReader {
   struct Part {
     TriangleMesh mesh;
     std::vector<int32_t> material;
-    std::vector<CornerUvs> uvs;  // per triangle, zero without TEXCOORD
+    std::vector<CornerUvs> uvs;          // per triangle, zero without TEXCOORD
+    std::vector<CornerNormals> normals;  // per triangle, zero without NORMAL
   };
 
   // A mesh, built once however many nodes use it.
@@ -267,6 +302,7 @@ class GltfReader {
         const int32_t material = material_of(primitive);
         it->second.material.insert(it->second.material.end(), triangles.triangles.size(), material);
         read_uvs(primitive, material, triangles, it->second.uvs);
+        read_normals(primitive, triangles, it->second.normals);
       }
     return it->second;
   }
@@ -341,9 +377,30 @@ class GltfReader {
     any_uv_ = true;
   }
 
+  // The NORMAL attribute at each corner of the primitive's triangles; zero (flat, by
+  // sanitize_file_normals) without one. Values are checked later, not here.
+  void read_normals(const tinygltf::Primitive& primitive, const TriangleMesh& triangles,
+                    std::vector<CornerNormals>& normals) {
+    const auto attribute = primitive.attributes.find("NORMAL");
+    if (triangles.empty() || attribute == primitive.attributes.end()) {
+      normals.insert(normals.end(), triangles.triangles.size(), CornerNormals{});
+      return;
+    }
+    const AccessorView n = view(attribute->second, "NORMAL");
+    if (n.components != 3) fail("a NORMAL accessor is not VEC3");
+    if (n.count < triangles.vertices.size()) fail("a NORMAL accessor has fewer elements than POSITION");
+    for (const auto& tri : triangles.triangles) {
+      CornerNormals corner{};
+      for (size_t k = 0; k < 3; ++k)
+        for (int c = 0; c < 3; ++c) corner[k][static_cast<size_t>(c)] = static_cast<float>(n.get(tri[k], c));
+      normals.push_back(corner);
+    }
+    any_normal_ = true;
+  }
+
   // The texture a material's textureInfo names, decoded once per image; null for none,
   // and for an image file that cannot be found (listed as missing).
-  std::shared_ptr<const Texture> texture(int index) {
+  std::shared_ptr<const Texture> texture(int index, TextureEncoding encoding) {
     if (index < 0) return nullptr;
     if (static_cast<size_t>(index) >= model_.textures.size())
       fail("a material refers to texture " + std::to_string(index) + " which does not exist");
@@ -351,18 +408,19 @@ class GltfReader {
     if (source < 0) return nullptr;  // an extension's image source (WebP, KTX2): not read
     if (static_cast<size_t>(source) >= model_.images.size())
       fail("texture " + std::to_string(index) + " refers to image " + std::to_string(source) + " which does not exist");
-    auto [it, added] = textures_.try_emplace(source);
+    auto [it, added] = textures_.try_emplace({source, encoding});
     if (!added) return it->second;
     const tinygltf::Image& image = model_.images[static_cast<size_t>(source)];
     const std::string where = name_ + ": image " + std::to_string(source);
     if (const auto bytes = images_.find(source); bytes != images_.end()) {
-      it->second = decode_texture(bytes->second.data(), bytes->second.size(), TextureEncoding::srgb, where);
+      it->second = decode_texture(bytes->second.data(), bytes->second.size(), encoding, where);
     } else if (!image.uri.empty()) {
       const std::filesystem::path file = folder_ / image.uri;
       std::error_code ec;
       if (std::filesystem::is_regular_file(file, ec))
-        it->second = read_texture_file(file, TextureEncoding::srgb);
-      else
+        it->second = read_texture_file(file, encoding);
+      else if (std::find(out_.missing_libraries.begin(), out_.missing_libraries.end(), image.uri) ==
+               out_.missing_libraries.end())  // listed once, though read as colour and as data
         out_.missing_libraries.push_back(image.uri);
     }
     return it->second;
@@ -411,9 +469,10 @@ class GltfReader {
   std::string name_;
   const ImageBytes& images_;
   std::filesystem::path folder_;
-  std::map<int, std::shared_ptr<const Texture>> textures_;  // by image
-  std::map<int32_t, int> uv_set_;                           // by material: its texture's TEXCOORD set
+  std::map<std::pair<int, TextureEncoding>, std::shared_ptr<const Texture>> textures_;  // by image
+  std::map<int32_t, int> uv_set_;  // by material: its texture's TEXCOORD set
   bool any_uv_ = false;
+  bool any_normal_ = false;
   std::map<int, Part> meshes_;
   LoadedModel out_;
 };

@@ -54,9 +54,17 @@ LoadedModel load_model_file(const std::filesystem::path& path, UpAxis up_axis) {
     throw InputError(path.string() + ": unknown mesh file extension '" + path.extension().string() +
                      "' (expected .gltf, .glb or .obj)");
 
-  if (up_axis == UpAxis::y)
+  if (up_axis == UpAxis::y) {
     for (Vec3& v : model.mesh.vertices) v = {v.x, -v.z, v.y};
+    for (CornerNormals& corners : model.corner_normals)
+      for (auto& n : corners) n = {n[0], -n[2], n[1]};
+  }
   check(model.mesh, path);
+  if (!model.corner_normals.empty()) {
+    if (model.corner_normals.size() != model.mesh.triangles.size())  // a slip in a reader
+      throw std::logic_error("load_model_file: normals per triangle are missing");
+    sanitize_file_normals(model.mesh, model.corner_normals);
+  }
   if (model.triangle_material.size() != model.mesh.triangles.size())  // a slip in a reader
     throw std::logic_error("load_model_file: a material per triangle is missing");
   if (!model.corner_uvs.empty() && model.corner_uvs.size() != model.mesh.triangles.size())

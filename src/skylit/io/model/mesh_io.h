@@ -1,7 +1,7 @@
 // Loading triangle meshes from files: glTF 2.0 (.gltf, .glb) and Wavefront OBJ with
-// its MTL libraries. Geometry, each triangle's material with its textures (PNG, JPEG)
-// and texture coordinates are read; normals, cameras, lights and animation in the file
-// are ignored.
+// its MTL libraries. Geometry, each triangle's material with its textures (PNG, JPEG),
+// texture coordinates and the file's vertex normals are read; cameras, lights and
+// animation in the file are ignored.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "skylit/geometry/triangle_mesh.h"
+#include "skylit/geometry/vertex_normals.h"
 #include "skylit/material/model_material.h"
 
 namespace skylit {
@@ -32,6 +33,10 @@ struct LoadedModel {
   // Per triangle of `mesh`, its corners' texture coordinates (zero where the file gives
   // none); empty when the file gives none at all.
   std::vector<CornerUvs> corner_uvs;
+  // Per triangle of `mesh`, the file's own normals at its corners (glTF NORMAL, OBJ vn),
+  // made safe by sanitize_file_normals (flat where the file gives none); empty when the
+  // file gives none at all.
+  std::vector<CornerNormals> corner_normals;
   // Material libraries (OBJ `mtllib`) and texture images the file names that could not
   // be read (the materials are then used without them).
   std::vector<std::string> missing_libraries;

@@ -2,8 +2,9 @@
 // from the `mtllib` libraries beside the file through tinyobjloader's MTL reader.
 // Polygons, concave ones too, are split into triangles by our ear clipping
 // (geometry/polygon_triangulation.h). Each face takes its `usemtl` material
-// (docs/model-materials.md gives the mapping), with its `map_Kd` and `map_Ke` textures
-// and the faces' texture coordinates. Lines, points and normals are ignored.
+// (docs/model-materials.md gives the mapping), with its `map_Kd`, `map_Ke`, `map_d`
+// (cut-outs) and normal-map (`norm`, `map_Bump` holding a normal map) textures, the
+// faces' texture coordinates and their `vn` normals. Lines and points are ignored.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -89,15 +90,15 @@ class ObjTextures {
   ObjTextures(std::filesystem::path folder, std::vector<std::string>& missing)
       : folder_(std::move(folder)), missing_(missing) {}
 
-  std::shared_ptr<const Texture> get(const std::string& name) {
+  std::shared_ptr<const Texture> get(const std::string& name, TextureEncoding encoding = TextureEncoding::srgb) {
     if (name.empty()) return nullptr;
-    auto [it, added] = cache_.try_emplace(name);
+    auto [it, added] = cache_.try_emplace({name, encoding});
     if (!added) return it->second;
     std::error_code ec;
     const std::filesystem::path file = folder_ / name;
     if (std::filesystem::is_regular_file(file, ec))
-      it->second = read_texture_file(file, TextureEncoding::srgb);
-    else
+      it->second = read_texture_file(file, encoding);
+    else if (std::find(missing_.begin(), missing_.end(), name) == missing_.end())
       missing_.push_back(name);
     return it->second;
   }
@@ -105,8 +106,27 @@ class ObjTextures {
  private:
   std::filesystem::path folder_;
   std::vector<std::string>& missing_;
-  std::map<std::string, std::shared_ptr<const Texture>> cache_;
+  std::map<std::pair<std::string, TextureEncoding>, std::shared_ptr<const Texture>> cache_;
 };
+
+// Whether a texture holds a tangent-space normal map rather than a height (bump) map:
+// MTL's map_Bump names either, and exporters (Blender's among them) write normal maps
+// there. A normal map's texels point mostly out of the surface, so its mean is bluish
+// (z = 2b − 1 near 1, x and y near 0); a height map's is grey.
+bool looks_like_normal_map(const Texture& t) {
+  const Rgba m = t.mean();
+  return m[2] > 0.75f && std::abs(m[0] - 0.5f) < 0.2f && std::abs(m[1] - 0.5f) < 0.2f;
+}
+
+// The texture and the material's cut-outs from map_d: its alpha where the image has
+// any (a map_Kd with alpha, say), else its grey value (a black-and-white mask).
+void set_alpha_map(const std::string& name, ObjTextures& textures, ModelMaterial& material) {
+  std::shared_ptr<const Texture> mask = textures.get(name, TextureEncoding::linear);
+  if (!mask) return;
+  material.alpha_cutoff = 0.5;
+  material.alpha_texture = mask;
+  material.alpha_channel = mask->mean()[3] < 1.0f ? 3 : 0;
+}
 
 }  // namespace
 
@@ -128,6 +148,13 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
     ModelMaterial material = model_material(m);
     material.color_texture = textures.get(m.diffuse_texname);
     material.emission_texture = textures.get(m.emissive_texname);
+    set_alpha_map(m.alpha_texname, textures, material);
+    const bool normal_map = !m.normal_texname.empty();
+    const std::string& normals = normal_map ? m.normal_texname : m.bump_texname;
+    if (auto t = textures.get(normals, TextureEncoding::linear); t && (normal_map || looks_like_normal_map(*t))) {
+      material.normal_texture = t;
+      material.normal_scale = (normal_map ? m.normal_texopt : m.bump_texopt).bump_multiplier;
+    }
     model.materials.push_back(std::move(material));
   }
   // Each usemtl name's material; none for a name no library defines.
@@ -146,6 +173,13 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
     return {std::isfinite(u) ? u : 0.0f, std::isfinite(v) ? 1.0f - v : 0.0f};
   };
   const bool any_uv = !texcoords.empty();
+  const auto& file_normals = obj.normals;
+  // A corner's vn; zero (flat, by sanitize_file_normals) for a corner without one.
+  const auto normal = [&](const ObjCorner& corner) -> std::array<float, 3> {
+    if (corner.normal < 0 || static_cast<size_t>(corner.normal) >= file_normals.size()) return {0.0f, 0.0f, 0.0f};
+    return file_normals[static_cast<size_t>(corner.normal)];
+  };
+  const bool any_normal = !file_normals.empty();
   TriangleMesh& mesh = model.mesh;
   mesh.vertices = std::move(obj.positions);
   // Most faces of big models are triangles or quads: room for quads without regrowing.
@@ -175,6 +209,7 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
     const auto add = [&](size_t a, size_t b, size_t c) {
       mesh.triangles.push_back({face[a], face[b], face[c]});
       if (any_uv) model.corner_uvs.push_back({uv(corners[a]), uv(corners[b]), uv(corners[c])});
+      if (any_normal) model.corner_normals.push_back({normal(corners[a]), normal(corners[b]), normal(corners[c])});
     };
     if (n == 3) {
       add(0, 1, 2);

@@ -129,7 +129,8 @@ Vec3 place(const JsonReader& j, TriangleMesh& mesh) {
 }
 
 LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir, ModelSource& source) {
-  j.allow_only({"type", "name", "material", "file", "up_axis", "units", "transform", "center", "place_on_ground"});
+  j.allow_only({"type", "name", "material", "file", "up_axis", "units", "transform", "center", "place_on_ground",
+                "normals", "crease_angle_deg"});
   const std::filesystem::path file = base_dir / j.required("file").string();
   const std::string extension = file.extension().string();
   // glTF 2.0 is +Y up by its specification; OBJ has no convention, and ours is +Z.
@@ -148,6 +149,8 @@ LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir
     const Transform transform = read_transform(*t);
     model.mesh = transformed(model.mesh, transform);
     if (transform.determinant() < 0) reverse_corner_order(model.corner_uvs);  // as transformed() turned the triangles
+    transform_corner_normals(model.corner_normals, transform);
+    if (!model.corner_normals.empty()) sanitize_file_normals(model.mesh, model.corner_normals);  // a flattening scale
   }
   source.offset_m = place(j, model.mesh);
   // The file's vertices are finite; placed, they must also lie in the scene's extent.
@@ -240,13 +243,18 @@ std::vector<SceneObject> read_objects(const JsonReader& j, std::vector<NamedMate
       assign_model_materials(o, model, materials, overrides, override_used, object);
       object.mesh = std::move(model.mesh);
       object.corner_uvs = std::move(model.corner_uvs);
-      // Smooth normals in the placed mesh's frame; a mesh that is flat everywhere (to
-      // 0.1°) keeps its geometric normals and needs no memory for them.
+      // The file's own normals, or with "normals": "crease" (or none in the file) smooth
+      // normals from the crease angle in the placed mesh's frame; a mesh that is flat
+      // everywhere (to 0.1°) keeps its geometric normals and needs no memory for them.
+      const std::string normals = o.optional("normals") ? o.required("normals").one_of({"file", "crease"}) : "file";
+      const bool file_normals = normals == "file" && !model.corner_normals.empty();
       const double crease = o.optional("crease_angle_deg") ? o.required("crease_angle_deg").number_in(0, 180) : 30.0;
-      if (crease > 0) {
+      if (file_normals)
+        object.corner_normals = std::move(model.corner_normals);
+      else if (crease > 0)
         object.corner_normals = crease_angle_normals(object.mesh, crease);
-        if (!any_smooth_corner(object.mesh, object.corner_normals, 0.1)) object.corner_normals.clear();
-      }
+      if (!object.corner_normals.empty() && !any_smooth_corner(object.mesh, object.corner_normals, 0.1))
+        object.corner_normals.clear();
     } else {
       object.material_index = find_material(o.required("material"), materials);
       object.mesh = type == "box" ? read_box(o) : read_plane(o);
