@@ -129,6 +129,15 @@ struct Traced {
   }
 };
 
+// An OBJ file `name`.obj with its library `name`.mtl holding `mtl`: a 2 m square at
+// height `z` facing +z, textured across (OBJ's v runs up the image), in its material.
+void write_obj_square(const TempDir& dir, const std::string& name, const std::string& mtl, const std::string& z) {
+  dir.write(name + ".mtl", mtl);
+  const std::string material = mtl.substr(7, mtl.find('\n') - 7);  // after "newmtl "
+  dir.write(name + ".obj", "mtllib " + name + ".mtl\nv -1 -1 " + z + "\nv 1 -1 " + z + "\nv 1 1 " + z + "\nv -1 1 " +
+                               z + "\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl " + material + "\nf 1/1 2/2 3/3 4/4\n");
+}
+
 // What a ray straight down onto (x, y) from 10 m up meets first: the object's index, or
 // -1 for nothing.
 int object_below(const Traced& traced, double x, double y) {
@@ -218,10 +227,7 @@ TEST(ModelShading, ObjMapDCutsHolesFromAGreyMask) {
   TempDir dir;
   // Black (0) at the top left texel: a hole; the rest white.
   dir.write("mask.png", png_rgba(2, 2, {0, 0, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255}));
-  dir.write("card.mtl", "newmtl Leaves\nKd 0.3 0.6 0.2\nmap_d mask.png\n");
-  dir.write("card.obj",
-            "mtllib card.mtl\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
-            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl Leaves\nf 1/1 2/2 3/3 4/4\n");
+  write_obj_square(dir, "card", "newmtl Leaves\nKd 0.3 0.6 0.2\nmap_d mask.png\n", "1");
   const Scene scene = load_scene(dir.write("scene.json", scene_json("card.obj")));
   const Traced prepared(scene);
   EXPECT_EQ(object_below(prepared, -kTexel, kTexel), -1);
@@ -317,8 +323,8 @@ TEST(ModelShading, ANormalMappedPlaneShadesLikeThePlaneTiltedAsTheMapSays) {
   // A flat square whose normal map leans every normal toward +x (the texture's right,
   // along u), and a square actually turned about y by the angle the texel encodes.
   // Lambert's cosine toward the sun must agree within 0.5 %; the normal itself, within
-  // the float storage (1e-5). An sRGB-decoded map would tilt by 32° instead of 20°.
-  const int r = 171, g = 128, b = 239;  // ~20° toward +x
+  // the float storage (1e-5). An sRGB-decoded map would tilt 14° the other way.
+  const int r = 171, g = 128, b = 239;  // 21.3° toward +x
   TempDir dir;
   GltfPrimitive flat = square(0);
   flat.images = {png_rgba(1, 1, {r, g, b, 255})};
@@ -357,10 +363,7 @@ TEST(ModelShading, ObjNormTakesTheSameFrameAsGltf) {
   // OBJ's v runs up the image; read with the same convention, the map tilts the same way.
   TempDir dir;
   dir.write("n.png", png_rgba(1, 1, {128, 200, 230, 255}));
-  dir.write("q.mtl", "newmtl Bumpy\nKd 0.5 0.5 0.5\nnorm n.png\n");
-  dir.write("q.obj",
-            "mtllib q.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl Bumpy\nf 1/1 2/2 3/3 4/4\n");
+  write_obj_square(dir, "q", "newmtl Bumpy\nKd 0.5 0.5 0.5\nnorm n.png\n", "0");
   const Scene scene = load_scene(dir.write("scene.json", scene_json("q.obj")));
   const PreparedScene prepared(scene);
   const Ray ray{{0.1, 0.2, 10}, {0, 0, -1}};
@@ -416,10 +419,7 @@ TEST(ModelShading, EmissiveTexelsGiveTheirLuminanceTimesTheFactor) {
 TEST(ModelShading, ObjMapKeTexelsTimesKe) {
   TempDir dir;
   dir.write("e.png", png_rgba(2, 2, {255, 255, 255, 255, 0, 0, 0, 255, 0, 0, 0, 255, 0, 0, 0, 255}));
-  dir.write("q.mtl", "newmtl Screen\nKd 0 0 0\nKe 300 300 300\nmap_Ke e.png\n");
-  dir.write("q.obj",
-            "mtllib q.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl Screen\nf 1/1 2/2 3/3 4/4\n");
+  write_obj_square(dir, "q", "newmtl Screen\nKd 0 0 0\nKe 300 300 300\nmap_Ke e.png\n", "0");
   const Scene scene = load_scene(dir.write("scene.json", scene_json("q.obj")));
   const PreparedScene prepared(scene);
   const Ray lit{{-kTexel, kTexel, 10}, {0, 0, -1}}, dark{{kTexel, -kTexel, 10}, {0, 0, -1}};
