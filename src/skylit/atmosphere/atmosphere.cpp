@@ -4,8 +4,11 @@
 #include <cmath>
 
 #include "skylit/atmosphere/cie_sky_view.h"
+#include "skylit/atmosphere/moon_light.h"
+#include "skylit/atmosphere/night_sky.h"
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/atmosphere/sun_disc.h"
+#include "skylit/core/angles.h"
 #include "skylit/spectrum/spectral_math.h"
 
 namespace skylit {
@@ -22,7 +25,9 @@ Atmosphere::Atmosphere(const AtmosphereSettings& settings, const SpectralBands& 
       medium_(settings, bands),
       transmittance_(medium_, settings.earth_radius_m + settings.site_elevation_m,
                      settings.earth_radius_m + settings.top_altitude_m),
-      extraterrestrial_(Irradiance(skylit::extraterrestrial_irradiance(bands, settings.earth_sun_distance_au))) {
+      extraterrestrial_(Irradiance(
+          settings.moon ? moon_extraterrestrial_irradiance(bands, settings.earth_sun_distance_au, *settings.moon)
+                        : skylit::extraterrestrial_irradiance(bands, settings.earth_sun_distance_au))) {
   if (settings.model == AtmosphereModel::full)
     multiple_ = std::make_unique<MultipleScatteringTable>(medium_, transmittance_, settings.ground_albedo);
   sky_only_ = std::make_unique<ScatteringIntegrator>(medium_, transmittance_, multiple_.get(), nullptr,
@@ -71,7 +76,9 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
       sun_elevation_(std::asin(std::clamp(to_sun_.z, -1.0, 1.0))),
       observer_radius_(atmosphere.ground_radius() +
                        std::clamp(observer_height_m, 0.0, 0.9 * atmosphere.settings().top_altitude_m)),
-      sun_angular_radius_(kSunAngularRadiusAt1AuRad / atmosphere.settings().earth_sun_distance_au) {
+      sun_angular_radius_(atmosphere.settings().moon
+                              ? radians(atmosphere.settings().moon->angular_radius_deg)
+                              : kSunAngularRadiusAt1AuRad / atmosphere.settings().earth_sun_distance_au) {
   const double ground = atmosphere.ground_radius();
   const std::optional<CieSkySettings>& cie = atmosphere.settings().cie_sky;
   // Under an overcast CIE sky the sun is hidden: no direct beam, and the air between
@@ -99,10 +106,25 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
     if (observer_radius_ - ground > kGroundLayerM)
       ground_view_ = std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, ground + 1.0, ground, sun_elevation_);
   }
+  add_night_sky(atmosphere);
   aerial_ =
       std::make_unique<AerialPerspectiveTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
   ground_sky_irradiance_ =
       std::make_unique<SkyIrradianceTable>(ground_view_ ? *ground_view_ : *observer_view_, to_sun_);
+}
+
+void SkyModel::add_night_sky(const Atmosphere& atmosphere) {
+  const AtmosphereSettings& settings = atmosphere.settings();
+  if (settings.cie_sky) return;  // a CIE sky is a daylight sky, measured whole
+  const NightSky night(settings.night_sky, atmosphere.bands(), atmosphere.transmittance(), settings.earth_radius_m);
+  if (night.empty()) return;
+  // The ground below the horizon reflects the night sky's light (Lambertian).
+  const Spectrum ground = night.horizontal_irradiance() * static_cast<float>(settings.ground_albedo / kPi);
+  const auto radiance = [&](const RelativeDirection& d) {
+    return d.elevation_rad > 0 ? night.radiance(std::sin(d.elevation_rad)) : ground;
+  };
+  observer_view_->add(radiance);
+  if (ground_view_) ground_view_->add(radiance);
 }
 
 Irradiance SkyModel::direct_sun(double height_m) const {
@@ -124,6 +146,8 @@ Radiance SkyModel::sky_radiance_near_ground(const Vec3& direction) const {
 Radiance SkyModel::sun_radiance(const Vec3& direction) const {
   const double angle = std::acos(std::clamp(dot(normalize(direction), to_sun_), -1.0, 1.0));
   if (angle >= sun_angular_radius_) return Radiance(0.0f);
+  if (const std::optional<MoonSettings>& moon = atmosphere_.settings().moon)
+    return Radiance(moon_disc_radiance(sun_through_air_.spectrum(), *moon, to_sun_, direction));
   return Radiance(sun_disc_radiance(sun_through_air_.spectrum(), atmosphere_.bands(), sun_angular_radius_, angle));
 }
 

@@ -67,6 +67,8 @@ class SkyModel {
   // observer's height: the light that reaches surfaces from the sky and the far ground.
   Radiance sky_radiance_near_ground(const Vec3& direction) const;
   // The sun's disc as the observer sees it (limb-darkened, attenuated); 0 off the disc.
+  // When the atmosphere's light is the moon (settings().moon), the moon's disc with its
+  // phase, and `to_sun` is the direction toward the moon.
   Radiance sun_radiance(const Vec3& direction) const;
   // What the air adds and lets through between the observer and a surface.
   MediumStretch aerial_perspective(const Vec3& direction, double distance_m) const;
@@ -81,6 +83,8 @@ class SkyModel {
   double sun_angular_radius_rad() const { return sun_angular_radius_; }
 
  private:
+  void add_night_sky(const Atmosphere& atmosphere);
+
   const Atmosphere& atmosphere_;
   Vec3 to_sun_;
   double sun_elevation_;

@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "skylit/atmosphere/cie_sky.h"
+#include "skylit/atmosphere/moon_settings.h"
+#include "skylit/atmosphere/night_sky_settings.h"
 
 namespace skylit {
 
@@ -56,6 +58,11 @@ struct AtmosphereSettings {
   // A CIE standard general sky in place of the model's own sky (scene `sky`,
   // docs/weather.md); the air between the camera and the scene stays the model's.
   std::optional<CieSkySettings> cie_sky;
+  // Set: the light in the sky is the moon's, not the sun's (scene `moon`, docs/night-sky.md):
+  // the direction the sky model is given is the moon's, its irradiance the moon's.
+  std::optional<MoonSettings> moon;
+  // Airglow, zodiacal light, starlight and a city's glow, added to the sky (night_sky.h).
+  NightSkySettings night_sky;
 };
 
 }  // namespace skylit

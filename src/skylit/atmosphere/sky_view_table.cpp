@@ -76,6 +76,13 @@ SkyViewTable::SkyViewTable(FunctionRef<Spectrum(const RelativeDirection&)> radia
                                                     static_cast<double>(j) / (kElevationSize - 1)));
 }
 
+void SkyViewTable::add(FunctionRef<Spectrum(const RelativeDirection&)> radiance) {
+  for (int j = 0; j < kElevationSize; ++j)
+    for (int i = 0; i < kAzimuthSize; ++i)
+      table_.at(i, j) += radiance(mapping_.from_unit(static_cast<double>(i) / (kAzimuthSize - 1),
+                                                     static_cast<double>(j) / (kElevationSize - 1)));
+}
+
 Spectrum SkyViewTable::radiance(const RelativeDirection& direction) const {
   double u_azimuth, u_elevation;
   mapping_.to_unit(direction, u_azimuth, u_elevation);

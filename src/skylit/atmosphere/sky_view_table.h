@@ -72,6 +72,8 @@ class SkyViewTable {
 
   Spectrum radiance(const RelativeDirection& direction) const;
   const SkyDirectionMapping& mapping() const { return mapping_; }
+  // Adds another light of the sky (the night sky's, night_sky.h) at every node.
+  void add(FunctionRef<Spectrum(const RelativeDirection&)> radiance);
 
  private:
   SkyDirectionMapping mapping_;
