@@ -9,6 +9,7 @@
 #include "skylit/core/text_file.h"
 #include "skylit/io/scene/scene_parts.h"
 #include "skylit/lights/eulumdat_reader.h"
+#include "skylit/lights/headlamps.h"
 #include "skylit/lights/ies_reader.h"
 #include "skylit/lights/lamp_rows.h"
 #include "skylit/lights/lamp_spectrum.h"
@@ -169,7 +170,37 @@ void read_lamp_row(const JsonReader& j, const std::filesystem::path& base_dir, s
                    spectrum});
 }
 
+// {"name", "position", "heading_deg", "beam", "ies"}: a car's pair of headlamps
+// (lights/headlamps.h), halogen lamps; a file's distribution has its γ = 0 straight ahead.
+void read_car(const JsonReader& j, const std::filesystem::path& base_dir, std::vector<SceneLight>& out) {
+  j.allow_only({"name", "position", "heading_deg", "beam", "ies"});
+  const std::string name = j.optional("name") ? j.required("name").string() : j.path();
+  const Vec3 position = j.required("position").point_m();
+  const double heading = j.required("heading_deg").number_in(-360, 360);
+  const Beam beam = j.optional("beam") && j.required("beam").one_of({"low", "high"}) == "high" ? Beam::high : Beam::low;
+  const HeadlampPair pair = place_headlamps(position, heading);
+  const Spectrum spectrum = lamp_spectrum_per_candela({LampType::kHalogen, 3000.0, {}});
+  for (const auto& [side, at] : {std::pair{"left", pair.left}, std::pair{"right", pair.right}}) {
+    const std::string lamp = name + " " + side + " headlamp";
+    if (auto ies = j.optional("ies")) {
+      IesPhotometry file = read_ies(base_dir / ies->string());
+      out.push_back({lamp, Luminaire(at, std::move(file.distribution), pair.forward, 0, file.tilt), spectrum});
+    } else {
+      out.push_back({lamp, headlamp_luminaire(at, pair.forward, beam), spectrum});
+    }
+  }
+}
+
 }  // namespace
+
+void read_cars(const JsonReader& j, const std::filesystem::path& base_dir, std::vector<SceneLight>& lights) {
+  if (!j.is_array()) j.fail_expected("an array of cars");
+  for (const JsonReader& car : j.elements()) {
+    if (lights.size() + 2 > kMaxSceneLights)
+      car.fail("the scene would hold more than " + std::to_string(kMaxSceneLights) + " lights");
+    read_car(car, base_dir, lights);
+  }
+}
 
 std::vector<SceneLight> read_lights(const JsonReader& j, const std::filesystem::path& base_dir) {
   if (!j.is_array()) j.fail_expected("an array of lights");

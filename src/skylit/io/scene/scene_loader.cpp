@@ -124,8 +124,26 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
                       const std::filesystem::path& base_dir) {
   const JsonReader root(document, source);
   if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
-  root.allow_only({"camera", "sun", "site", "time", "weather", "sky", "atmosphere", "fog", "clouds", "materials",
-                   "material_overrides", "objects", "lights", "lamp_rows", "road_lighting", "render", "probes"});
+  root.allow_only({"camera",
+                   "sun",
+                   "site",
+                   "time",
+                   "weather",
+                   "sky",
+                   "atmosphere",
+                   "fog",
+                   "clouds",
+                   "materials",
+                   "material_overrides",
+                   "objects",
+                   "lights",
+                   "lamp_rows",
+                   "cars",
+                   "road_lighting",
+                   "moon",
+                   "night_sky",
+                   "render",
+                   "probes"});
   Scene scene;
   scene.camera = read_camera(root.required("camera"));
   const auto weather = root.optional("weather");
@@ -151,8 +169,10 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   scene.objects = read_objects(root.required("objects"), scene.materials, overrides, base_dir,
                                scene.unused_material_overrides, site);
   if (sun_needs_site) place_sun(root, site, scene);
+  read_moon_and_night_sky(root, scene);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);
   if (auto rows = root.optional("lamp_rows")) read_lamp_rows(*rows, base_dir, scene.lights);
+  if (auto cars = root.optional("cars")) read_cars(*cars, base_dir, scene.lights);
   if (auto road = root.optional("road_lighting")) scene.road_lighting = read_road_lighting(*road);
   if (auto render = root.optional("render")) scene.render = read_render(*render);
   frame_camera(root.required("camera"), scene);

@@ -24,6 +24,9 @@ bool read_sun_and_atmosphere(const JsonReader& root, Scene& scene);
 void place_sun(const JsonReader& root, const std::optional<SiteLocation>& site, Scene& scene);
 // The scene's `site`, if it gives one.
 std::optional<SiteLocation> read_scene_site(const JsonReader& root);
+// The moon (placed in the sky model's light when the sun is down) and the night sky;
+// after the sun is placed (night_reader.cpp).
+void read_moon_and_night_sky(const JsonReader& root, Scene& scene);
 AtmosphereSettings read_atmosphere(const JsonReader& atmosphere);
 FogSettings read_fog(const JsonReader& fog);
 FalseColourSettings read_false_colour(const JsonReader& false_colour);
@@ -55,6 +58,8 @@ Spectrum read_reflectance(const JsonReader& reflectance);
 std::vector<SceneLight> read_lights(const JsonReader& lights, const std::filesystem::path& base_dir);
 // `lamp_rows` (lights/lamp_rows.h): the rows' luminaires appended to `lights`.
 void read_lamp_rows(const JsonReader& rows, const std::filesystem::path& base_dir, std::vector<SceneLight>& lights);
+// `cars`: each a pair of headlamps appended to `lights` (lights/headlamps.h).
+void read_cars(const JsonReader& cars, const std::filesystem::path& base_dir, std::vector<SceneLight>& lights);
 // `road_lighting` (scene/road_lighting_settings.h).
 RoadLightingSettings read_road_lighting(const JsonReader& road);
 // Materials of model files are added to `materials`; override patterns that matched
