@@ -52,4 +52,6 @@ $skylit render examples/citygml_block.json --quiet --set render.width=960 --set 
 # The same house at night, its ground floor's windows lit (emission, docs/model-materials.md).
 $skylit render examples/house-night.json --quiet --set render.width=960 --set render.height=540 \
   -o "$out/house-night.png"
+# A street under a full moon, with a car's low beams (docs/night-sky.md).
+$skylit render examples/moonlit.json --quiet --set render.width=960 --set render.height=540 -o "$out/moonlit.png"
 echo "Remade $out/"
