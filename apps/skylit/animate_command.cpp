@@ -100,6 +100,11 @@ int run_animate(AnimateArguments& args) {
     throw InputError(args.scene_file +
                      ": animate places the sun from the site: give the scene a 'site' "
                      "(latitude_deg, longitude_deg) or --site LAT,LON");
+  // Each frame places the sun; the moon (docs/night-sky.md) does not follow it yet.
+  if (scene.atmosphere.moon)
+    throw InputError(args.scene_file +
+                     ": animate places the sun for each frame and does not move the moon: give "
+                     "the scene \"moon\": false");
   const std::vector<OffsetDateTime> instants = study_instants(args, *scene.site);
   std::vector<AnimationFrame> frames;
   std::vector<SolarPosition> suns;
