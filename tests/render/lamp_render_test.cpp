@@ -19,12 +19,13 @@ namespace {
 
 constexpr double kReflectance = 0.5;
 
-// A dark night (sun 40° below the horizon: no twilight), a grey ground, one isotropic
+// A dark night (sun 40° below the horizon: no twilight; no night sky), a grey ground, one isotropic
 // 1000 cd LED lamp 5 m up.
 Scene night_scene() {
   Scene scene;
   scene.camera = Camera{{0, -20, 1.6}, {0, 0, 0}, {0, 0, 1}, 50.0};
   scene.sun = Sun{-40, 180};
+  scene.atmosphere.night_sky.natural = false;  // the lamps alone (docs/night-sky.md)
   scene.materials.push_back({"ground", DiffuseMaterial{Spectrum(static_cast<float>(kReflectance))}});
   scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 2000), 0});
   LampSpectrumSettings led;
