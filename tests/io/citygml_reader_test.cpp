@@ -59,7 +59,7 @@ TEST(CityGmlReader, PlateauSampleHasEveryBuildingWithItsSemantics) {
     std::map<std::string, size_t> mine;
     for (const CitySurface& s : o.surfaces) {
       ++mine[s.semantic];
-      textured += s.appearance_material.has_value();
+      textured += s.texture != CitySurface::kNone;
     }
     EXPECT_GT(mine["RoofSurface"], 0u) << o.id;
     EXPECT_GT(mine["WallSurface"], 0u) << o.id;
@@ -152,7 +152,9 @@ TEST(CityGmlReader, PolygonWithAHoleKeepsItsRingsAndMaterial) {
   ASSERT_EQ(roof.rings.size(), 2u);
   EXPECT_EQ(roof.rings[0].size(), 4u);  // the closing point dropped
   EXPECT_EQ(roof.rings[1].size(), 4u);
-  EXPECT_EQ(roof.appearance_material, "red_tiles");
+  ASSERT_NE(roof.material, CitySurface::kNone);
+  EXPECT_EQ(model.materials[static_cast<size_t>(roof.material)].name, "red_tiles");
+  EXPECT_EQ(model.materials[static_cast<size_t>(roof.material)].diffuse, (std::array<double, 3>{0.6, 0.2, 0.1}));
   // Triangulated, the roof covers 80 − 6 = 74 m² (exact up to rounding: the corners
   // are integers).
   EXPECT_NEAR(triangulated_area(roof), 74.0, 1e-9);
@@ -261,12 +263,12 @@ TEST(CityGmlReader, BuildingPartsAreObjectsOfTheirOwnAndReferencesResolve) {
   EXPECT_EQ(model.objects[1].surfaces[0].rings[0][1].x, 1.0);
 
   // Up to LoD1: the part's LoD1 surface instead of its wall; nothing is left at LoD0.
-  const CityModel lod1 = parse_citygml(text, "parts.gml", {.lod = 10});
+  const CityModel lod1 = parse_citygml(text, "parts.gml", {.lod = 10, .appearance = {}});
   ASSERT_EQ(lod1.objects.size(), 2u);
   EXPECT_EQ(lod1.objects[0].lod, 10);
   ASSERT_EQ(lod1.objects[0].surfaces.size(), 1u);
   EXPECT_EQ(lod1.objects[0].surfaces[0].rings[0][1].x, 2.0);
-  EXPECT_TRUE(parse_citygml(text, "parts.gml", {.lod = 0}).objects.empty());
+  EXPECT_TRUE(parse_citygml(text, "parts.gml", {.lod = 0, .appearance = {}}).objects.empty());
 }
 
 // The example scripts/make-citygml-example.py writes: a 6 × 6 cell TIN, four
@@ -283,7 +285,9 @@ TEST(CityGmlReader, ExampleCityBlockLoads) {
   EXPECT_EQ(block.id, "block");
   EXPECT_EQ(block.surfaces[0].semantic, "RoofSurface");
   EXPECT_EQ(block.surfaces[0].rings.size(), 2u);
-  EXPECT_EQ(model.objects[1].surfaces[5].appearance_material, "red_tiles");
+  const int material = model.objects[1].surfaces[5].material;
+  ASSERT_NE(material, CitySurface::kNone);
+  EXPECT_EQ(model.materials[static_cast<size_t>(material)].name, "red_tiles");
 }
 
 TEST(CityGmlReader, AReferenceMayNameAWholeMultiSurface) {

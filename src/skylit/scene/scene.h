@@ -122,6 +122,11 @@ struct CitySource {
   std::vector<ClassUse> classes;
   size_t objects_outside_region = 0;
   size_t degenerate_surfaces = 0;
+  // Triangles that took the file's appearance (a material or texture of its theme), and
+  // the texture images it names that were not found (their surfaces keep the palette).
+  std::string appearance_theme;
+  size_t appearance_triangles = 0;
+  std::vector<std::string> missing_texture_images;
 };
 
 struct SceneObject {

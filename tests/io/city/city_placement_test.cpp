@@ -19,6 +19,13 @@
 namespace skylit {
 namespace {
 
+// A surface of these rings, without semantics or appearance.
+CitySurface surface_of(std::vector<std::vector<Vec3>> rings) {
+  CitySurface surface;
+  surface.rings = std::move(rings);
+  return surface;
+}
+
 const std::filesystem::path kModels = std::filesystem::path(SKYLIT_SOURCE_DIR) / "../shared/data/models";
 
 // Where the model's vertices were placed: the one nearest to `expected`, and how far.
@@ -102,18 +109,19 @@ TEST(CityPlacement, ShadowsFallAlongTheSunsTrueAzimuthInAMapGrid) {
   proj_destroy(to_utm);
   proj_context_destroy(context);
 
-  CityModel model{"EPSG:32631", {}};
+  CityModel model;
+  model.crs = "EPSG:32631";
   const double e = pole.v[0], n = pole.v[1], h = 0.05;
   const Vec3 c[8] = {{e - h, n - h, 0},   {e + h, n - h, 0},   {e + h, n + h, 0},   {e - h, n + h, 0},
                      {e - h, n - h, 200}, {e + h, n - h, 200}, {e + h, n + h, 200}, {e - h, n + h, 200}};
   CityObject pole_object{"pole", "GenericCityObject", 20, {}};
   for (const auto& face : {std::array{0, 1, 5, 4}, std::array{1, 2, 6, 5}, std::array{2, 3, 7, 6},
                            std::array{3, 0, 4, 7}, std::array{4, 5, 6, 7}})
-    pole_object.surfaces.push_back({{{c[face[0]], c[face[1]], c[face[2]], c[face[3]]}}, "", std::nullopt});
+    pole_object.surfaces.push_back(surface_of({{c[face[0]], c[face[1]], c[face[2]], c[face[3]]}}));
   const double me = marker.v[0], mn = marker.v[1];
   CityObject marker_object{"marker", "GenericCityObject", 20, {}};
   marker_object.surfaces.push_back(
-      {{{{me - 0.01, mn - 0.01, 0}, {me + 0.01, mn - 0.01, 0}, {me, mn + 0.01, 0}}}, "", {}});
+      surface_of({{{me - 0.01, mn - 0.01, 0}, {me + 0.01, mn - 0.01, 0}, {me, mn + 0.01, 0}}}));
   model.objects = {pole_object, marker_object};
 
   CityPlacementOptions options;
@@ -146,12 +154,13 @@ TEST(CityPlacement, ShadowsFallAlongTheSunsTrueAzimuthInAMapGrid) {
 // differs from d²/2R by d⁴/24R³).
 TEST(CityPlacement, FarGeometryDropsByTheCurvatureLessRefraction) {
   const double d = 10000;
-  CityModel model{"EPSG:32631", {}};
+  CityModel model;
+  model.crs = "EPSG:32631";
   CityObject far{"far", "GenericCityObject", 20, {}};
   // UTM 31N at 3° E: x 500 km is the central meridian, where grid and true north agree.
-  far.surfaces.push_back({{{{500000, 6650000 + d, 0}, {500001, 6650000 + d, 0}, {500000, 6650001 + d, 0}}}, "", {}});
+  far.surfaces.push_back(surface_of({{{500000, 6650000 + d, 0}, {500001, 6650000 + d, 0}, {500000, 6650001 + d, 0}}}));
   CityObject near{"near", "GenericCityObject", 20, {}};
-  near.surfaces.push_back({{{{500000, 6650000, 0}, {500001, 6650000, 0}, {500000, 6650001, 0}}}, "", {}});
+  near.surfaces.push_back(surface_of({{{500000, 6650000, 0}, {500001, 6650000, 0}, {500000, 6650001, 0}}}));
   model.objects = {near, far};
   CityPlacementOptions options;
   const auto origin = CrsToWgs84("EPSG:32631", "t").transform(Vec3{500000, 6650000, 0});
@@ -185,7 +194,8 @@ TEST(CityPlacement, RegionTakesTheObjectsWhoseCentreLiesInIt) {
 }
 
 TEST(CityPlacement, UnknownOrMissingCrsIsOneLocatedError) {
-  CityModel model{"EPSG:999999", {}};
+  CityModel model;
+  model.crs = "EPSG:999999";
   EXPECT_NE(testing::input_error_of([&] {
               place_city_model(model, {}, "town.city.json");
             }).find("town.city.json: the coordinate reference system 'EPSG:999999' is unknown"),

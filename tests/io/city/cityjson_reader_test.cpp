@@ -107,8 +107,10 @@ TEST(CityJsonReader, EveryGeometryKindAndTheLodChoice) {
   EXPECT_EQ(house.surfaces[0].semantic, "GroundSurface");
   EXPECT_EQ(house.surfaces[1].semantic, "RoofSurface");
   EXPECT_EQ(house.surfaces[5].semantic, "");
-  EXPECT_FALSE(house.surfaces[1].appearance_material);
-  EXPECT_EQ(house.surfaces[2].appearance_material, "red brick");
+  EXPECT_EQ(house.surfaces[1].material, CitySurface::kNone);
+  ASSERT_EQ(house.surfaces[2].material, 0);
+  EXPECT_EQ(model.materials[0].name, "red brick");
+  EXPECT_EQ(model.materials[0].diffuse, (std::array<double, 3>{0.6, 0.2, 0.1}));
   // Quantised: index 6 is (100, 100, 100) × 0.01 + (1000, 2000, 0).
   EXPECT_EQ(house.surfaces[1].rings[0][2], (Vec3{1001, 2001, 1}));
   EXPECT_EQ(object(model, "pair").surfaces.size(), 3u);

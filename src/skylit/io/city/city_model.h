@@ -6,7 +6,7 @@
 // given their materials).
 #pragma once
 
-#include <optional>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -23,8 +23,33 @@ struct CitySurface {
   // The semantic class of the surface as the file names it ("RoofSurface",
   // "WallSurface", "GroundSurface", "Window", "Door", ...); empty when none.
   std::string semantic;
-  // A material the file's appearance gives the surface (its name), if any.
-  std::optional<std::string> appearance_material;
+  // The appearance the file gives the surface in the chosen theme: an index into
+  // CityModel::materials and one into CityModel::textures, or kNone.
+  static constexpr int kNone = -1;
+  int material = kNone;
+  int texture = kNone;
+  // With a texture: each ring's texture coordinates, one (s, t) per point, as the file
+  // gives them (t up from the image's bottom row).
+  std::vector<std::vector<std::array<float, 2>>> texture_coordinates;
+};
+
+// An appearance material as X3D defines it (CityGML app:X3DMaterial, CityJSON
+// appearance.materials): colours in [0, 1].
+struct CityMaterial {
+  std::string name;
+  std::array<double, 3> diffuse{0.8, 0.8, 0.8};
+  std::array<double, 3> emissive{0, 0, 0};
+  std::array<double, 3> specular{0, 0, 0};
+  double shininess = 0.2;     // 0 to 1; the Phong exponent is 128 × shininess
+  double transparency = 0.0;  // 0: opaque, 1: clear
+  bool smooth = false;
+};
+
+// An image texture: its file (relative to the model's folder, as the file writes it) and
+// how it repeats ("wrap", "mirror", "clamp", "border", "none"; empty when not given).
+struct CityTexture {
+  std::string image;
+  std::string wrap_mode;
 };
 
 // One city object (a building, a part of one, a road, a TIN relief, ...).
@@ -44,6 +69,19 @@ struct CityModel {
   // when the file names none (the scene must then say which).
   std::string crs;
   std::vector<CityObject> objects;
+  // The appearances the surfaces refer to, and the themes: every theme the file has,
+  // and the ones the surfaces' appearances were taken from (empty: none).
+  std::vector<CityMaterial> materials;
+  std::vector<CityTexture> textures;
+  std::vector<std::string> appearance_themes;
+  std::string material_theme, texture_theme;
+};
+
+// Which appearances a reader takes: none (the semantic palette alone), or those of one
+// theme (empty: the first theme the file gives).
+struct CityAppearanceOptions {
+  bool read = true;
+  std::string theme;
 };
 
 }  // namespace skylit

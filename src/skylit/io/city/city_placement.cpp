@@ -86,6 +86,26 @@ std::vector<bool> objects_in_region(const CityRegion& region, const FlatPoints& 
   return inside;
 }
 
+// The surface's appearance on each of its triangles (`triangles` index its rings'
+// points in order); texture coordinates only when some surface of the model has some.
+void add_appearance(const CitySurface& surface, const std::vector<TriangleIndices>& triangles, bool model_textured,
+                    std::vector<std::array<float, 2>>& uvs, PlacedCityObject& out) {
+  const bool textured = surface.texture != CitySurface::kNone;
+  uvs.clear();
+  if (textured)
+    for (const auto& ring : surface.texture_coordinates)
+      for (const auto& st : ring) uvs.push_back({st[0], 1.0F - st[1]});  // t runs up, v down
+  for (const TriangleIndices& t : triangles) {
+    out.triangle_material.push_back(surface.material);
+    out.triangle_texture.push_back(surface.texture);
+    if (!model_textured) continue;
+    CornerUvs corners{};
+    if (textured)
+      for (size_t k = 0; k < 3; ++k) corners[k] = uvs[t[k]];
+    out.corner_uvs.push_back(corners);
+  }
+}
+
 GeoPoint region_centre(const CityRegion& region) {
   if (region.center_lonlat_deg) return {(*region.center_lonlat_deg)[1], (*region.center_lonlat_deg)[0], 0};
   const auto& b = *region.bbox_lonlat_deg;
@@ -142,13 +162,19 @@ PlacedCity place_city_model(const CityModel& model, const CityPlacementOptions& 
 
   std::map<std::string, uint32_t> class_index;
   std::vector<std::vector<Vec3>> rings;
+  std::vector<std::array<float, 2>> uvs;  // the surface's points' texture coordinates
+  const bool appearances = !model.materials.empty() || !model.textures.empty();
+  const bool textured = std::any_of(model.objects.begin(), model.objects.end(), [](const CityObject& o) {
+    return std::any_of(o.surfaces.begin(), o.surfaces.end(),
+                       [](const CitySurface& s) { return s.texture != CitySurface::kNone; });
+  });
   for (size_t o = 0; o < count; ++o) {
     if (!taken[o]) {
       ++placed.objects_outside_region;
       continue;
     }
     const CityObject& object = model.objects[o];
-    PlacedCityObject out{object.id, object.type, object.lod, {}, {}};
+    PlacedCityObject out{object.id, object.type, object.lod, {}, {}, {}, {}, {}};
     size_t next = flat.object_start[o];
     for (const CitySurface& surface : object.surfaces) {
       rings.clear();
@@ -171,6 +197,7 @@ PlacedCity place_city_model(const CityModel& model, const CityPlacementOptions& 
         out.mesh.triangles.push_back({base + t[0], base + t[1], base + t[2]});
         out.triangle_class.push_back(it->second);
       }
+      if (appearances) add_appearance(surface, triangles, textured, uvs, out);
     }
     if (!out.mesh.empty()) placed.objects.push_back(std::move(out));
   }

@@ -62,6 +62,12 @@ struct PlacedCityObject {
   TriangleMesh mesh;  // metres in the local frame
   // Per triangle: its class, an index into PlacedCity::classes.
   std::vector<uint32_t> triangle_class;
+  // Per triangle, when the model has appearances (else empty): its surface's appearance
+  // material and texture (indices into CityModel::materials and ::textures, or
+  // CitySurface::kNone), and its corners' texture coordinates (u across the image, v
+  // down from its top row as Texture reads them; zero without a texture).
+  std::vector<int32_t> triangle_material, triangle_texture;
+  std::vector<CornerUvs> corner_uvs;
 };
 
 struct PlacedCity {

@@ -78,7 +78,7 @@ bool is_xlink(std::string_view uri) { return uri == "http://www.w3.org/1999/xlin
 
 // The attributes this reader uses, found in one pass.
 struct Attributes {
-  std::string_view gml_id, href, srs_name, srs_dimension, uri;
+  std::string_view gml_id, href, srs_name, srs_dimension, uri, ring;
 };
 
 Attributes read_attributes(const XML_Char** attributes, const Namespaces& namespaces) {
@@ -96,6 +96,8 @@ Attributes read_attributes(const XML_Char** attributes, const Namespaces& namesp
       a.srs_dimension = value;
     else if (n.local == "uri" && n.uri.empty())
       a.uri = value;
+    else if (n.local == "ring" && n.uri.empty())
+      a.ring = value;
   }
   return a;
 }
@@ -116,11 +118,49 @@ struct ObjectInProgress {
 };
 
 // What the text of the element being read is for.
-enum class TextFor { nothing, pos_list, pos, coordinates, relief_lod, material_target, texture_uri, appearance_name };
+enum class TextFor {
+  nothing,
+  pos_list,
+  pos,
+  coordinates,
+  relief_lod,
+  appearance_theme,
+  material_target,
+  material_value,
+  texture_uri,
+  wrap_mode,
+  texture_coordinates
+};
+
+// An id as an appearance writes it ("#id", perhaps with spaces around), without the '#'.
+std::string without_hash(std::string_view id) {
+  const auto b = id.find_first_not_of(" \t\r\n#");
+  if (b == std::string_view::npos) return {};
+  const auto e = id.find_last_not_of(" \t\r\n");
+  return std::string(id.substr(b, e - b + 1));
+}
+
+// The texture coordinates of one ring (app:textureCoordinates ring="#id").
+struct RingCoordinates {
+  std::string ring;
+  std::vector<double> st;  // s, t, s, t, ...
+  unsigned long line = 0;
+};
+
+// One app:X3DMaterial or app:ParameterizedTexture with what it is given to.
+struct SurfaceData {
+  std::string theme;  // its app:Appearance's
+  bool is_material = false;
+  CityMaterial material;
+  CityTexture texture;
+  std::vector<std::string> targets;    // material: ids of polygons or surface aggregates
+  std::vector<RingCoordinates> rings;  // texture
+  unsigned long line = 0;
+};
 
 class CityGmlParser {
  public:
-  explicit CityGmlParser(std::string name) : name_(std::move(name)) {
+  CityGmlParser(std::string name, CityGmlOptions options) : name_(std::move(name)), options_(std::move(options)) {
     parser_ = XML_ParserCreate(nullptr);
     if (parser_ == nullptr) throw std::bad_alloc();
     XML_SetUserData(parser_, this);
@@ -146,7 +186,7 @@ class CityGmlParser {
     } while (size > 0);
   }
 
-  CityModel finish(const CityGmlOptions& options);
+  CityModel finish();
 
  private:
   [[noreturn]] void fail(const std::string& what) const { fail_at(XML_GetCurrentLineNumber(parser_), what); }
@@ -190,6 +230,8 @@ class CityGmlParser {
     text_.clear();
   }
   void use_text();
+  void use_material_value();
+  void resolve_appearances(CityModel& model);
   void note_crs(std::string_view srs_name);
   void finish_ring();
   void finish_polygon();
@@ -206,6 +248,7 @@ class CityGmlParser {
   std::vector<int> polygons_named(const std::string& id) const;
 
   std::string name_;
+  CityGmlOptions options_;
   XML_Parser parser_ = nullptr;
   std::exception_ptr failure_;
   int depth_ = 0;
@@ -226,6 +269,8 @@ class CityGmlParser {
   int polygon_depth_ = 0;
   unsigned long polygon_line_ = 0;
   std::string polygon_id_;
+  std::string ring_id_, exterior_id_;
+  std::vector<std::string> interior_ids_;
   std::vector<Vec3> exterior_;
   std::vector<std::vector<Vec3>> interiors_;
   bool ring_is_interior_ = false;
@@ -239,16 +284,18 @@ class CityGmlParser {
   unsigned long text_line_ = 0;
   std::string text_;
 
-  // Appearances: the one being read, and what each target id was given.
-  int appearance_depth_ = 0;  // > 0 inside an X3DMaterial or ParameterizedTexture
-  bool appearance_is_material_ = false;
-  std::string appearance_name_, appearance_id_;
-  std::vector<std::string> appearance_targets_;
-  std::vector<std::pair<std::string, std::string>> material_targets_, texture_targets_;  // (id, name)
+  // Appearances: the theme of the app:Appearance being read, the surface data being
+  // read (an X3DMaterial or ParameterizedTexture), and all of them.
+  std::string appearance_theme_;
+  int surface_data_depth_ = 0;  // > 0 inside one
+  std::string material_field_;  // the X3DMaterial element whose text is read
+  std::vector<SurfaceData> surface_data_;
+  std::string coordinates_ring_;  // the ring of the app:textureCoordinates being read
 
   std::vector<CitySurface> polygons_;
   std::unordered_map<std::string, int> polygon_ids_;
   std::unordered_map<std::string, std::vector<int>> aggregate_polygons_;
+  std::unordered_map<std::string, std::pair<int, int>> ring_ids_;  // (polygon, ring) by gml:id
 };
 
 void CityGmlParser::start(const XML_Char* name, const XML_Char** attribute_list) {
@@ -266,7 +313,7 @@ void CityGmlParser::start(const XML_Char* name, const XML_Char** attribute_list)
     if (d != 2 && d != 3) fail("srsDimension " + quote_excerpt(a.srs_dimension) + ": only 2 and 3 are read");
     dimensions_.emplace_back(d, depth_);
   }
-  if (is_appearance(n.uri) || appearance_depth_ > 0)
+  if (is_appearance(n.uri) || surface_data_depth_ > 0)
     start_appearance(n.local, a);
   else if (is_citygml(n.uri))
     start_citygml(n.local, a);
@@ -313,6 +360,8 @@ void CityGmlParser::start_gml(std::string_view local, const Attributes& a) {
     polygon_id_ = a.gml_id;
     exterior_.clear();
     interiors_.clear();
+    exterior_id_.clear();
+    interior_ids_.clear();
   } else if (!in_polygon_) {
     // A reference to a surface from a solid, shell or multi-surface.
     if (!a.href.empty() && a.href.front() == '#' && in_geometry())
@@ -326,6 +375,7 @@ void CityGmlParser::start_gml(std::string_view local, const Attributes& a) {
     ring_is_interior_ = true;
   } else if (local == "LinearRing") {
     in_ring_ = true;
+    ring_id_ = a.gml_id;
     ring_depth_ = depth_;
     ring_line_ = XML_GetCurrentLineNumber(parser_);
     ring_.clear();
@@ -339,25 +389,60 @@ void CityGmlParser::start_gml(std::string_view local, const Attributes& a) {
 }
 
 void CityGmlParser::start_appearance(std::string_view local, const Attributes& a) {
-  if (local == "X3DMaterial" || local == "ParameterizedTexture" || local == "GeoreferencedTexture") {
-    appearance_depth_ = depth_;
-    appearance_is_material_ = local == "X3DMaterial";
-    appearance_id_ = a.gml_id;
-    appearance_name_.clear();
-    appearance_targets_.clear();
-  } else if (appearance_depth_ == 0) {
-    return;
+  if (!options_.appearance.read) return;
+  if (local == "Appearance") {
+    appearance_theme_.clear();
+  } else if (local == "theme" && surface_data_depth_ == 0) {
+    capture_text(TextFor::appearance_theme);
+  } else if (local == "X3DMaterial" || local == "ParameterizedTexture") {
+    surface_data_depth_ = depth_;
+    SurfaceData data;
+    data.theme = appearance_theme_;
+    data.is_material = local == "X3DMaterial";
+    data.line = XML_GetCurrentLineNumber(parser_);
+    data.material.name = a.gml_id.empty() ? "X3DMaterial@line" + std::to_string(XML_GetCurrentLineNumber(parser_))
+                                          : std::string(a.gml_id);
+    surface_data_.push_back(std::move(data));
+  } else if (surface_data_depth_ == 0) {
+    return;  // (a GeoreferencedTexture is not read)
   } else if (local == "target") {
     // X3DMaterial: <app:target>#id</app:target>; textures: <app:target uri="#id">.
-    if (!a.uri.empty())
-      appearance_targets_.emplace_back(a.uri);
-    else
+    if (a.uri.empty())
       capture_text(TextFor::material_target);
+    else
+      surface_data_.back().targets.push_back(without_hash(a.uri));
   } else if (local == "imageURI") {
     capture_text(TextFor::texture_uri);
-  } else if (local == "name") {
-    capture_text(TextFor::appearance_name);
+  } else if (local == "wrapMode") {
+    capture_text(TextFor::wrap_mode);
+  } else if (local == "textureCoordinates") {
+    coordinates_ring_ = without_hash(a.ring);
+    capture_text(TextFor::texture_coordinates);
+  } else if (surface_data_.back().is_material &&
+             (local == "diffuseColor" || local == "emissiveColor" || local == "specularColor" || local == "shininess" ||
+              local == "transparency" || local == "isSmooth")) {
+    material_field_ = local;
+    capture_text(TextFor::material_value);
   }
+}
+
+void CityGmlParser::use_material_value() {
+  CityMaterial& m = surface_data_.back().material;
+  if (material_field_ == "isSmooth") {
+    m.smooth = without_hash(text_) == "true" || without_hash(text_) == "1";
+    return;
+  }
+  const std::vector<double> values = numbers(text_);
+  const bool colour = material_field_.ends_with("Color");
+  const bool in_range = std::all_of(values.begin(), values.end(), [](double v) { return v >= 0 && v <= 1; });
+  if (values.size() != (colour ? 3U : 1U) || !in_range)
+    fail_at(text_line_, "app:" + material_field_ + " must be " + (colour ? "three numbers" : "a number") +
+                            " from 0 to 1, found " + quote_excerpt(text_));
+  if (material_field_ == "diffuseColor") std::copy(values.begin(), values.end(), m.diffuse.begin());
+  if (material_field_ == "emissiveColor") std::copy(values.begin(), values.end(), m.emissive.begin());
+  if (material_field_ == "specularColor") std::copy(values.begin(), values.end(), m.specular.begin());
+  if (material_field_ == "shininess") m.shininess = values[0];
+  if (material_field_ == "transparency") m.transparency = values[0];
 }
 
 void CityGmlParser::note_crs(std::string_view srs_name) {
@@ -438,12 +523,23 @@ void CityGmlParser::use_text() {
       relief_lod_ = static_cast<int>(std::lround(values[0] * 10));
       break;
     }
+    case TextFor::appearance_theme:
+      appearance_theme_ = without_hash(text_);
+      break;
     case TextFor::material_target:
-      appearance_targets_.push_back(text_);
+      surface_data_.back().targets.push_back(without_hash(text_));
+      break;
+    case TextFor::material_value:
+      use_material_value();
       break;
     case TextFor::texture_uri:
-    case TextFor::appearance_name:
-      appearance_name_ = text_;
+      surface_data_.back().texture.image = without_hash(text_);
+      break;
+    case TextFor::wrap_mode:
+      surface_data_.back().texture.wrap_mode = without_hash(text_);
+      break;
+    case TextFor::texture_coordinates:
+      surface_data_.back().rings.push_back({coordinates_ring_, numbers(text_), text_line_});
       break;
     case TextFor::nothing:
       break;
@@ -458,10 +554,14 @@ void CityGmlParser::finish_ring() {
   if (ring_.size() < 3)
     fail_at(ring_line_, "a ring (gml:LinearRing) with " + std::to_string(ring_.size()) +
                             " distinct points; a polygon's ring needs at least three");
-  if (ring_is_interior_)
+  if (ring_is_interior_) {
     interiors_.push_back(std::move(ring_));
-  else
+    interior_ids_.push_back(std::move(ring_id_));
+  } else {
     exterior_ = std::move(ring_);
+    exterior_id_ = std::move(ring_id_);
+  }
+  ring_id_.clear();
   ring_.clear();
 }
 
@@ -477,6 +577,13 @@ void CityGmlParser::finish_polygon() {
   const int index = static_cast<int>(polygons_.size());
   polygons_.push_back(std::move(surface));
   if (!polygon_id_.empty()) polygon_ids_.emplace(polygon_id_, index);
+  if (options_.appearance.read) {  // rings named for their texture coordinates
+    if (!exterior_id_.empty()) ring_ids_.emplace(exterior_id_, std::pair{index, 0});
+    for (size_t r = 0; r < interior_ids_.size(); ++r)
+      if (!interior_ids_[r].empty()) ring_ids_.emplace(interior_ids_[r], std::pair{index, static_cast<int>(r + 1)});
+  }
+  exterior_id_.clear();
+  interior_ids_.clear();
   // The aggregates around it, innermost first, at most kAggregateLevels (a real file has
   // a multi-surface in a composite in a shell in a solid; a crafted one could nest
   // thousands, and every polygon would be listed under each).
@@ -495,19 +602,7 @@ void CityGmlParser::end(const XML_Char* /*name*/) {
   if (text_for_ != TextFor::nothing && text_depth_ == depth_) use_text();
   if (in_ring_ && ring_depth_ == depth_) finish_ring();
   if (in_polygon_ && polygon_depth_ == depth_) finish_polygon();
-  if (appearance_depth_ == depth_) {
-    const std::string name = !appearance_name_.empty() ? appearance_name_
-                             : !appearance_id_.empty()
-                                 ? appearance_id_
-                                 : "appearance@line" + std::to_string(XML_GetCurrentLineNumber(parser_));
-    auto& targets = appearance_is_material_ ? material_targets_ : texture_targets_;
-    for (auto& t : appearance_targets_) {
-      const auto b = t.find_first_not_of(" \t\r\n#");
-      const auto e = t.find_last_not_of(" \t\r\n");
-      if (b != std::string::npos) targets.emplace_back(t.substr(b, e - b + 1), name);
-    }
-    appearance_depth_ = 0;
-  }
+  if (surface_data_depth_ == depth_) surface_data_depth_ = 0;
   if (!aggregates_.empty() && aggregates_.back().second == depth_) aggregates_.pop_back();
   if (!lods_.empty() && lods_.back().second == depth_) lods_.pop_back();
   if (!semantics_.empty() && semantics_.back().second == depth_) semantics_.pop_back();
@@ -526,14 +621,60 @@ std::vector<int> CityGmlParser::polygons_named(const std::string& id) const {
   return {};
 }
 
-CityModel CityGmlParser::finish(const CityGmlOptions& options) {
-  // Appearance names per polygon: X3D materials first, then textures.
-  std::vector<const std::string*> appearance(polygons_.size(), nullptr);
-  for (const auto* targets : {&material_targets_, &texture_targets_})
-    for (const auto& [id, name] : *targets)
-      for (int p : polygons_named(id))
-        if (appearance[p] == nullptr) appearance[p] = &name;
+// The appearances of the chosen theme (the scene's, else the first the file gives)
+// given to the polygons they target: X3D materials to polygons or aggregates by id,
+// textures to the rings their coordinates name. The first appearance of each kind a
+// polygon meets is kept.
+void CityGmlParser::resolve_appearances(CityModel& model) {
+  for (const SurfaceData& d : surface_data_)
+    if (std::find(model.appearance_themes.begin(), model.appearance_themes.end(), d.theme) ==
+        model.appearance_themes.end())
+      model.appearance_themes.push_back(d.theme);
+  if (surface_data_.empty()) return;
+  const std::string theme = options_.appearance.theme.empty() ? surface_data_.front().theme : options_.appearance.theme;
+  for (SurfaceData& d : surface_data_) {
+    if (d.theme != theme) continue;
+    if (d.is_material) {
+      const int index = static_cast<int>(model.materials.size());
+      for (const std::string& id : d.targets)
+        for (int p : polygons_named(id))
+          if (polygons_[p].material == CitySurface::kNone) polygons_[p].material = index;
+      model.materials.push_back(std::move(d.material));
+      model.material_theme = theme;
+      continue;
+    }
+    if (d.texture.image.empty()) fail_at(d.line, "an app:ParameterizedTexture without an app:imageURI");
+    const int index = static_cast<int>(model.textures.size());
+    for (const RingCoordinates& coordinates : d.rings) {
+      const auto found = ring_ids_.find(coordinates.ring);
+      if (found == ring_ids_.end())
+        fail_at(coordinates.line,
+                "app:textureCoordinates ring=" + quote_excerpt("#" + coordinates.ring) + " names no ring in the file");
+      const auto [p, r] = found->second;
+      CitySurface& surface = polygons_[p];
+      const size_t points = surface.rings[r].size(), pairs = coordinates.st.size() / 2;
+      // GML rings repeat their first point at the end; their coordinates may too.
+      if (coordinates.st.size() % 2 != 0 || (pairs != points && pairs != points + 1))
+        fail_at(coordinates.line, "app:textureCoordinates give " + std::to_string(coordinates.st.size()) +
+                                      " numbers for ring " + quote_excerpt("#" + coordinates.ring) + " of " +
+                                      std::to_string(points) + " points: expected two per point");
+      if (surface.texture != CitySurface::kNone && surface.texture != index) continue;
+      if (surface.texture_coordinates.empty())
+        for (const auto& ring : surface.rings) surface.texture_coordinates.emplace_back(ring.size());
+      surface.texture = index;
+      for (size_t k = 0; k < points; ++k)
+        surface.texture_coordinates[r][k] = {static_cast<float>(coordinates.st[2 * k]),
+                                             static_cast<float>(coordinates.st[2 * k + 1])};
+    }
+    model.textures.push_back(std::move(d.texture));
+    model.texture_theme = theme;
+  }
+}
 
+CityModel CityGmlParser::finish() {
+  const CityGmlOptions& options = options_;
+  CityModel model;
+  resolve_appearances(model);
   // Which polygons each object keeps: those of its most detailed LoD, each once.
   std::vector<std::vector<std::pair<int, std::string>>> kept(finished_.size());
   std::vector<int> uses_left(polygons_.size(), 0);
@@ -561,7 +702,6 @@ CityModel CityGmlParser::finish(const CityGmlOptions& options) {
       }
     }
   }
-  CityModel model;
   model.crs = crs_;
   model.objects.reserve(finished_.size());
   for (size_t o = 0; o < finished_.size(); ++o) {
@@ -572,7 +712,6 @@ CityModel CityGmlParser::finish(const CityGmlOptions& options) {
       // The last object to use a polygon takes it; earlier ones copy it.
       CitySurface surface = --uses_left[p] == 0 ? std::move(polygons_[p]) : polygons_[p];
       surface.semantic = std::move(semantic);
-      if (appearance[p] != nullptr) surface.appearance_material = *appearance[p];
       object.surfaces.push_back(std::move(surface));
     }
     model.objects.push_back(std::move(object));
@@ -583,16 +722,16 @@ CityModel CityGmlParser::finish(const CityGmlOptions& options) {
 }  // namespace
 
 CityModel parse_citygml(std::string_view text, const std::string& name, const CityGmlOptions& options) {
-  CityGmlParser parser(name);
+  CityGmlParser parser(name, options);
   parser.feed(text.data(), text.size(), true);
-  return parser.finish(options);
+  return parser.finish();
 }
 
 CityModel read_citygml_file(const std::filesystem::path& file, const CityGmlOptions& options) {
   require_regular_file(file, "CityGML file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string() + ":1: cannot read the CityGML file");
-  CityGmlParser parser(file.string());
+  CityGmlParser parser(file.string(), options);
   std::vector<char> buffer(size_t{1} << 20);
   while (true) {
     in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
@@ -602,7 +741,7 @@ CityModel read_citygml_file(const std::filesystem::path& file, const CityGmlOpti
     parser.feed(buffer.data(), got, last);
     if (last) break;
   }
-  return parser.finish(options);
+  return parser.finish();
 }
 
 }  // namespace skylit

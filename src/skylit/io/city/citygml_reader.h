@@ -3,14 +3,17 @@
 // plain CityGML): buildings and their parts (LoD0–LoD4, solids and boundary surfaces
 // with their semantics, openings), roads, railways, squares, land use, vegetation,
 // water bodies, TIN relief (dem:TINRelief triangles), generic city objects, bridges,
-// tunnels and city furniture; X3D materials and parameterized textures by name.
+// tunnels and city furniture; appearances of one theme: X3D materials (app:X3DMaterial,
+// given to polygons or surface aggregates by gml:id) and parameterized textures
+// (app:ParameterizedTexture with app:TexCoordList, given to rings by gml:id).
 //
 // For each object the most detailed level of detail it has is kept (or the most
 // detailed up to a chosen one). Surfaces that a
 // solid references by xlink:href and a boundary surface defines (PLATEAU's lod2Solid)
 // are taken once, with the boundary surface's semantic class. Not read: implicit
 // geometries (coordinates relative to a reference point), interior features (rooms,
-// furniture), gml:Tin control points, appearance targets that are not polygons.
+// furniture), gml:Tin control points, georeferenced textures and
+// texture coordinates made by app:TexCoordGen.
 //
 // Coordinates stay in the file's CRS and axis order. For EPSG:6697 (PLATEAU: JGD2011
 // geographic + JGD2011 vertical height) that is latitude, longitude, height — the
@@ -33,6 +36,7 @@ struct CityGmlOptions {
   // highest LoD not above it (objects with none are left out). Empty: each object's
   // most detailed geometry.
   std::optional<int> lod;
+  CityAppearanceOptions appearance;
 };
 
 // Reads the file as it streams in (a tile of millions of triangles is never held as
@@ -40,8 +44,10 @@ struct CityGmlOptions {
 // well-formed XML (truncated, ...), not a CityGML CityModel, names a CRS this reader
 // cannot turn into an EPSG code or two different CRSs, has a ring with fewer than
 // three points, a polygon without an exterior ring, a coordinate that is not a finite
-// number, a coordinate list whose length is not a multiple of its dimension, or a
-// reference (xlink:href="#id") to a surface that is not in the file.
+// number, a coordinate list whose length is not a multiple of its dimension, a
+// reference (xlink:href="#id") to a surface that is not in the file, an X3D colour
+// outside [0, 1], or texture coordinates (of the chosen theme) for a ring that is not
+// in the file or not two per point.
 CityModel read_citygml_file(const std::filesystem::path& file, const CityGmlOptions& options = {});
 
 // The same from text in memory; `name` stands for the file in messages.

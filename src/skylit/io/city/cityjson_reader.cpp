@@ -1,5 +1,6 @@
 #include "skylit/io/city/cityjson_reader.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -103,18 +104,72 @@ class Reader {
     return normalized_crs_name(crs->get<std::string>());
   }
 
-  void read_appearance(const json& document) {
+  // The document's "appearance": its materials and textures into the model, its
+  // texture coordinates kept for the surfaces.
+  void read_appearance(const json& document, CityModel& model) {
     const auto appearance = document.find("appearance");
-    if (appearance == document.end() || !appearance->is_object()) return;
-    const auto materials = appearance->find("materials");
-    if (materials == appearance->end() || !materials->is_array()) return;
-    for (size_t i = 0; i < materials->size(); ++i) {
-      const json& m = (*materials)[i];
-      const auto name = m.is_object() ? m.find("name") : m.end();
-      material_names_.push_back(m.is_object() && name != m.end() && name->is_string()
-                                    ? name->get<std::string>()
-                                    : "material " + std::to_string(i));
+    if (!options_.appearance.read || appearance == document.end()) return;
+    if (!appearance->is_object()) fail("appearance", "expected an object with materials and textures");
+    if (const auto materials = appearance->find("materials"); materials != appearance->end()) {
+      if (!materials->is_array()) fail("appearance.materials", "expected an array");
+      for (size_t i = 0; i < materials->size(); ++i)
+        model.materials.push_back(read_material((*materials)[i], "appearance.materials[" + std::to_string(i) + "]", i));
     }
+    if (const auto textures = appearance->find("textures"); textures != appearance->end()) {
+      if (!textures->is_array()) fail("appearance.textures", "expected an array");
+      for (size_t i = 0; i < textures->size(); ++i) {
+        const std::string at = "appearance.textures[" + std::to_string(i) + "]";
+        const json& t = (*textures)[i];
+        if (!t.is_object()) fail(at, "expected a texture object");
+        const json& image = member(t, "image", at);
+        if (!image.is_string() || image.get_ref<const std::string&>().empty())
+          fail(at + ".image", "expected the image's file name");
+        CityTexture texture{image.get<std::string>(), ""};
+        if (const auto wrap = t.find("wrapMode"); wrap != t.end() && wrap->is_string()) texture.wrap_mode = *wrap;
+        model.textures.push_back(std::move(texture));
+      }
+    }
+    if (const auto uvs = appearance->find("vertices-texture"); uvs != appearance->end()) {
+      if (!uvs->is_array()) fail("appearance.vertices-texture", "expected an array of [u, v]");
+      texture_vertices_.reserve(uvs->size());
+      for (size_t i = 0; i < uvs->size(); ++i) {
+        const std::string at = "appearance.vertices-texture[" + std::to_string(i) + "]";
+        const json& uv = (*uvs)[i];
+        if (!uv.is_array() || uv.size() != 2 || !finite_number(uv[0]) || !finite_number(uv[1]))
+          fail(at, "expected [u, v], two finite numbers, found " + describe_json_value(uv));
+        texture_vertices_.push_back({uv[0].get<float>(), uv[1].get<float>()});
+      }
+    }
+  }
+
+  static bool finite_number(const json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
+
+  CityMaterial read_material(const json& m, const std::string& path, size_t index) const {
+    if (!m.is_object()) fail(path, "expected a material object");
+    CityMaterial material;
+    const auto name = m.find("name");
+    material.name =
+        name != m.end() && name->is_string() ? name->get<std::string>() : "material " + std::to_string(index);
+    const auto colour = [&](const char* key, std::array<double, 3>& out) {
+      const auto it = m.find(key);
+      if (it == m.end()) return;
+      if (!it->is_array() || it->size() != 3) fail(path + "." + key, "expected [r, g, b] from 0 to 1");
+      for (size_t c = 0; c < 3; ++c) out[c] = unit_number((*it)[c], path + "." + key + "[" + std::to_string(c) + "]");
+    };
+    colour("diffuseColor", material.diffuse);
+    colour("emissiveColor", material.emissive);
+    colour("specularColor", material.specular);
+    if (const auto it = m.find("shininess"); it != m.end()) material.shininess = unit_number(*it, path + ".shininess");
+    if (const auto it = m.find("transparency"); it != m.end())
+      material.transparency = unit_number(*it, path + ".transparency");
+    if (const auto it = m.find("isSmooth"); it != m.end() && it->is_boolean()) material.smooth = it->get<bool>();
+    return material;
+  }
+
+  double unit_number(const json& v, const std::string& path) const {
+    if (!finite_number(v) || v.get<double>() < 0 || v.get<double>() > 1)
+      fail(path, "expected a number from 0 to 1, found " + describe_json_value(v));
+    return v.get<double>();
   }
 
   void read_templates(const json& document) {
@@ -140,7 +195,7 @@ class Reader {
       const auto geometry = object.find("geometry");
       if (geometry != object.end()) {
         if (!geometry->is_array()) fail(at + ".geometry", "expected an array of geometries");
-        read_chosen_geometry(*geometry, vertices, at + ".geometry", city_object);
+        read_chosen_geometry(*geometry, vertices, at + ".geometry", city_object, model);
       }
       model.objects.push_back(std::move(city_object));
     }
@@ -175,7 +230,7 @@ class Reader {
 
   // The object's geometry of the chosen LoD (CityJsonOptions::lod).
   void read_chosen_geometry(const json& geometries, const VertexList& vertices, const std::string& path,
-                            CityObject& object) const {
+                            CityObject& object, CityModel& model) const {
     int best = -1;
     size_t chosen = 0;
     for (size_t g = 0; g < geometries.size(); ++g) {
@@ -188,7 +243,7 @@ class Reader {
     }
     if (best < 0) return;
     object.lod = best;
-    read_geometry(geometries[chosen], vertices, path + "[" + std::to_string(chosen) + "]", nullptr, object);
+    read_geometry(geometries[chosen], vertices, path + "[" + std::to_string(chosen) + "]", nullptr, object, model);
   }
 
   // `instance`: the matrix and reference point of a GeometryInstance whose template
@@ -199,26 +254,30 @@ class Reader {
   };
 
   void read_geometry(const json& geometry, const VertexList& vertices, const std::string& path,
-                     const Instance* instance, CityObject& object) const {
+                     const Instance* instance, CityObject& object, CityModel& model) const {
     const std::string& type = geometry["type"].get_ref<const std::string&>();
     if (type == "GeometryInstance") {
       if (instance) fail(path, "a template must not itself be an instance");
-      read_instance(geometry, vertices, path, object);
+      read_instance(geometry, vertices, path, object, model);
       return;
     }
     const int depth = surface_depth(type);
     if (depth == 0) return;  // a template of points or lines
     const json& boundaries = member(geometry, "boundaries", path);
-    Context context{&vertices, instance, semantic_types(geometry, path), material_values(geometry, path), &object};
+    Context context{
+        &vertices, instance, semantic_types(geometry, path), &object, model.materials.size(), model.textures.size()};
     const auto semantics = geometry.find("semantics");
-    const json* semantic_values = nullptr;
+    SurfaceValues values;
     if (semantics != geometry.end() && semantics->is_object() && semantics->contains("values"))
-      semantic_values = &(*semantics)["values"];
-    walk(boundaries, depth, semantic_values, context.materials, path + ".boundaries", context);
+      values.semantic = &(*semantics)["values"];
+    values.material = theme_values(geometry, "material", path, model.material_theme, model);
+    values.texture = theme_values(geometry, "texture", path, model.texture_theme, model);
+    if (values.texture && values.texture->is_number()) fail(path + ".texture", "a texture theme needs values");
+    walk(boundaries, depth, values, path + ".boundaries", context);
   }
 
-  void read_instance(const json& geometry, const VertexList& vertices, const std::string& path,
-                     CityObject& object) const {
+  void read_instance(const json& geometry, const VertexList& vertices, const std::string& path, CityObject& object,
+                     CityModel& model) const {
     const json& template_geometry = template_at(member(geometry, "template", path), path + ".template");
     const json& boundaries = member(geometry, "boundaries", path);
     if (!boundaries.is_array() || boundaries.size() != 1)
@@ -234,7 +293,7 @@ class Reader {
     }
     if (!template_geometry.is_object() || !template_geometry.contains("type") || !template_geometry["type"].is_string())
       fail("geometry-templates.templates", "expected geometries with a type");
-    read_geometry(template_geometry, template_vertices_, "geometry-templates.templates", &instance, object);
+    read_geometry(template_geometry, template_vertices_, "geometry-templates.templates", &instance, object, model);
   }
 
   std::vector<std::string> semantic_types(const json& geometry, const std::string& path) const {
@@ -255,38 +314,64 @@ class Reader {
     return types;
   }
 
-  // The first theme's material values ({"values": [...]} or {"value": i}).
-  const json* material_values(const json& geometry, const std::string& path) const {
-    const auto material = geometry.find("material");
-    if (material == geometry.end() || !material->is_object() || material->empty()) return nullptr;
-    const json& theme = material->begin().value();
-    if (!theme.is_object()) fail(path + ".material", "expected themes with value or values");
-    if (theme.contains("values")) return &theme["values"];
-    if (theme.contains("value")) return &theme["value"];
-    fail(path + ".material", "a theme needs value or values");
+  // The values of the chosen theme of a geometry's "material" or "texture" member
+  // ({"values": [...]} or {"value": i}), or null. `chosen`: the theme taken so far for
+  // this kind (the scene's, else the first the file gives), set on the first meeting.
+  const json* theme_values(const json& geometry, const char* kind, const std::string& path, std::string& chosen,
+                           CityModel& model) const {
+    const auto themes = geometry.find(kind);
+    if (!options_.appearance.read || themes == geometry.end()) return nullptr;
+    const std::string at = path + "." + kind;
+    if (!themes->is_object()) fail(at, "expected an object of themes");
+    for (const auto& [name, value] : themes->items())
+      if (std::find(model.appearance_themes.begin(), model.appearance_themes.end(), name) ==
+          model.appearance_themes.end())
+        model.appearance_themes.push_back(name);
+    if (themes->empty()) return nullptr;
+    const std::string& wanted = !options_.appearance.theme.empty() ? options_.appearance.theme
+                                : !chosen.empty()                  ? chosen
+                                                                   : themes->begin().key();
+    const auto theme = themes->find(wanted);
+    if (theme == themes->end()) return nullptr;
+    chosen = wanted;
+    if (!theme->is_object()) fail(at + "." + wanted, "expected a theme with value or values");
+    if (theme->contains("values")) return &(*theme)["values"];
+    if (theme->contains("value")) return &(*theme)["value"];
+    fail(at + "." + wanted, "a theme needs value or values");
   }
 
   struct Context {
     const VertexList* vertices;
     const Instance* instance;
     std::vector<std::string> semantic_types;
-    const json* materials;
     CityObject* object;
+    size_t materials, textures;  // the model's appearance materials and textures
   };
 
-  // Descends `depth` levels of boundaries to the surfaces, with the semantic and
-  // material values alongside (either may be null: no value).
-  void walk(const json& boundaries, int depth, const json* semantics, const json* materials, const std::string& path,
+  // The semantic, material and texture values alongside a level of the boundaries; any
+  // may be null (no value).
+  struct SurfaceValues {
+    const json* semantic = nullptr;
+    const json* material = nullptr;
+    const json* texture = nullptr;
+  };
+
+  // Descends `depth` levels of boundaries to the surfaces, with their values alongside.
+  void walk(const json& boundaries, int depth, const SurfaceValues& values, const std::string& path,
             const Context& context) const {
     if (!boundaries.is_array()) fail(path, "expected an array");
     for (size_t i = 0; i < boundaries.size(); ++i) {
       const std::string at = path + "[" + std::to_string(i) + "]";
-      const json* s = child(semantics, i, at, "semantics.values");
-      const json* m = materials && materials->is_number() ? materials : child(materials, i, at, "material values");
+      SurfaceValues inner;
+      inner.semantic = child(values.semantic, i, at, "semantics.values");
+      inner.material = values.material && values.material->is_number()
+                           ? values.material
+                           : child(values.material, i, at, "material values");
+      inner.texture = child(values.texture, i, at, "texture values");
       if (depth > 1)
-        walk(boundaries[i], depth - 1, s, m, at, context);
+        walk(boundaries[i], depth - 1, inner, at, context);
       else
-        read_surface(boundaries[i], s, m, at, context);
+        read_surface(boundaries[i], inner, at, context);
     }
   }
 
@@ -297,21 +382,24 @@ class Reader {
     return &(*values)[i];
   }
 
-  void read_surface(const json& surface, const json* semantic, const json* material, const std::string& path,
+  void read_surface(const json& surface, const SurfaceValues& values, const std::string& path,
                     const Context& context) const {
     if (!surface.is_array() || surface.empty()) fail(path, "expected a surface: an array of rings");
     CitySurface out;
+    const json* semantic = values.semantic;
     if (semantic && !semantic->is_null()) {
       if (!semantic->is_number_unsigned() || semantic->get<size_t>() >= context.semantic_types.size())
         fail(path, "semantic value " + describe_json_value(*semantic) + " is not one of the geometry's " +
                        std::to_string(context.semantic_types.size()) + " semantic surfaces");
       out.semantic = context.semantic_types[semantic->get<size_t>()];
     }
+    const json* material = values.material;
     if (material && !material->is_null()) {
-      if (!material->is_number_unsigned() || material->get<size_t>() >= material_names_.size())
-        fail(path, "material " + describe_json_value(*material) + " is not one of the file's " +
-                       std::to_string(material_names_.size()) + " appearance materials");
-      out.appearance_material = material_names_[material->get<size_t>()];
+      const size_t count = context.materials;
+      if (!material->is_number_unsigned() || material->get<size_t>() >= count)
+        fail(path, "material " + describe_json_value(*material) + " is not one of the file's " + std::to_string(count) +
+                       " appearance materials");
+      out.material = material->get<int>();
     }
     for (size_t r = 0; r < surface.size(); ++r) {
       const std::string at = path + "[" + std::to_string(r) + "]";
@@ -327,7 +415,42 @@ class Reader {
       }
       out.rings.push_back(std::move(points));
     }
+    if (values.texture && !values.texture->is_null()) read_texture_values(*values.texture, path, context, out);
     context.object->surfaces.push_back(std::move(out));
+  }
+
+  // A surface's texture values: per ring [texture, uv index per point], or [null].
+  void read_texture_values(const json& rings, const std::string& path, const Context& context,
+                           CitySurface& surface) const {
+    if (!rings.is_array() || rings.size() != surface.rings.size())
+      fail(path, "the texture values give " + (rings.is_array() ? std::to_string(rings.size()) : std::string("no")) +
+                     " rings for a surface of " + std::to_string(surface.rings.size()));
+    for (size_t r = 0; r < rings.size(); ++r) {
+      const std::string at = path + "[" + std::to_string(r) + "]";
+      const json& values = rings[r];
+      if (!values.is_array() || values.empty()) fail(at, "expected texture values [texture, uv, uv, ...] or [null]");
+      std::vector<std::array<float, 2>> uvs(surface.rings[r].size(), {0.0F, 0.0F});
+      if (!values[0].is_null()) {
+        const size_t count = context.textures;
+        if (!values[0].is_number_unsigned() || values[0].get<size_t>() >= count)
+          fail(at, "texture " + describe_json_value(values[0]) + " is not one of the file's " + std::to_string(count) +
+                       " textures");
+        if (values.size() != uvs.size() + 1)
+          fail(at, "the texture values give " + std::to_string(values.size() - 1) + " coordinates for a ring of " +
+                       std::to_string(uvs.size()) + " points");
+        if (surface.texture == CitySurface::kNone) surface.texture = values[0].get<int>();
+        for (size_t k = 0; k < uvs.size(); ++k) {
+          const json& index = values[k + 1];
+          if (!index.is_number_unsigned() || index.get<uint64_t>() >= texture_vertices_.size())
+            fail(at + "[" + std::to_string(k + 1) + "]", "texture vertex " + describe_json_value(index) +
+                                                             " is out of range (the file has " +
+                                                             std::to_string(texture_vertices_.size()) + ")");
+          uvs[k] = texture_vertices_[index.get<size_t>()];
+        }
+      }
+      surface.texture_coordinates.push_back(std::move(uvs));
+    }
+    if (surface.texture == CitySurface::kNone) surface.texture_coordinates.clear();
   }
 
   Vec3 vertex_at(const json& index, const VertexList& vertices, const std::string& path) const {
@@ -348,7 +471,7 @@ class Reader {
   CityJsonOptions options_;
   std::array<double, 3> scale_{1, 1, 1}, translate_{0, 0, 0};
   bool quantised_ = false;
-  std::vector<std::string> material_names_;
+  std::vector<std::array<float, 2>> texture_vertices_;
   const json* templates_ = nullptr;
   VertexList template_vertices_;
 };
@@ -370,7 +493,7 @@ CityModel read_document(const std::string& text, const std::string& source, cons
   CityModel model;
   reader.read_transform(document);
   model.crs = reader.read_crs(document);
-  reader.read_appearance(document);
+  reader.read_appearance(document, model);
   reader.read_templates(document);
   const VertexList vertices =
       reader.read_vertices(reader.member(document, "vertices", "(document)"), "vertices", reader.quantised());
@@ -399,7 +522,7 @@ CityModel read_sequence(const std::string& text, const std::string& source, cons
       expect_type(*header, header_document, "CityJSON", "");
       header->read_transform(header_document);
       model.crs = header->read_crs(header_document);
-      header->read_appearance(header_document);
+      header->read_appearance(header_document, model);
       header->read_templates(header_document);
       continue;
     }

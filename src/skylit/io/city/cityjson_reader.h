@@ -3,8 +3,8 @@
 // into a CityModel (city_model.h): every city object with the surfaces of one
 // geometry (MultiSurface, CompositeSurface, Solid, MultiSolid, CompositeSolid, or a
 // GeometryInstance of a template), quantised vertices decoded with `transform`,
-// semantic surface types and appearance material names kept, the CRS taken from
-// metadata.referenceSystem.
+// semantic surface types kept, appearances (materials, textures with their texture
+// coordinates) of one theme taken, the CRS taken from metadata.referenceSystem.
 #pragma once
 
 #include <filesystem>
@@ -20,6 +20,7 @@ struct CityJsonOptions {
   // of the highest LoD not above it (objects with none are left out). Empty: each
   // object's most detailed geometry.
   std::optional<int> lod;
+  CityAppearanceOptions appearance;
 };
 
 // A city model file's size limit: 1 GiB, several times a large city district.
@@ -27,8 +28,9 @@ inline constexpr std::uintmax_t kMaxCityFileBytes = 1ull << 30;
 
 // Throws InputError "<file>: <JSON path>: <what is wrong>" (or "<file>:<line>:<column>"
 // for broken JSON; "<file>:<line>: ..." in a CityJSONSeq) for anything malformed: a
-// vertex index out of range, a ring of fewer than three points, a semantic or material
-// index the geometry does not have, a template that does not exist, ...
+// vertex index out of range, a ring of fewer than three points, a semantic, material or
+// texture index the file does not have, texture values that do not match a ring's
+// points, a template that does not exist, ...
 CityModel read_cityjson_file(const std::filesystem::path& file, const CityJsonOptions& options = {});
 // The same from text; `source` names it in messages, and a name ending in ".jsonl"
 // marks a CityJSONSeq.

@@ -1,13 +1,16 @@
 // A scene object of type "city": a city model file (CityJSON; CityGML) placed around
-// the scene's site by its coordinate reference system, its surfaces given materials by
-// their class: the object's `city_materials`, else the default palette
+// the scene's site by its coordinate reference system, its surfaces given materials:
+// the object's `city_materials` for their class, else the file's appearance (materials
+// and textures of one theme), else the default palette for their class
 // (io/city/city_palette.h). docs/city-models.md describes it.
 #include <algorithm>
 #include <map>
 #include <string>
 
 #include "skylit/core/file_names.h"
+#include "skylit/core/text_file.h"
 #include "skylit/geometry/terrain_surface.h"
+#include "skylit/io/city/city_appearance.h"
 #include "skylit/io/city/city_palette.h"
 #include "skylit/io/city/city_placement.h"
 #include "skylit/io/city/citygml_reader.h"
@@ -24,7 +27,8 @@ CityModel read_city_file(const JsonReader& file_value, const std::filesystem::pa
                          const CityJsonOptions& options) {
   const std::string extension = lower_case_extension(file);
   if (extension == ".json" || extension == ".jsonl") return read_cityjson_file(file, options);
-  if (extension == ".gml" || extension == ".xml") return read_citygml_file(file, CityGmlOptions{options.lod});
+  if (extension == ".gml" || extension == ".xml")
+    return read_citygml_file(file, CityGmlOptions{options.lod, options.appearance});
   file_value.fail("unknown city model file '" + file.filename().string() +
                   "': expected CityJSON (.json, .city.json, .city.jsonl) or CityGML (.gml, .xml)");
 }
@@ -115,6 +119,45 @@ std::optional<uint32_t> material_index(const std::string& name, const std::vecto
   return std::nullopt;
 }
 
+// The scene materials of a model's appearances, one per (material, texture) pair used,
+// named "<object>/<material name>" or "<object>/<image>". A texture whose image is
+// missing is left out (its surfaces keep their material, else their class's).
+class CityAppearanceMaterials {
+ public:
+  CityAppearanceMaterials(const CityModel& model, const std::filesystem::path& folder, const std::string& object_name,
+                          std::vector<NamedMaterial>& materials)
+      : model_(model), images_(folder), object_name_(object_name), materials_(materials) {}
+
+  // The scene material, or none when the surface has no appearance that can be shown.
+  std::optional<uint32_t> material_for(int32_t material, int32_t texture) {
+    std::shared_ptr<const Texture> image;
+    if (texture != CitySurface::kNone) image = images_.image(model_.textures[static_cast<size_t>(texture)]);
+    if (!image) texture = CitySurface::kNone;
+    if (material == CitySurface::kNone && texture == CitySurface::kNone) return std::nullopt;
+    const auto [it, added] = made_.try_emplace({material, texture}, 0);
+    if (!added) return it->second;
+    ModelMaterial m;
+    if (material != CitySurface::kNone) m = model_material_from_x3d(model_.materials[static_cast<size_t>(material)]);
+    if (image) {
+      m.color_linear = {1, 1, 1};  // the texture replaces the colour, as in X3D
+      m.color_texture = image;
+      m.name =
+          (material != CitySurface::kNone ? m.name + " + " : "") + model_.textures[static_cast<size_t>(texture)].image;
+    }
+    it->second = static_cast<uint32_t>(materials_.size());
+    materials_.push_back({object_name_ + "/" + m.name, material_from_model(m), appearance_from_model(m)});
+    return it->second;
+  }
+  const std::vector<std::string>& missing_images() const { return images_.missing(); }
+
+ private:
+  const CityModel& model_;
+  CityTextureImages images_;
+  std::string object_name_;
+  std::vector<NamedMaterial>& materials_;
+  std::map<std::pair<int32_t, int32_t>, uint32_t> made_;
+};
+
 // The scene material for each class: the object's city_materials (the class, its type
 // or its semantic), else the palette's (added once per scene as "city/<entry>").
 class CityMaterials {
@@ -123,13 +166,19 @@ class CityMaterials {
                 std::vector<NamedMaterial>& materials)
       : given_(given), object_name_(object_name), materials_(materials) {}
 
-  uint32_t material_for(const std::string& class_key) {
+  // The scene's city_materials entry for the class, if any: its key.
+  std::optional<std::string> given_key(const std::string& class_key) const {
+    if (!given_) return std::nullopt;
     const size_t dot = class_key.find('.');
     const std::string type = class_key.substr(0, dot);
     const std::string semantic = dot == std::string::npos ? "" : class_key.substr(dot + 1);
-    if (given_)
-      for (const std::string& key : {class_key, type, semantic})
-        if (!key.empty() && given_->has(key)) return scene_material(given_->required(key), key);
+    for (const std::string& key : {class_key, type, semantic})
+      if (!key.empty() && given_->has(key)) return key;
+    return std::nullopt;
+  }
+
+  uint32_t material_for(const std::string& class_key) {
+    if (const auto key = given_key(class_key)) return scene_material(given_->required(*key), *key);
     const CityPaletteEntry& entry = city_palette_entry(class_key);
     const std::string name = "city/" + std::string(entry.key);
     if (auto index = material_index(name, materials_)) return *index;
@@ -161,8 +210,8 @@ class CityMaterials {
 
 SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir, std::vector<NamedMaterial>& materials,
                       std::optional<SiteLocation>& site) {
-  j.allow_only(
-      {"type", "name", "file", "crs", "lod", "region", "city_materials", "earth_curvature", "refraction_k", "terrain"});
+  j.allow_only({"type", "name", "file", "crs", "lod", "region", "city_materials", "appearance", "appearance_theme",
+                "earth_curvature", "refraction_k", "terrain"});
   SceneObject object;
   object.name = j.optional("name") ? j.required("name").string() : j.path();
   const JsonReader file_value = j.required("file");
@@ -170,7 +219,18 @@ SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir
 
   CityJsonOptions read_options;
   if (auto lod = j.optional("lod")) read_options.lod = read_lod(*lod);
+  if (auto a = j.optional("appearance")) read_options.appearance.read = a->boolean();
+  const auto theme = j.optional("appearance_theme");
+  if (theme) read_options.appearance.theme = theme->string();
   const CityModel model = read_city_file(file_value, file, read_options);
+  if (theme && read_options.appearance.read &&
+      std::find(model.appearance_themes.begin(), model.appearance_themes.end(), read_options.appearance.theme) ==
+          model.appearance_themes.end()) {
+    std::string themes;
+    for (const std::string& t : model.appearance_themes) themes += (themes.empty() ? "" : ", ") + quote_excerpt(t);
+    theme->fail("the file has no appearance theme " + quote_excerpt(read_options.appearance.theme) +
+                (themes.empty() ? " (it has no appearances)" : " (its themes: " + themes + ")"));
+  }
 
   CityPlacementOptions options;
   if (auto crs = j.optional("crs")) options.crs = crs->string();
@@ -203,6 +263,12 @@ SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir
     source.classes.push_back({key, 0, materials[class_material.back()].name});
   }
   seat_buildings_on_relief(placed);
+  CityAppearanceMaterials appearance(model, file.parent_path(), object.name, materials);
+  std::vector<bool> class_given(placed.classes.size());
+  for (size_t c = 0; c < placed.classes.size(); ++c)
+    class_given[c] = city_materials.given_key(placed.classes[c]).has_value();
+  const bool textured = std::any_of(placed.objects.begin(), placed.objects.end(),
+                                    [](const PlacedCityObject& o) { return !o.corner_uvs.empty(); });
   std::map<std::string, size_t> by_type;
   for (const PlacedCityObject& city_object : placed.objects) {
     ++by_type[city_object.type];
@@ -210,11 +276,22 @@ SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir
       if (!(std::abs(v.x) <= kSceneExtentM && std::abs(v.y) <= kSceneExtentM && std::abs(v.z) <= kSceneExtentM))
         file_value.fail("object '" + city_object.id + "' lies beyond ±1e7 m of the site once placed");
     object.mesh.append(city_object.mesh);
-    for (const uint32_t c : city_object.triangle_class) {
-      object.triangle_materials.push_back(class_material[c]);
+    const bool has_appearance = !city_object.triangle_material.empty();
+    for (size_t t = 0; t < city_object.triangle_class.size(); ++t) {
+      const uint32_t c = city_object.triangle_class[t];
+      std::optional<uint32_t> m;  // city_materials > appearance > palette
+      if (has_appearance && !class_given[c])
+        m = appearance.material_for(city_object.triangle_material[t], city_object.triangle_texture[t]);
+      object.triangle_materials.push_back(m ? *m : class_material[c]);
       ++source.classes[c].triangles;
+      source.appearance_triangles += m.has_value();
     }
+    if (textured)
+      object.corner_uvs.insert(object.corner_uvs.end(), city_object.corner_uvs.begin(), city_object.corner_uvs.end());
+    if (textured && city_object.corner_uvs.empty()) object.corner_uvs.resize(object.mesh.triangles.size(), CornerUvs{});
   }
+  source.appearance_theme = model.texture_theme.empty() ? model.material_theme : model.texture_theme;
+  source.missing_texture_images = appearance.missing_images();
   source.objects_by_type.assign(by_type.begin(), by_type.end());
   object.material_index = object.triangle_materials.front();
   object.city = std::move(source);

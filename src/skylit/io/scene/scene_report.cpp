@@ -100,7 +100,10 @@ std::string describe_city(const CitySource& c) {
   if (c.objects_outside_region > 0) out += "  " + std::to_string(c.objects_outside_region) + " outside the region\n";
   if (c.degenerate_surfaces > 0)
     out += "  " + std::to_string(c.degenerate_surfaces) + " surfaces of zero area skipped\n";
-  out += "  surfaces:\n";
+  if (c.appearance_triangles > 0)
+    out += "  " + std::to_string(c.appearance_triangles) + " triangles take the file's appearance (theme " +
+           quoted(c.appearance_theme) + "); the others their class's material\n";
+  out += "  surfaces (by class):\n";
   for (const auto& k : c.classes)
     out += "    " + k.name + ": " + std::to_string(k.triangles) + " triangles → " + k.material + "\n";
   return out;
@@ -146,6 +149,12 @@ std::string describe_objects(const Scene& scene) {
 std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
   std::vector<std::string> warnings;
   for (const SceneObject& object : scene.objects) {
+    if (object.city && !object.city->missing_texture_images.empty()) {
+      const auto& missing = object.city->missing_texture_images;
+      warnings.push_back("object " + quoted(object.name) + ": " + std::to_string(missing.size()) +
+                         " texture image(s) of the city model not found beside its file (the first: " +
+                         quoted(missing.front()) + "); their surfaces take their material or class's instead");
+    }
     if (!object.source) continue;  // boxes and planes are where the user put them
     check_model_placement(object, warnings);
     for (const std::string& library : object.source->missing_libraries)
