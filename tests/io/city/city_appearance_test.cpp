@@ -8,15 +8,17 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 
 #include "../../test_support.h"
 #include "skylit/core/error.h"
+#include "skylit/geometry/ray_tracer.h"
 #include "skylit/io/city/citygml_reader.h"
 #include "skylit/io/city/cityjson_reader.h"
 #include "skylit/io/image/image_encoders.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/io/scene/scene_report.h"
-#include "skylit/render/prepared_scene.h"
+#include "skylit/material/surface_appearance.h"
 #include "skylit/spectrum/rgb_to_spectrum.h"
 
 namespace skylit {
@@ -59,12 +61,24 @@ std::string scene_json(const std::string& file, const std::string& more = "") {
          file + R"(")" + more + "}]}";
 }
 
-// The surface point straight below a point of the placed mesh, seen from 10 m above it.
-SurfacePoint point_below(const PreparedScene& prepared, const Vec3& p) {
-  const Ray ray{{p.x, p.y, p.z + 10}, {0, 0, -1}};
-  const std::optional<Hit> hit = prepared.tracer().intersect(ray);
-  EXPECT_TRUE(hit.has_value());
-  return prepared.surface_point(ray, *hit);
+// The colour the city object's texture gives straight below a point of its placed mesh,
+// seen from 10 m above: the triangle hit, the texture coordinates at the hit from its
+// corners', and the texel there (bilinear on the finest level) of its material's
+// texture. (PreparedScene reads them the same way with a footprint filter:
+// tests/io/model_textures_test.cpp; here the Embree hit alone keeps the test fast.)
+Rgba texel_below(const Scene& scene, const Vec3& p) {
+  const SceneObject& city = scene.objects.at(0);
+  RayTracer tracer;
+  tracer.add_mesh(city.mesh);
+  tracer.commit();
+  const std::optional<Hit> hit = tracer.intersect(Ray{{p.x, p.y, p.z + 10}, {0, 0, -1}});
+  if (!hit) throw std::runtime_error("no hit");
+  const auto& appearance = scene.materials[city.material_of(hit->triangle)].appearance;
+  if (!appearance || !appearance->base_color) throw std::runtime_error("not textured");
+  const CornerUvs& uv = city.corner_uvs.at(hit->triangle);
+  const double b1 = hit->u, b2 = hit->v, b0 = 1 - b1 - b2;
+  return appearance->base_color->bilinear(0, b0 * uv[0][0] + b1 * uv[1][0] + b2 * uv[2][0],
+                                          b0 * uv[0][1] + b1 * uv[1][1] + b2 * uv[2][1]);
 }
 
 // The point of the placed quad whose first four vertices are a, b, c, d at fractions
@@ -75,15 +89,13 @@ Vec3 on_quad(const TriangleMesh& mesh, double f, double g) {
   return a + f * (b - a) + g * (d - a);
 }
 
-void expect_texel(const SurfacePoint& p, float r, float g, float b) {
-  ASSERT_TRUE(p.has_color);
-  // At a texel's centre, filtered over the pixel's footprint: a pixel of the default
-  // view seen 10 m away is a few millimetres, under 1e-3 of a 5 m texel, and the
-  // bilinear look-ups spread over it blend in a neighbour by at most twice that; a
-  // wrong texel would be off by 1.
-  EXPECT_NEAR(p.color[0], r, 2e-3);
-  EXPECT_NEAR(p.color[1], g, 2e-3);
-  EXPECT_NEAR(p.color[2], b, 2e-3);
+void expect_texel(const Rgba& t, float r, float g, float b) {
+  // At a texel's centre the bilinear look-up is the texel itself; the placed points are
+  // within millimetres of the centre (1e-4 of a 5 m texel, PROJ's round trip), which
+  // blends in a neighbour by less than 1e-3. A wrong texel would be off by 1.
+  EXPECT_NEAR(t[0], r, 1e-3);
+  EXPECT_NEAR(t[1], g, 1e-3);
+  EXPECT_NEAR(t[2], b, 1e-3);
 }
 
 const NamedMaterial& material_at(const Scene& scene, size_t triangle) {
@@ -102,11 +114,10 @@ TEST(CityAppearance, CityJsonCubeTexelsAndMaterials) {
   ASSERT_EQ(city.corner_uvs.size(), city.mesh.triangles.size());
   // The roof's first four vertices are the ring's, in its order, 10 m up.
   for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(city.mesh.vertices[k].z, 10.0, 1e-3);
-  const PreparedScene prepared(scene);
-  expect_texel(point_below(prepared, on_quad(city.mesh, 0.25, 0.25)), 0, 0, 1);  // bottom left: blue
-  expect_texel(point_below(prepared, on_quad(city.mesh, 0.75, 0.25)), 1, 1, 1);  // bottom right: white
-  expect_texel(point_below(prepared, on_quad(city.mesh, 0.25, 0.75)), 1, 0, 0);  // top left: red
-  expect_texel(point_below(prepared, on_quad(city.mesh, 0.75, 0.75)), 0, 1, 0);  // top right: green
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.25, 0.25)), 0, 0, 1);  // bottom left: blue
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.75, 0.25)), 1, 1, 1);  // bottom right: white
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.25, 0.75)), 1, 0, 0);  // top left: red
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.75, 0.75)), 0, 1, 0);  // top right: green
   // The walls: theme "colour" (the first) gives them brick, whose reflectance is the
   // colour's Jakob–Hanika spectrum; the ground has no appearance: the palette's.
   EXPECT_EQ(material_at(scene, kWallTriangle).name, "c/brick");
@@ -216,11 +227,10 @@ TEST(CityAppearance, CityGmlParameterizedTextureAndX3dMaterial) {
   const Scene scene = load_scene(dir.write("s.json", scene_json("block.gml")));
   const SceneObject& city = scene.objects.at(0);
   ASSERT_EQ(city.corner_uvs.size(), city.mesh.triangles.size());
-  const PreparedScene prepared(scene);
-  expect_texel(point_below(prepared, on_quad(city.mesh, 0.25, 0.25)), 0, 0, 1);
-  expect_texel(point_below(prepared, on_quad(city.mesh, 0.75, 0.25)), 1, 1, 1);
-  expect_texel(point_below(prepared, on_quad(city.mesh, 0.25, 0.75)), 1, 0, 0);
-  expect_texel(point_below(prepared, on_quad(city.mesh, 0.75, 0.75)), 0, 1, 0);
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.25, 0.25)), 0, 0, 1);
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.75, 0.25)), 1, 1, 1);
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.25, 0.75)), 1, 0, 0);
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.75, 0.75)), 0, 1, 0);
   // The second square: its X3D material, a coat (a specular colour) over its diffuse
   // colour.
   const NamedMaterial& tile = material_at(scene, city.mesh.triangles.size() - 1);
