@@ -305,6 +305,49 @@ TEST(CityGmlReader, AReferenceMayNameAWholeMultiSurface) {
   for (const CitySurface& s : model.objects[0].surfaces) EXPECT_EQ(s.semantic, "RoofSurface");
 }
 
+// Two trees from one library shape: the first defines its relative geometry (a
+// triangle) with a matrix that doubles x and turns nothing else; the second refers to it
+// and has no matrix (the identity). p' = M p + reference point.
+TEST(CityGmlReader, ImplicitGeometriesArePlacedAtTheirReferencePoints) {
+  const auto tree = [](const std::string& id, const std::string& geometry, const std::string& matrix,
+                       const std::string& point) {
+    return "<core:cityObjectMember><veg:SolitaryVegetationObject gml:id=\"" + id +
+           "\"><veg:lod2ImplicitRepresentation><core:ImplicitGeometry>" + matrix + geometry +
+           "<core:referencePoint><gml:Point srsName=\"EPSG:28992\"><gml:pos>" + point +
+           "</gml:pos></gml:Point></core:referencePoint></core:ImplicitGeometry></veg:lod2ImplicitRepresentation>"
+           "</veg:SolitaryVegetationObject></core:cityObjectMember>\n";
+  };
+  const std::string head = R"(<core:CityModel xmlns:core="http://www.opengis.net/citygml/2.0"
+ xmlns:veg="http://www.opengis.net/citygml/vegetation/2.0" xmlns:gml="http://www.opengis.net/gml"
+ xmlns:xlink="http://www.w3.org/1999/xlink">
+)";
+  const std::string shape =
+      "<core:relativeGMLGeometry><gml:MultiSurface gml:id=\"crown\"><gml:surfaceMember><gml:Polygon><gml:exterior>"
+      "<gml:LinearRing><gml:posList>0 0 0 1 0 0 0 1 2 0 0 0</gml:posList></gml:LinearRing></gml:exterior>"
+      "</gml:Polygon></gml:surfaceMember></gml:MultiSurface></core:relativeGMLGeometry>";
+  const std::string doubled = "<core:transformationMatrix>2 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1</core:transformationMatrix>";
+  const std::string text = head + tree("t1", shape, doubled, "100 200 5") +
+                           tree("t2", "<core:relativeGMLGeometry xlink:href=\"#crown\"/>", "", "110 200 5") +
+                           "</core:CityModel>\n";
+  const CityModel model = parse_citygml(text, "trees.gml");
+  EXPECT_EQ(model.crs, "EPSG:28992");
+  ASSERT_EQ(model.objects.size(), 2u);
+  EXPECT_EQ(model.objects[0].lod, 20);
+  ASSERT_EQ(model.objects[0].surfaces.size(), 1u);
+  ASSERT_EQ(model.objects[1].surfaces.size(), 1u);
+  const auto& first = model.objects[0].surfaces[0].rings[0];
+  EXPECT_EQ(first[1], (Vec3{102, 200, 5}));  // (1, 0, 0) doubled in x, moved
+  EXPECT_EQ(first[2], (Vec3{100, 201, 7}));
+  const auto& second = model.objects[1].surfaces[0].rings[0];
+  EXPECT_EQ(second[1], (Vec3{111, 200, 5}));  // the library shape as read, not the first tree's
+  EXPECT_EQ(second[2], (Vec3{110, 201, 7}));
+  // A reference to nothing before it is one located error.
+  const std::string dangling =
+      head + tree("t3", "<core:relativeGMLGeometry xlink:href=\"#nothing\"/>", "", "0 0 0") + "</core:CityModel>\n";
+  EXPECT_EQ(testing::input_error_of([&] { parse_citygml(dangling, "trees.gml"); }),
+            "trees.gml:4: core:relativeGMLGeometry xlink:href='#nothing' names no implicit geometry before it");
+}
+
 TEST(CityGmlReader, SrsNamesInTheirCommonForms) {
   EXPECT_EQ(citygml::epsg_from_srs_name("http://www.opengis.net/def/crs/EPSG/0/6697"), "EPSG:6697");
   EXPECT_EQ(citygml::epsg_from_srs_name("https://www.opengis.net/def/crs/EPSG/0/7415"), "EPSG:7415");

@@ -184,6 +184,30 @@ TEST(CityAppearance, BadCityJsonTextureValuesAreLocated) {
   EXPECT_NE(error_of(bad_uv).find("texture vertex 9 is out of range (the file has 4)"), std::string::npos);
 }
 
+TEST(CityAppearance, CityJsonSeqFeaturesMayBringTheirOwnAppearance) {
+  const std::string header =
+      R"({"type": "CityJSON", "version": "2.0", "transform": {"scale": [1, 1, 1], "translate": [0, 0, 0]},
+        "appearance": {"materials": [{"name": "shared"}]}, "CityObjects": {}, "vertices": []})";
+  const auto feature = [](const std::string& id, const std::string& appearance) {
+    return R"({"type": "CityJSONFeature", "id": ")" + id + R"(", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],)" +
+           appearance + R"( "CityObjects": {")" + id +
+           R"(": {"type": "Building", "geometry": [{"type": "MultiSurface", "lod": "1", "boundaries": [[[0, 1, 2]]],
+             "material": {"m": {"values": [0]}}}]}}})";
+  };
+  const auto one_line = [](std::string line) {
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    return line + "\n";
+  };
+  const std::string text =
+      one_line(header) + one_line(feature("a", "")) +
+      one_line(feature("b", R"("appearance": {"materials": [{"name": "own", "diffuseColor": [0.1, 0.2, 0.3]}]},)"));
+  const CityModel model = read_cityjson_text(text, "seq.city.jsonl");
+  ASSERT_EQ(model.objects.size(), 2u);
+  ASSERT_EQ(model.materials.size(), 2u);
+  EXPECT_EQ(model.materials[static_cast<size_t>(model.objects[0].surfaces.at(0).material)].name, "shared");
+  EXPECT_EQ(model.materials[static_cast<size_t>(model.objects[1].surfaces.at(0).material)].name, "own");
+}
+
 // One horizontal 10 m square in JGD2011 latitude, longitude and height (PLATEAU's
 // EPSG:6697), textured by a ParameterizedTexture of theme "rgbTexture", and a second
 // square beside it with an X3DMaterial of the same theme.

@@ -129,7 +129,9 @@ enum class TextFor {
   material_value,
   texture_uri,
   wrap_mode,
-  texture_coordinates
+  texture_coordinates,
+  implicit_matrix,
+  implicit_reference
 };
 
 // An id as an appearance writes it ("#id", perhaps with spaces around), without the '#'.
@@ -231,6 +233,7 @@ class CityGmlParser {
   }
   void use_text();
   void use_material_value();
+  void finish_implicit_geometry();
   void resolve_appearances(CityModel& model);
   void note_crs(std::string_view srs_name);
   void finish_ring();
@@ -292,6 +295,22 @@ class CityGmlParser {
   std::vector<SurfaceData> surface_data_;
   std::string coordinates_ring_;  // the ring of the app:textureCoordinates being read
 
+  // The implicit geometry being read (core:ImplicitGeometry): its polygons, read in
+  // relative coordinates, are moved by its matrix to its reference point at its end.
+  struct Implicit {
+    int depth = 0;
+    unsigned long line = 0;
+    size_t first_polygon = 0;
+    int relative_depth = 0;         // of core:relativeGMLGeometry
+    std::string prototype;          // the gml:id of the relative geometry it defines
+    std::string href;               // or the one it refers to
+    std::vector<double> matrix;     // 16, row by row
+    std::optional<Vec3> reference;  // core:referencePoint
+  };
+  std::optional<Implicit> implicit_;
+  // Relative geometries by gml:id, as read (before any instance's transformation).
+  std::unordered_map<std::string, std::vector<CitySurface>> prototypes_;
+
   std::vector<CitySurface> polygons_;
   std::unordered_map<std::string, int> polygon_ids_;
   std::unordered_map<std::string, std::vector<int>> aggregate_polygons_;
@@ -322,6 +341,27 @@ void CityGmlParser::start(const XML_Char* name, const XML_Char** attribute_list)
 }
 
 void CityGmlParser::start_citygml(std::string_view local, const Attributes& a) {
+  if (!objects_.empty() && local.size() > 4 && local.starts_with("lod") && local[3] >= '0' && local[3] <= '4' &&
+      local.ends_with("ImplicitRepresentation")) {
+    lods_.emplace_back((local[3] - '0') * 10, depth_);
+    return;
+  }
+  if (!objects_.empty() && local == "ImplicitGeometry" && !lods_.empty() && !implicit_) {
+    implicit_.emplace();
+    implicit_->depth = depth_;
+    implicit_->line = XML_GetCurrentLineNumber(parser_);
+    implicit_->first_polygon = polygons_.size();
+    return;
+  }
+  if (implicit_) {
+    if (local == "transformationMatrix") {
+      capture_text(TextFor::implicit_matrix);
+    } else if (local == "relativeGMLGeometry") {
+      implicit_->relative_depth = depth_;
+      if (!a.href.empty()) implicit_->href = without_hash(a.href);
+    }
+    if (local != "referencePoint") return;
+  }
   if (citygml::is_interior_feature(local) || local.find("Implicit") != std::string_view::npos) {
     skip_depth_ = depth_;
     return;
@@ -352,6 +392,14 @@ void CityGmlParser::start_citygml(std::string_view local, const Attributes& a) {
 }
 
 void CityGmlParser::start_gml(std::string_view local, const Attributes& a) {
+  if (implicit_ && !in_polygon_) {
+    if (implicit_->relative_depth > 0 && depth_ == implicit_->relative_depth + 1 && !a.gml_id.empty())
+      implicit_->prototype = a.gml_id;
+    if (local == "pos" && !in_ring_) {
+      capture_text(TextFor::implicit_reference);
+      return;
+    }
+  }
   if (local == "Polygon" || local == "Triangle") {
     in_polygon_ = true;
     polygon_used_ = in_geometry();
@@ -541,6 +589,18 @@ void CityGmlParser::use_text() {
     case TextFor::texture_coordinates:
       surface_data_.back().rings.push_back({coordinates_ring_, numbers(text_), text_line_});
       break;
+    case TextFor::implicit_matrix:
+      implicit_->matrix = numbers(text_);
+      if (implicit_->matrix.size() != 16)
+        fail_at(text_line_,
+                "a core:transformationMatrix has " + std::to_string(implicit_->matrix.size()) + " numbers, not 16");
+      break;
+    case TextFor::implicit_reference: {
+      const auto values = numbers(text_);
+      if (values.size() != 3) fail_at(text_line_, "an implicit geometry's reference point needs three coordinates");
+      implicit_->reference = Vec3{values[0], values[1], values[2]};
+      break;
+    }
     case TextFor::nothing:
       break;
   }
@@ -603,6 +663,7 @@ void CityGmlParser::end(const XML_Char* /*name*/) {
   if (in_ring_ && ring_depth_ == depth_) finish_ring();
   if (in_polygon_ && polygon_depth_ == depth_) finish_polygon();
   if (surface_data_depth_ == depth_) surface_data_depth_ = 0;
+  if (implicit_ && implicit_->depth == depth_) finish_implicit_geometry();
   if (!aggregates_.empty() && aggregates_.back().second == depth_) aggregates_.pop_back();
   if (!lods_.empty() && lods_.back().second == depth_) lods_.pop_back();
   if (!semantics_.empty() && semantics_.back().second == depth_) semantics_.pop_back();
@@ -619,6 +680,41 @@ std::vector<int> CityGmlParser::polygons_named(const std::string& id) const {
   if (auto p = polygon_ids_.find(id); p != polygon_ids_.end()) return {p->second};
   if (auto a = aggregate_polygons_.find(id); a != aggregate_polygons_.end()) return a->second;
   return {};
+}
+
+// An implicit geometry's polygons (its own, or copies of the relative geometry it refers
+// to) moved to where it stands: p' = M p + reference (CityGML 2.0 §10.2.2), as CityJSON
+// instances are.
+void CityGmlParser::finish_implicit_geometry() {
+  Implicit implicit = std::move(*implicit_);
+  implicit_.reset();
+  if (!implicit.reference) fail_at(implicit.line, "an implicit geometry without a core:referencePoint");
+  if (implicit.matrix.empty()) implicit.matrix = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  if (!implicit.prototype.empty())
+    prototypes_[implicit.prototype].assign(polygons_.begin() + static_cast<std::ptrdiff_t>(implicit.first_polygon),
+                                           polygons_.end());
+  if (!implicit.href.empty()) {
+    const auto found = prototypes_.find(implicit.href);
+    if (found == prototypes_.end())
+      fail_at(implicit.line, "core:relativeGMLGeometry xlink:href=" + quote_excerpt("#" + implicit.href) +
+                                 " names no implicit geometry before it");
+    for (const CitySurface& surface : found->second) {
+      objects_.back().uses.push_back(
+          {lods_.back().first, current_semantic(), static_cast<int>(polygons_.size()), {}, implicit.line});
+      polygons_.push_back(surface);
+    }
+  }
+  const auto& m = implicit.matrix;
+  const Vec3 r = *implicit.reference;
+  for (size_t p = implicit.first_polygon; p < polygons_.size(); ++p)
+    for (auto& ring : polygons_[p].rings)
+      for (Vec3& v : ring) {
+        const Vec3 q{m[0] * v.x + m[1] * v.y + m[2] * v.z + m[3], m[4] * v.x + m[5] * v.y + m[6] * v.z + m[7],
+                     m[8] * v.x + m[9] * v.y + m[10] * v.z + m[11]};
+        v = q + r;
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+          fail_at(implicit.line, "an implicit geometry's transformation gives a coordinate that is not finite");
+      }
 }
 
 // The appearances of the chosen theme (the scene's, else the first the file gives)

@@ -10,9 +10,11 @@
 // For each object the most detailed level of detail it has is kept (or the most
 // detailed up to a chosen one). Surfaces that a
 // solid references by xlink:href and a boundary surface defines (PLATEAU's lod2Solid)
-// are taken once, with the boundary surface's semantic class. Not read: implicit
-// geometries (coordinates relative to a reference point), interior features (rooms,
-// furniture), gml:Tin control points, georeferenced textures and
+// are taken once, with the boundary surface's semantic class. Implicit geometries
+// (lodNImplicitRepresentation: a relative geometry, or a reference to an earlier one,
+// through a 4 × 4 matrix to a reference point; trees, street furniture) are placed.
+// Not read: interior features (rooms, furniture), gml:Tin control points, library
+// objects of implicit geometries (external model files), georeferenced textures and
 // texture coordinates made by app:TexCoordGen.
 //
 // Coordinates stay in the file's CRS and axis order. For EPSG:6697 (PLATEAU: JGD2011

@@ -104,11 +104,14 @@ class Reader {
     return normalized_crs_name(crs->get<std::string>());
   }
 
-  // The document's "appearance": its materials and textures into the model, its
-  // texture coordinates kept for the surfaces.
+  // The document's (or a CityJSONSeq feature's) "appearance": its materials and
+  // textures appended to the model, its texture coordinates kept for the surfaces,
+  // which index them from base_.
   void read_appearance(const json& document, CityModel& model) {
     const auto appearance = document.find("appearance");
     if (!options_.appearance.read || appearance == document.end()) return;
+    base_ = {model.materials.size(), model.textures.size()};
+    texture_vertices_.clear();
     if (!appearance->is_object()) fail("appearance", "expected an object with materials and textures");
     if (const auto materials = appearance->find("materials"); materials != appearance->end()) {
       if (!materials->is_array()) fail("appearance.materials", "expected an array");
@@ -264,8 +267,12 @@ class Reader {
     const int depth = surface_depth(type);
     if (depth == 0) return;  // a template of points or lines
     const json& boundaries = member(geometry, "boundaries", path);
-    Context context{
-        &vertices, instance, semantic_types(geometry, path), &object, model.materials.size(), model.textures.size()};
+    Context context{&vertices,
+                    instance,
+                    semantic_types(geometry, path),
+                    &object,
+                    model.materials.size() - base_.materials,
+                    model.textures.size() - base_.textures};
     const auto semantics = geometry.find("semantics");
     SurfaceValues values;
     if (semantics != geometry.end() && semantics->is_object() && semantics->contains("values"))
@@ -399,7 +406,7 @@ class Reader {
       if (!material->is_number_unsigned() || material->get<size_t>() >= count)
         fail(path, "material " + describe_json_value(*material) + " is not one of the file's " + std::to_string(count) +
                        " appearance materials");
-      out.material = material->get<int>();
+      out.material = static_cast<int>(base_.materials + material->get<size_t>());
     }
     for (size_t r = 0; r < surface.size(); ++r) {
       const std::string at = path + "[" + std::to_string(r) + "]";
@@ -438,7 +445,8 @@ class Reader {
         if (values.size() != uvs.size() + 1)
           fail(at, "the texture values give " + std::to_string(values.size() - 1) + " coordinates for a ring of " +
                        std::to_string(uvs.size()) + " points");
-        if (surface.texture == CitySurface::kNone) surface.texture = values[0].get<int>();
+        if (surface.texture == CitySurface::kNone)
+          surface.texture = static_cast<int>(base_.textures + values[0].get<size_t>());
         for (size_t k = 0; k < uvs.size(); ++k) {
           const json& index = values[k + 1];
           if (!index.is_number_unsigned() || index.get<uint64_t>() >= texture_vertices_.size())
@@ -472,6 +480,9 @@ class Reader {
   std::array<double, 3> scale_{1, 1, 1}, translate_{0, 0, 0};
   bool quantised_ = false;
   std::vector<std::array<float, 2>> texture_vertices_;
+  struct {
+    size_t materials = 0, textures = 0;
+  } base_;  // where the current appearance's materials and textures begin in the model
   const json* templates_ = nullptr;
   VertexList template_vertices_;
 };
@@ -527,8 +538,9 @@ CityModel read_sequence(const std::string& text, const std::string& source, cons
       continue;
     }
     const json feature = parse_json_text(line, where);
-    const Reader reader = header->for_source(where);  // messages name this line
+    Reader reader = header->for_source(where);  // messages name this line
     expect_type(reader, feature, "CityJSONFeature", "");
+    reader.read_appearance(feature, model);  // a feature's own, if it has one
     const VertexList vertices =
         reader.read_vertices(reader.member(feature, "vertices", "(feature)"), "vertices", reader.quantised());
     reader.read_objects(reader.member(feature, "CityObjects", "(feature)"), vertices, "CityObjects", model);

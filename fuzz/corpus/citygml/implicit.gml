@@ -1,0 +1,6 @@
+<core:CityModel xmlns:core="http://www.opengis.net/citygml/2.0"
+ xmlns:veg="http://www.opengis.net/citygml/vegetation/2.0" xmlns:gml="http://www.opengis.net/gml"
+ xmlns:xlink="http://www.w3.org/1999/xlink">
+<core:cityObjectMember><veg:SolitaryVegetationObject gml:id="t1"><veg:lod2ImplicitRepresentation><core:ImplicitGeometry><core:transformationMatrix>2 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1</core:transformationMatrix><core:relativeGMLGeometry><gml:MultiSurface gml:id="crown"><gml:surfaceMember><gml:Polygon><gml:exterior><gml:LinearRing><gml:posList>0 0 0 1 0 0 0 1 2 0 0 0</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon></gml:surfaceMember></gml:MultiSurface></core:relativeGMLGeometry><core:referencePoint><gml:Point srsName="EPSG:28992"><gml:pos>100 200 5</gml:pos></gml:Point></core:referencePoint></core:ImplicitGeometry></veg:lod2ImplicitRepresentation></veg:SolitaryVegetationObject></core:cityObjectMember>
+<core:cityObjectMember><veg:SolitaryVegetationObject gml:id="t2"><veg:lod2ImplicitRepresentation><core:ImplicitGeometry><core:relativeGMLGeometry xlink:href="#crown"/><core:referencePoint><gml:Point srsName="EPSG:28992"><gml:pos>110 200 5</gml:pos></gml:Point></core:referencePoint></core:ImplicitGeometry></veg:lod2ImplicitRepresentation></veg:SolitaryVegetationObject></core:cityObjectMember>
+</core:CityModel>
