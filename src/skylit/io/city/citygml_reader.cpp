@@ -160,6 +160,18 @@ struct SurfaceData {
   unsigned long line = 0;
 };
 
+// An implicit geometry being read (core:ImplicitGeometry): its polygons, read in
+// relative coordinates, are moved by its matrix to its reference point at its end.
+struct Implicit {
+  int depth = 0;
+  unsigned long line = 0;
+  size_t first_polygon = 0;
+  int relative_depth = 0;         // of core:relativeGMLGeometry
+  std::string prototype;          // the gml:id of the relative geometry it defines
+  std::string href;               // or the one it refers to
+  std::vector<double> matrix;     // 16, row by row
+  std::optional<Vec3> reference;  // core:referencePoint
+};
 class CityGmlParser {
  public:
   CityGmlParser(std::string name, CityGmlOptions options) : name_(std::move(name)), options_(std::move(options)) {
@@ -295,18 +307,7 @@ class CityGmlParser {
   std::vector<SurfaceData> surface_data_;
   std::string coordinates_ring_;  // the ring of the app:textureCoordinates being read
 
-  // The implicit geometry being read (core:ImplicitGeometry): its polygons, read in
-  // relative coordinates, are moved by its matrix to its reference point at its end.
-  struct Implicit {
-    int depth = 0;
-    unsigned long line = 0;
-    size_t first_polygon = 0;
-    int relative_depth = 0;         // of core:relativeGMLGeometry
-    std::string prototype;          // the gml:id of the relative geometry it defines
-    std::string href;               // or the one it refers to
-    std::vector<double> matrix;     // 16, row by row
-    std::optional<Vec3> reference;  // core:referencePoint
-  };
+  // The implicit geometry being read.
   std::optional<Implicit> implicit_;
   // Relative geometries by gml:id, as read (before any instance's transformation).
   std::unordered_map<std::string, std::vector<CitySurface>> prototypes_;

@@ -106,11 +106,12 @@ class Reader {
 
   // The document's (or a CityJSONSeq feature's) "appearance": its materials and
   // textures appended to the model, its texture coordinates kept for the surfaces,
-  // which index them from base_.
+  // which index them from material_base_ and texture_base_.
   void read_appearance(const json& document, CityModel& model) {
     const auto appearance = document.find("appearance");
     if (!options_.appearance.read || appearance == document.end()) return;
-    base_ = {model.materials.size(), model.textures.size()};
+    material_base_ = model.materials.size();
+    texture_base_ = model.textures.size();
     texture_vertices_.clear();
     if (!appearance->is_object()) fail("appearance", "expected an object with materials and textures");
     if (const auto materials = appearance->find("materials"); materials != appearance->end()) {
@@ -271,8 +272,8 @@ class Reader {
                     instance,
                     semantic_types(geometry, path),
                     &object,
-                    model.materials.size() - base_.materials,
-                    model.textures.size() - base_.textures};
+                    model.materials.size() - material_base_,
+                    model.textures.size() - texture_base_};
     const auto semantics = geometry.find("semantics");
     SurfaceValues values;
     if (semantics != geometry.end() && semantics->is_object() && semantics->contains("values"))
@@ -406,7 +407,7 @@ class Reader {
       if (!material->is_number_unsigned() || material->get<size_t>() >= count)
         fail(path, "material " + describe_json_value(*material) + " is not one of the file's " + std::to_string(count) +
                        " appearance materials");
-      out.material = static_cast<int>(base_.materials + material->get<size_t>());
+      out.material = static_cast<int>(material_base_ + material->get<size_t>());
     }
     for (size_t r = 0; r < surface.size(); ++r) {
       const std::string at = path + "[" + std::to_string(r) + "]";
@@ -446,7 +447,7 @@ class Reader {
           fail(at, "the texture values give " + std::to_string(values.size() - 1) + " coordinates for a ring of " +
                        std::to_string(uvs.size()) + " points");
         if (surface.texture == CitySurface::kNone)
-          surface.texture = static_cast<int>(base_.textures + values[0].get<size_t>());
+          surface.texture = static_cast<int>(texture_base_ + values[0].get<size_t>());
         for (size_t k = 0; k < uvs.size(); ++k) {
           const json& index = values[k + 1];
           if (!index.is_number_unsigned() || index.get<uint64_t>() >= texture_vertices_.size())
@@ -480,9 +481,8 @@ class Reader {
   std::array<double, 3> scale_{1, 1, 1}, translate_{0, 0, 0};
   bool quantised_ = false;
   std::vector<std::array<float, 2>> texture_vertices_;
-  struct {
-    size_t materials = 0, textures = 0;
-  } base_;  // where the current appearance's materials and textures begin in the model
+  // Where the current appearance's materials and textures begin in the model.
+  size_t material_base_ = 0, texture_base_ = 0;
   const json* templates_ = nullptr;
   VertexList template_vertices_;
 };
