@@ -88,7 +88,9 @@ int run_render(RenderArguments args) {
   std::optional<PixelLayers> layers;
   if (outputs_need_layers(args.outputs, scene)) {
     layers = trace_pixel_layers(renderer.prepared());
-    layers->illuminance_lx = surface_illuminance(renderer.prepared(), renderer.bands());
+    SurfaceIlluminance lux = surface_illuminance(renderer.prepared(), renderer.bands());
+    layers->illuminance_lx = std::move(lux.total_lx);
+    layers->reflected_sun_lx = std::move(lux.reflected_sun_lx);
   }
   std::size_t next = 0;
   for (const std::string& out : args.outputs)

@@ -27,6 +27,7 @@ ExrLayers exr_layers(const PixelLayers& layers, const Scene& scene) {
   out.channels.emplace_back("object", std::move(object));
   out.channels.emplace_back("distance", layers.distance_m);
   if (!layers.illuminance_lx.empty()) out.channels.emplace_back("illuminance", layers.illuminance_lx);
+  if (!layers.reflected_sun_lx.empty()) out.channels.emplace_back("reflected_sun", layers.reflected_sun_lx);
   const std::size_t n = layers.object.size();
   for (int c = 0; c < 3; ++c) {
     std::vector<float> component(n);

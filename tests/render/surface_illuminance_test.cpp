@@ -26,7 +26,7 @@ TEST(SurfaceIlluminance, OpenSunlitPlaneReadsDirectPlusSkyIntegral) {
     "render": {"width": 12, "height": 8}
   })"));
   const Renderer renderer(scene);
-  const std::vector<float> lux = surface_illuminance(renderer.prepared(), renderer.bands());
+  const std::vector<float> lux = surface_illuminance(renderer.prepared(), renderer.bands()).total_lx;
 
   const SkyModel& sky = renderer.sky();
   const double altitude = radians(35.0);

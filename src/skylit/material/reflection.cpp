@@ -110,6 +110,12 @@ double specular_lobe_radius(const Material& material) {
   return part ? 2 * beckmann_half_angle_at_1e3(part->roughness) : 0.0;
 }
 
+Reflectance specular_fresnel(const Material& material, double cos_view) {
+  const auto part = specular_part(material);
+  if (!part || !(cos_view > 0)) return Reflectance();
+  return Reflectance(part->fresnel->at(cos_view));
+}
+
 std::optional<Reflectance> mirror_reflectance(const Material& material, const Vec3& n, const Vec3& to_viewer) {
   const auto part = specular_part(material);
   if (!part || part->roughness >= kMirrorRoughness) return std::nullopt;

@@ -70,6 +70,12 @@ double specular_roughness(const Material& material);
 // mirror_direction(n, to_viewer). nullopt for other materials (and when n·v ≤ 0).
 std::optional<Reflectance> mirror_reflectance(const Material& material, const Vec3& n, const Vec3& to_viewer);
 
+// The specular part's Fresnel reflectance at the view cosine (a mirror's exactly; for a
+// glossy lobe, what it reflects of a smooth surrounding, short of the light its facets
+// shadow and mask); black for materials without one. For light that a facade mirrors
+// onto others (render/bands_integrator.h).
+Reflectance specular_fresnel(const Material& material, double cos_view);
+
 // The direction of perfect reflection of the view about n: 2 (n·v) n − v.
 inline Vec3 mirror_direction(const Vec3& n, const Vec3& to_viewer) { return 2 * dot(n, to_viewer) * n - to_viewer; }
 

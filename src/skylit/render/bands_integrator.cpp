@@ -12,6 +12,9 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   const auto obstacle = [this](const Ray& ray, const Hit& hit) { return obstacle_radiance(ray, hit); };
   sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle);
   sliver_sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kSliverDirections));
+  reflected_sun_ = std::make_unique<ReflectedSun>(
+      scene.scene(), scene.tracer(), to_sun_,
+      [this](const Vec3& position, const Vec3& normal) { return sun_reaching(SurfacePoint{position, normal, 0, 0}); });
 }
 
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {
@@ -68,21 +71,38 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
   return reaching;
 }
 
-Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) const {
-  const SurfacePoint point = scene_.surface_point(ray, hit);
+Radiance BandsIntegrator::lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer) const {
   const Irradiance irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
                                 sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   const PointMaterial material = scene_.material_at(point);
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
-  return lambertian_radiance(diffuse_albedo(material.get(), -dot(point.normal, ray.direction)), irradiance);
+  return lambertian_radiance(diffuse_albedo(material.get(), dot(point.normal, to_viewer)), irradiance);
+}
+
+Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) const {
+  const SurfacePoint point = scene_.surface_point(ray, hit);
+  const Vec3 to_viewer = -ray.direction;
+  Radiance radiance = lambertian_obstacle_radiance(point, to_viewer);
+  const Reflectance fresnel = specular_fresnel(scene_.material(point.material), dot(point.normal, to_viewer));
+  if (fresnel.is_black()) return radiance;
+  const Ray mirrored{offset_from_surface(point.position, point.normal), mirror_direction(point.normal, to_viewer)};
+  if (const std::optional<Hit> next = scene_.tracer().intersect(mirrored))
+    return radiance + fresnel * lambertian_obstacle_radiance(scene_.surface_point(mirrored, *next), -mirrored.direction);
+  return radiance + fresnel * sky_.sky_radiance_near_ground(mirrored.direction) * sky_share(point.position.z);
 }
 
 CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& sky_light, const SurfacePoint& point,
                                              const Vec3& to_viewer) const {
   const Material& material = material_of(point);
   return {sky_light.diffuse_irradiance(point.position, point.normal),
-          sky_light.specular_radiance(point.position, point.normal, to_viewer, material)};
+          sky_light.specular_radiance(point.position, point.normal, to_viewer, material),
+          reflected_sun_->from_rough(point.position, point.normal)};
+}
+
+Irradiance BandsIntegrator::reflected_sun(const SurfacePoint& point, const CachedSkyLight& cached) const {
+  if (!reflected_sun_->has_mirrors()) return cached.rough_reflected_sun;
+  return cached.rough_reflected_sun + reflected_sun_->from_mirrors(point.position, point.normal);
 }
 
 Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direction) const {
@@ -91,9 +111,9 @@ Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direct
   return sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction);
 }
 
-Irradiance BandsIntegrator::irradiance(const SurfacePoint& point, const Irradiance& sky_diffuse) const {
-  Irradiance e =
-      sky_diffuse * sky_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
+Irradiance BandsIntegrator::irradiance(const SurfacePoint& point, const CachedSkyLight& sky_light) const {
+  Irradiance e = sky_light.diffuse_irradiance * sky_share(point.position.z) +
+                 sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_)) + reflected_sun(point, sky_light);
   if (const SceneLamps* lamps = scene_.lamps()) e += lamps->irradiance_on(point);
   return e;
 }
@@ -105,9 +125,9 @@ Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const
   const Irradiance sun = sun_reaching(point);
   // Sky light, dimmed by any fog above the point.
   const Transmittance share = sky_share(point.position.z);
-  // Lambertian part: sky and sun irradiance.
-  const Irradiance irradiance =
-      sky_light.diffuse_irradiance * share + sun * static_cast<float>(dot(point.normal, to_sun_));
+  // Lambertian part: sky and sun irradiance, and the sun reflected by facades.
+  const Irradiance irradiance = sky_light.diffuse_irradiance * share +
+                                sun * static_cast<float>(dot(point.normal, to_sun_)) + reflected_sun(point, sky_light);
   Radiance radiance = lambertian_radiance(diffuse_albedo(material, dot(point.normal, to_viewer)), irradiance);
   // Glossy part: the sky's (cached) and the sun's highlight.
   radiance += sky_light.specular_radiance * share;

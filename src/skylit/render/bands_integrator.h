@@ -18,6 +18,7 @@
 #include "skylit/render/lamp_glow_image.h"
 #include "skylit/render/prepared_scene.h"
 #include "skylit/render/primary_hits.h"
+#include "skylit/render/reflected_sun.h"
 #include "skylit/render/surface_cache.h"
 #include "skylit/render/view_path.h"
 #include "skylit/sky/sky_light.h"
@@ -76,8 +77,8 @@ class BandsIntegrator {
   // The same, exactly: traced here, with nothing taken from caches.
   Radiance radiance(const Ray& ray) const { return radiance(ray, first_hit(ray), {}); }
 
-  // The sky's light at a surface point seen from `to_viewer`, exactly (what the
-  // surface cache holds).
+  // The sky's light at a surface point seen from `to_viewer`, exactly, and the sun
+  // reflected onto it by rough glossy facades (what the surface cache holds).
   CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const {
     return sky_light_at(*sky_light_, point, to_viewer);
   }
@@ -89,12 +90,20 @@ class BandsIntegrator {
   // by tests/render/sky_light_accuracy_test.cpp (docs/sky-light.md).
   static constexpr int kSliverDirections = 256;
 
+  // The sunlight that glass and metal facades reflect onto the surface at `point`
+  // (W m⁻² nm⁻¹, on the side its normal faces): the rough facades' from `cached`
+  // (sky_light_at or its cache), the mirrors' traced here.
+  Irradiance reflected_sun(const SurfacePoint& point, const CachedSkyLight& cached) const;
+
   const SkyLight& sky_light() const { return *sky_light_; }
+  // The glass and metal facet groups that reflect the sun onto other surfaces.
+  const ReflectedSun& facades() const { return *reflected_sun_; }
 
   // The irradiance (W m⁻² nm⁻¹) on the surface at `point`, on the side its normal faces:
-  // the sun if it reaches it, the sky's `sky_diffuse` (from sky_light_at or its cache)
-  // dimmed by fog and clouds above, and the lamps; what the Lambertian shading uses.
-  Irradiance irradiance(const SurfacePoint& point, const Irradiance& sky_diffuse) const;
+  // the sun if it reaches it, the sky's diffuse irradiance (from sky_light_at or its
+  // cache) dimmed by fog and clouds above, the sun reflected by facades, and the lamps;
+  // what the Lambertian shading uses.
+  Irradiance irradiance(const SurfacePoint& point, const CachedSkyLight& sky_light) const;
 
  private:
   const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
@@ -114,14 +123,19 @@ class BandsIntegrator {
   // or the sky and the sun.
   Radiance mirrored(const SurfacePoint& point, const Vec3& direction) const;
   // The light a hit obstacle sends back along `ray`, for the sky light's one bounce:
-  // its Lambertian part, lit by the sun and the unobstructed sky.
+  // its Lambertian part, lit by the sun and the unobstructed sky; and for glass and
+  // metal, the sky or the Lambertian obstacle it mirrors (its Fresnel reflectance times
+  // the light from the mirror direction: a glossy lobe's blur is left out, the sky being
+  // smooth; the sun it reflects is ReflectedSun's).
   Radiance obstacle_radiance(const Ray& ray, const Hit& hit) const;
+  Radiance lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer) const;
 
   const PreparedScene& scene_;
   const SkyModel& sky_;
   Vec3 to_sun_;
   std::unique_ptr<SkyLight> sky_light_;
   std::unique_ptr<SkyLight> sliver_sky_light_;  // kSliverDirections
+  std::unique_ptr<ReflectedSun> reflected_sun_;
 };
 
 }  // namespace skylit

@@ -51,12 +51,14 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
       const double w = std::max(dx ? tx : 1.0 - tx, 1e-3) * std::max(dy ? ty : 1.0 - ty, 1e-3);
       sum.diffuse_irradiance += e->value.diffuse_irradiance * static_cast<float>(w);
       sum.specular_radiance += e->value.specular_radiance * static_cast<float>(w);
+      sum.rough_reflected_sun += e->value.rough_reflected_sun * static_cast<float>(w);
       total += w;
     }
   }
   if (total <= 0) return std::nullopt;
   const float scale = static_cast<float>(1.0 / total);
-  return CachedSkyLight{sum.diffuse_irradiance * scale, sum.specular_radiance * scale};
+  return CachedSkyLight{sum.diffuse_irradiance * scale, sum.specular_radiance * scale,
+                        sum.rough_reflected_sun * scale};
 }
 
 std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, const SurfacePoint& point,

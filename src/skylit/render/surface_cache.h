@@ -21,10 +21,13 @@
 namespace skylit {
 
 // The sky's light at a surface point: its irradiance (for the Lambertian part) and the
-// radiance that the glossy part reflects toward the camera.
+// radiance that the glossy part reflects toward the camera; and the sunlight that rough
+// glossy facades reflect onto the point (render/reflected_sun.h), as smooth along a
+// surface as the sky light, since their lobes spread it over tens of degrees.
 struct CachedSkyLight {
   Irradiance diffuse_irradiance;
   Radiance specular_radiance;
+  Irradiance rough_reflected_sun{};
 };
 
 // Whether a cached point can stand in for `point`: the same material on the same plane

@@ -1,0 +1,166 @@
+// ReflectedSun (reflected_sun.h).
+#include "skylit/render/reflected_sun.h"
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "skylit/material/microfacet.h"
+#include "skylit/material/reflection.h"
+#include "skylit/material/reflection_sampling.h"
+
+namespace skylit {
+
+namespace {
+
+// Triangles are one plane when their unit normals agree to 1e-4 and their planes'
+// offsets to 1 mm: the tolerance of a model's coordinates, far below any facade's size.
+using PlaneKey = std::tuple<uint32_t, long long, long long, long long, long long>;
+
+PlaneKey plane_key(uint32_t material, Vec3 normal, double offset) {
+  return {material, std::llround(normal.x * 1e4), std::llround(normal.y * 1e4), std::llround(normal.z * 1e4),
+          std::llround(offset * 1e3)};
+}
+
+// One orientation per plane, whichever side the triangle was wound on.
+Vec3 canonical(const Vec3& n) {
+  constexpr double kEps = 1e-9;
+  const bool flip = n.z < -kEps || (std::abs(n.z) <= kEps && (n.y < -kEps || (std::abs(n.y) <= kEps && n.x < 0)));
+  return flip ? -n : n;
+}
+
+// Whether a ray can meet the box (slab test). The box of a flat facet is flat: it is
+// padded by 1 mm so the test stays robust.
+bool ray_meets_box(const Vec3& origin, const Vec3& direction, const BoundingBox& box) {
+  constexpr double kPadM = 1e-3;
+  double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    const double o = origin[axis], d = direction[axis];
+    const double lo = box.lo[axis] - kPadM, hi = box.hi[axis] + kPadM;
+    if (std::abs(d) < 1e-15) {
+      if (o < lo || o > hi) return false;
+      continue;
+    }
+    double a = (lo - o) / d, b = (hi - o) / d;
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+bool reflects_sun(const Material& material) {
+  return std::holds_alternative<CookTorranceMaterial>(material) || std::holds_alternative<GlassMaterial>(material);
+}
+
+}  // namespace
+
+ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Vec3& to_sun, SunAt sun_at)
+    : tracer_(tracer), to_sun_(to_sun), sun_at_(std::move(sun_at)) {
+  triangle_group_.resize(scene.objects.size());
+  if (to_sun_.z <= 0) return;  // the sun is down: nothing to reflect
+  std::map<PlaneKey, int32_t> group_of_plane;
+  std::vector<uint32_t> group_material;
+  for (size_t o = 0; o < scene.objects.size(); ++o) {
+    const SceneObject& object = scene.objects[o];
+    const TriangleMesh& mesh = object.mesh;
+    for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+      const uint32_t material = object.material_of(t);
+      if (!reflects_sun(scene.materials[material].material)) continue;
+      const auto& tri = mesh.triangles[t];
+      const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+      const Vec3 area_normal = cross(b - a, c - a);
+      const double twice_area = length(area_normal);
+      if (!(twice_area > 0)) continue;
+      const Vec3 n = canonical(area_normal / twice_area);
+      const PlaneKey key = plane_key(material, n, dot(n, a));
+      auto [it, added] = group_of_plane.try_emplace(key, static_cast<int32_t>(groups_.size()));
+      if (added) {
+        Group group;
+        group.normal = n;
+        group.offset = dot(n, a);
+        groups_.push_back(group);
+        group_material.push_back(material);
+      }
+      Group& group = groups_[static_cast<size_t>(it->second)];
+      for (const Vec3* v : {&a, &b, &c}) group.box.add(*v);
+      if (triangle_group_[o].empty()) triangle_group_[o].assign(mesh.triangles.size(), -1);
+      triangle_group_[o][t] = it->second;
+    }
+  }
+  // Each group reflects from the side the sun lights; the nodes follow from its material.
+  for (size_t g = 0; g < groups_.size(); ++g) {
+    Group& group = groups_[g];
+    if (dot(group.normal, to_sun_) < 0) {
+      group.normal = -group.normal;
+      group.offset = -group.offset;
+    }
+    add_nodes(group, scene.materials[group_material[g]].material);
+    has_mirrors_ = has_mirrors_ || (group.mirror && !group.nodes.empty());
+    has_rough_ = has_rough_ || (!group.mirror && !group.nodes.empty());
+  }
+}
+
+void ReflectedSun::add_nodes(Group& group, const Material& material) const {
+  const Vec3& n = group.normal;
+  const Vec3& s = to_sun_;
+  const double cos_sun = dot(n, s);
+  if (!(cos_sun > 1e-6)) return;  // the sun grazes the plane or lights its back
+  if (const std::optional<Reflectance> mirror = mirror_reflectance(material, n, s)) {
+    group.mirror = true;
+    group.nodes.push_back({-(2 * cos_sun * n - s), mirror->spectrum()});
+    return;
+  }
+  const double m = specular_roughness(material);
+  if (!(m > 0)) return;
+  Vec3 t, b;
+  orthonormal_frame(n, t, b);
+  constexpr int kNodes = kLobeRings * kLobeAzimuths;
+  for (int ring = 0; ring < kLobeRings; ++ring) {
+    // tan²θ_h = −m² ln(1 − u) draws θ_h with density D(h)(n·h) (Walter et al. 2007, §5.3);
+    // u at the middle of each ring's equal share.
+    const double u = (ring + 0.5) / kLobeRings;
+    const double tan2 = -m * m * std::log1p(-u);
+    const double cos_h = 1 / std::sqrt(1 + tan2), sin_h = std::sqrt(std::max(0.0, 1 - cos_h * cos_h));
+    for (int k = 0; k < kLobeAzimuths; ++k) {
+      // Alternate rings turned by half a step, so the nodes do not line up radially.
+      const double phi = 2 * kPi * (k + 0.5 * (ring % 2)) / kLobeAzimuths;
+      const Vec3 h = cos_h * n + sin_h * (std::cos(phi) * t + std::sin(phi) * b);
+      const double sun_half = dot(s, h);
+      if (!(sun_half > 0)) continue;
+      const Vec3 r = 2 * sun_half * h - s;
+      if (!(dot(n, r) > 0)) continue;
+      // The density of the reflected direction r: D(h)(n·h) / (4 s·h).
+      const double pdf = beckmann_distribution(cos_h, m) * cos_h / (4 * sun_half);
+      if (!(pdf > 0)) continue;
+      const Spectrum f_cos = specular_reflection(material, n, s, r).per_sr;
+      group.nodes.push_back({-r, f_cos * static_cast<float>(1.0 / (kNodes * pdf))});
+    }
+  }
+}
+
+Irradiance ReflectedSun::from(const Vec3& position, const Vec3& normal, bool mirrors) const {
+  Spectrum sum(0.0f);
+  const Vec3 origin = offset_from_surface(position, normal);
+  for (size_t g = 0; g < groups_.size(); ++g) {
+    const Group& group = groups_[g];
+    if (group.mirror != mirrors || group.nodes.empty()) continue;
+    // Only the lit side of the plane sees the group's reflection.
+    if (dot(group.normal, origin) - group.offset <= 0) continue;
+    for (const Node& node : group.nodes) {
+      const double cos_point = dot(normal, node.toward);
+      if (!(cos_point > 0) || !ray_meets_box(origin, node.toward, group.box)) continue;
+      const std::optional<Hit> hit = tracer_.intersect(Ray{origin, node.toward});
+      if (!hit) continue;
+      const std::vector<int32_t>& groups_of_mesh = triangle_group_[hit->mesh_id];
+      if (groups_of_mesh.empty() || groups_of_mesh[hit->triangle] != static_cast<int32_t>(g)) continue;
+      const Irradiance sun = sun_at_(origin + hit->t * node.toward, group.normal);
+      if (sun.is_black()) continue;
+      sum += node.weight * sun.spectrum() * static_cast<float>(cos_point);
+    }
+  }
+  return Irradiance(sum);
+}
+
+}  // namespace skylit

@@ -1,0 +1,82 @@
+// Sunlight that glass and metal facades reflect onto other surfaces, without noise
+// (docs/reflected-sun.md).
+//
+// The scene's specular triangles are merged into facet groups: the triangles of one
+// material that lie in one plane. The sun reflected by a group comes from its side that
+// faces the sun, in the directions its lobe sends the sun's direction s to. For a
+// mirror (glass, a polished metal) that is one direction: the image sun, s mirrored in
+// the plane, a second sun seen through the facet. A point P receives it when the ray
+// from P toward the image sun meets the group (exact visibility, triangle by triangle)
+// at a point Q that the sun reaches, and then gets
+//   E = R(θ_s) E_sun(Q) cos θ_P,
+// R the facet's spectral Fresnel reflectance at the sun's incidence. For a rough lobe
+// (Cook–Torrance, Beckmann slope m) the image sun is widened into the lobe: a fixed
+// set of nodes, stratified in the Beckmann distribution of half vectors (the midpoint
+// of equal shares of its cumulative distribution), each a direction ω_k with the weight
+// f_s(s, −ω_k)(n·s) / (N p(ω_k)), p the density those half vectors give the reflected
+// direction; P then sums the nodes whose rays meet the group where the sun reaches it:
+//   E = Σ_k w_k E_sun(Q_k) max(0, n_P·ω_k).
+// The nodes are the same for every point, so the result is deterministic and smooth.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "skylit/geometry/ray_tracer.h"
+#include "skylit/material/material.h"
+#include "skylit/render/surface_point.h"
+#include "skylit/scene/scene.h"
+#include "skylit/spectrum/radiometry.h"
+
+namespace skylit {
+
+// Rough lobes' quadrature: rings in the cumulative distribution of the half vector's
+// tilt times azimuths. docs/reflected-sun.md gives its error against a dense grid.
+inline constexpr int kLobeRings = 6, kLobeAzimuths = 12;
+
+class ReflectedSun {
+ public:
+  // The sun's direct normal irradiance at a point of a facet with this normal, 0 where
+  // the facet is in shadow (the renderer's own sun test).
+  using SunAt = std::function<Irradiance(const Vec3& position, const Vec3& normal)>;
+
+  // Finds the facet groups of `scene`'s objects (mesh ids = object indices in `tracer`)
+  // lit by the sun from direction `to_sun`.
+  ReflectedSun(const Scene& scene, const RayTracer& tracer, const Vec3& to_sun, SunAt sun_at);
+
+  // The reflected sun's irradiance on a surface point, on the side of its normal: from
+  // the mirror groups, or from the rough ones.
+  Irradiance from_mirrors(const Vec3& position, const Vec3& normal) const { return from(position, normal, true); }
+  Irradiance from_rough(const Vec3& position, const Vec3& normal) const { return from(position, normal, false); }
+
+  bool has_mirrors() const { return has_mirrors_; }
+  bool has_rough() const { return has_rough_; }
+  int group_count() const { return static_cast<int>(groups_.size()); }
+
+ private:
+  struct Node {
+    Vec3 toward;         // from the lit point toward the facet (unit)
+    Spectrum weight;     // what multiplies E_sun(Q) cos θ_P
+  };
+  struct Group {
+    Vec3 normal;         // on the side the sun lights
+    double offset = 0;   // normal · x on the plane
+    BoundingBox box;
+    bool mirror = false;
+    std::vector<Node> nodes;
+  };
+
+  Irradiance from(const Vec3& position, const Vec3& normal, bool mirrors) const;
+  void add_nodes(Group& group, const Material& material) const;
+
+  const RayTracer& tracer_;
+  Vec3 to_sun_;
+  SunAt sun_at_;
+  std::vector<Group> groups_;
+  // Per object, the group of each triangle (−1: none); empty for objects without any.
+  std::vector<std::vector<int32_t>> triangle_group_;
+  bool has_mirrors_ = false, has_rough_ = false;
+};
+
+}  // namespace skylit
