@@ -27,7 +27,8 @@ constexpr double kWallY = 10, kWallHalfWidth = 10, kWallHeight = 8;
 
 std::string wall_scene(const std::string& wall_material, const std::string& camera) {
   return R"({
-    "camera": )" + camera +
+    "camera": )" +
+         camera +
          R"(,
     "sun": {"altitude_deg": 30, "azimuth_deg": 160},
     "materials": {"grey": {"type": "diffuse", "reflectance": 0.3}, "wall": )" +
@@ -69,8 +70,7 @@ double expected_mirror_lux(const Renderer& renderer) {
   const Irradiance sun = renderer.sky().atmosphere().direct_sun_exact(0.5 * kWallHeight, radians(kAltitudeDeg));
   Spectrum reflected;
   for (int bin = 0; bin < kSpectralBins; ++bin)
-    reflected[bin] =
-        static_cast<float>(sun[bin] * fresnel_reflectance(cos_incidence, aluminium_ior().at(bin)) * s.z);
+    reflected[bin] = static_cast<float>(sun[bin] * fresnel_reflectance(cos_incidence, aluminium_ior().at(bin)) * s.z);
   return illuminance(Irradiance(reflected));
 }
 

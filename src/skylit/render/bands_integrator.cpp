@@ -12,9 +12,10 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   const auto obstacle = [this](const Ray& ray, const Hit& hit) { return obstacle_radiance(ray, hit); };
   sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle);
   sliver_sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kSliverDirections));
-  reflected_sun_ = std::make_unique<ReflectedSun>(
-      scene.scene(), scene.tracer(), to_sun_,
-      [this](const Vec3& position, const Vec3& normal) { return sun_reaching(SurfacePoint{position, normal, 0, 0}); });
+  reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
+                                                  [this](const Vec3& position, const Vec3& normal) {
+                                                    return sun_reaching(SurfacePoint{position, normal, 0, 0});
+                                                  });
 }
 
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {
@@ -88,7 +89,8 @@ Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) cons
   if (fresnel.is_black()) return radiance;
   const Ray mirrored{offset_from_surface(point.position, point.normal), mirror_direction(point.normal, to_viewer)};
   if (const std::optional<Hit> next = scene_.tracer().intersect(mirrored))
-    return radiance + fresnel * lambertian_obstacle_radiance(scene_.surface_point(mirrored, *next), -mirrored.direction);
+    return radiance +
+           fresnel * lambertian_obstacle_radiance(scene_.surface_point(mirrored, *next), -mirrored.direction);
   return radiance + fresnel * sky_.sky_radiance_near_ground(mirrored.direction) * sky_share(point.position.z);
 }
 

@@ -56,12 +56,12 @@ class ReflectedSun {
 
  private:
   struct Node {
-    Vec3 toward;         // from the lit point toward the facet (unit)
-    Spectrum weight;     // what multiplies E_sun(Q) cos θ_P
+    Vec3 toward;      // from the lit point toward the facet (unit)
+    Spectrum weight;  // what multiplies E_sun(Q) cos θ_P
   };
   struct Group {
-    Vec3 normal;         // on the side the sun lights
-    double offset = 0;   // normal · x on the plane
+    Vec3 normal;        // on the side the sun lights
+    double offset = 0;  // normal · x on the plane
     BoundingBox box;
     bool mirror = false;
     std::vector<Node> nodes;

@@ -57,8 +57,7 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
   }
   if (total <= 0) return std::nullopt;
   const float scale = static_cast<float>(1.0 / total);
-  return CachedSkyLight{sum.diffuse_irradiance * scale, sum.specular_radiance * scale,
-                        sum.rough_reflected_sun * scale};
+  return CachedSkyLight{sum.diffuse_irradiance * scale, sum.specular_radiance * scale, sum.rough_reflected_sun * scale};
 }
 
 std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, const SurfacePoint& point,
