@@ -43,6 +43,10 @@ heavy=(
   # the shards' file format (XyzFile) and the animation (AnimateCommand) run here.
   SplitRuns.ShardsMergeIntoTheSameSweepAndAnimation
   FogMultipleScattering.MatchesThePathTracedReferenceWhereTheFieldIsAzimuthallySymmetric
+  # path-traced comparisons of this session (fog's azimuthal terms, the reflected sun on
+  # Fig. 7): their code runs here through the closed-form tests of the same features.
+  FogMultipleScattering.FollowsTheSunInAzimuthWithTheDropletPhaseFunction
+  ReflectedSunFig7.AluminiumTowerAgainstThePathTracer
 )
 filter="-$(IFS=:; echo "${heavy[*]}")"
 
