@@ -233,6 +233,7 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
     if (m > 0 && !sun && !sky_has_term(m)) continue;
     // Term m of the phase function at the streams, the sun and the output directions.
     std::vector<std::vector<double>> p_node;
+    p_node.reserve(u.size());
     for (double us : u) p_node.push_back(associated_legendre(us, m, kStreamsAll));
     const std::vector<double> p_sun = associated_legendre(-std::max(mu0, 0.0), m, kStreamsAll);
     // The coupling ω'·2π·w_t·p'_m(u_s, u_t) (2π for every m: ∫cos m(φ−φ')·cos mφ' dφ' = π
