@@ -61,7 +61,8 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
   triangle_group_.resize(scene.objects.size());
   if (to_sun_.z <= 0) return;  // the sun is down: nothing to reflect
   std::map<PlaneKey, int32_t> group_of_plane;
-  std::vector<uint32_t> group_material;
+  std::map<PlaneKey, int32_t> class_of_orientation;
+  std::vector<uint32_t> class_material;
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const SceneObject& object = scene.objects[o];
     const TriangleMesh& mesh = object.mesh;
@@ -74,42 +75,49 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
       const double twice_area = length(area_normal);
       if (!(twice_area > 0)) continue;
       const Vec3 n = canonical(area_normal / twice_area);
-      const PlaneKey key = plane_key(material, n, dot(n, a));
-      auto [it, added] = group_of_plane.try_emplace(key, static_cast<int32_t>(groups_.size()));
-      if (added) {
-        Group group;
-        group.normal = n;
-        group.offset = dot(n, a);
-        groups_.push_back(group);
-        group_material.push_back(material);
+      const auto [group_it, new_group] =
+          group_of_plane.try_emplace(plane_key(material, n, dot(n, a)), static_cast<int32_t>(groups_.size()));
+      if (new_group) {
+        groups_.push_back({n, dot(n, a)});
+        const auto [class_it, new_class] =
+            class_of_orientation.try_emplace(plane_key(material, n, 0), static_cast<int32_t>(classes_.size()));
+        if (new_class) {
+          classes_.push_back({n, {}, false, {}});
+          class_material.push_back(material);
+        }
+        class_of_group_.push_back(class_it->second);
       }
-      Group& group = groups_[static_cast<size_t>(it->second)];
-      for (const Vec3* v : {&a, &b, &c}) group.box.add(*v);
+      OrientationClass& orientation = classes_[static_cast<size_t>(class_of_group_[group_it->second])];
+      for (const Vec3* v : {&a, &b, &c}) orientation.box.add(*v);
       if (triangle_group_[o].empty()) triangle_group_[o].assign(mesh.triangles.size(), -1);
-      triangle_group_[o][t] = it->second;
+      triangle_group_[o][t] = group_it->second;
     }
   }
-  // Each group reflects from the side the sun lights; the nodes follow from its material.
+  // Each plane reflects from the side the sun lights; a class's nodes follow from its
+  // material. The planes of a class share its normal to 1e-4, so they turn with it.
   for (size_t g = 0; g < groups_.size(); ++g) {
-    Group& group = groups_[g];
-    if (dot(group.normal, to_sun_) < 0) {
-      group.normal = -group.normal;
-      group.offset = -group.offset;
+    if (dot(classes_[static_cast<size_t>(class_of_group_[g])].normal, to_sun_) < 0) {
+      groups_[g].normal = -groups_[g].normal;
+      groups_[g].offset = -groups_[g].offset;
     }
-    add_nodes(group, scene.materials[group_material[g]].material);
-    has_mirrors_ = has_mirrors_ || (group.mirror && !group.nodes.empty());
-    has_rough_ = has_rough_ || (!group.mirror && !group.nodes.empty());
+  }
+  for (size_t c = 0; c < classes_.size(); ++c) {
+    OrientationClass& orientation = classes_[c];
+    if (dot(orientation.normal, to_sun_) < 0) orientation.normal = -orientation.normal;
+    add_nodes(orientation, scene.materials[class_material[c]].material);
+    has_mirrors_ = has_mirrors_ || (orientation.mirror && !orientation.nodes.empty());
+    has_rough_ = has_rough_ || (!orientation.mirror && !orientation.nodes.empty());
   }
 }
 
-void ReflectedSun::add_nodes(Group& group, const Material& material) const {
-  const Vec3& n = group.normal;
+void ReflectedSun::add_nodes(OrientationClass& orientation, const Material& material) const {
+  const Vec3& n = orientation.normal;
   const Vec3& s = to_sun_;
   const double cos_sun = dot(n, s);
   if (!(cos_sun > 1e-6)) return;  // the sun grazes the plane or lights its back
   if (const std::optional<Reflectance> mirror = mirror_reflectance(material, n, s)) {
-    group.mirror = true;
-    group.nodes.push_back({-(2 * cos_sun * n - s), mirror->spectrum()});
+    orientation.mirror = true;
+    orientation.nodes.push_back({-(2 * cos_sun * n - s), mirror->spectrum()});
     return;
   }
   const double m = specular_roughness(material);
@@ -135,7 +143,7 @@ void ReflectedSun::add_nodes(Group& group, const Material& material) const {
       const double pdf = beckmann_distribution(cos_h, m) * cos_h / (4 * sun_half);
       if (!(pdf > 0)) continue;
       const Spectrum f_cos = specular_reflection(material, n, s, r).per_sr;
-      group.nodes.push_back({-r, f_cos * static_cast<float>(1.0 / (kNodes * pdf))});
+      orientation.nodes.push_back({-r, f_cos * static_cast<float>(1.0 / (kNodes * pdf))});
     }
   }
 }
@@ -143,18 +151,21 @@ void ReflectedSun::add_nodes(Group& group, const Material& material) const {
 Irradiance ReflectedSun::from(const Vec3& position, const Vec3& normal, bool mirrors) const {
   Spectrum sum(0.0f);
   const Vec3 origin = offset_from_surface(position, normal);
-  for (size_t g = 0; g < groups_.size(); ++g) {
-    const Group& group = groups_[g];
-    if (group.mirror != mirrors || group.nodes.empty()) continue;
-    // Only the lit side of the plane sees the group's reflection.
-    if (dot(group.normal, origin) - group.offset <= 0) continue;
-    for (const Node& node : group.nodes) {
+  for (size_t c = 0; c < classes_.size(); ++c) {
+    const OrientationClass& orientation = classes_[c];
+    if (orientation.mirror != mirrors) continue;
+    for (const Node& node : orientation.nodes) {
       const double cos_point = dot(normal, node.toward);
-      if (!(cos_point > 0) || !ray_meets_box(origin, node.toward, group.box)) continue;
+      if (!(cos_point > 0) || !ray_meets_box(origin, node.toward, orientation.box)) continue;
       const std::optional<Hit> hit = tracer_.intersect(Ray{origin, node.toward});
       if (!hit) continue;
       const std::vector<int32_t>& groups_of_mesh = triangle_group_[hit->mesh_id];
-      if (groups_of_mesh.empty() || groups_of_mesh[hit->triangle] != static_cast<int32_t>(g)) continue;
+      if (groups_of_mesh.empty()) continue;
+      const int32_t g = groups_of_mesh[hit->triangle];
+      if (g < 0 || class_of_group_[static_cast<size_t>(g)] != static_cast<int32_t>(c)) continue;
+      // Only the lit side of the plane sees its reflection.
+      const Group& group = groups_[static_cast<size_t>(g)];
+      if (dot(group.normal, origin) - group.offset <= 0) continue;
       const Irradiance sun = sun_at_(origin + hit->t * node.toward, group.normal);
       if (sun.is_black()) continue;
       sum += node.weight * sun.spectrum() * static_cast<float>(cos_point);

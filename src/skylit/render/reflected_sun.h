@@ -16,6 +16,11 @@
 // f_s(s, −ω_k)(n·s) / (N p(ω_k)), p the density those half vectors give the reflected
 // direction; P then sums the nodes whose rays meet the group where the sun reaches it:
 //   E = Σ_k w_k E_sun(Q_k) max(0, n_P·ω_k).
+// The directions depend only on the plane's orientation and material, so the groups that
+// share both (the windows of one facade, or of a whole street's facades facing one way)
+// form one orientation class: a point sends one ray per node of each class, whichever of
+// the class's groups it meets, instead of one per group (a city of a thousand windows
+// in four orientations costs four rays a pixel, not a thousand).
 // The nodes are the same for every point, so the result is deterministic and smooth.
 #pragma once
 
@@ -62,18 +67,24 @@ class ReflectedSun {
   struct Group {
     Vec3 normal;        // on the side the sun lights
     double offset = 0;  // normal · x on the plane
+  };
+  // The groups of one material and orientation: the same nodes, one box around them all.
+  struct OrientationClass {
+    Vec3 normal;  // on the side the sun lights
     BoundingBox box;
     bool mirror = false;
     std::vector<Node> nodes;
   };
 
   Irradiance from(const Vec3& position, const Vec3& normal, bool mirrors) const;
-  void add_nodes(Group& group, const Material& material) const;
+  void add_nodes(OrientationClass& orientation, const Material& material) const;
 
   const RayTracer& tracer_;
   Vec3 to_sun_;
   SunAt sun_at_;
   std::vector<Group> groups_;
+  std::vector<OrientationClass> classes_;
+  std::vector<int32_t> class_of_group_;
   // Per object, the group of each triangle (−1: none); empty for objects without any.
   std::vector<std::vector<int32_t>> triangle_group_;
   bool has_mirrors_ = false, has_rough_ = false;
