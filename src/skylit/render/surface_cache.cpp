@@ -1,9 +1,13 @@
 #include "skylit/render/surface_cache.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
+
+#include "skylit/render/cache_corner_agreement.h"
+#include "skylit/spectrum/cie.h"
 
 namespace skylit {
 
@@ -37,16 +41,36 @@ void SurfaceCache::Grid::cell(double x, double y, int& gx, int& gy, double& tx, 
       y, grid_height_, [this](int g) { return pixel_y(g); }, gy, ty);
 }
 
-std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point) const {
+std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point,
+                                                              bool* refused) const {
   int gx, gy;
   double tx, ty;
   cell(x, y, gx, gy, tx, ty);
+  std::array<const Stored*, 4> corners{};
+  std::array<double, 4> corner_lx{};
+  size_t count = 0;
+  bool all_within_reach = true;
+  for (int dy = 0; dy <= 1; ++dy)
+    for (int dx = 0; dx <= 1; ++dx) {
+      const Stored* e = stored(std::min(gx + dx, grid_width_ - 1), std::min(gy + dy, grid_height_ - 1));
+      if (!e || !same_surface(e->point, point)) continue;
+      corners[static_cast<size_t>(2 * dy + dx)] = e;
+      corner_lx[count++] = e->diffuse_lx;
+      all_within_reach = all_within_reach && within_reach(e->point, point);
+    }
+  // Corners whose sky light disagrees lie across a change the cell cannot follow. Fewer
+  // than four corners on the surface cannot show how it changes across the cell, so
+  // they must also lie near the point.
+  const bool disagree = count > 0 && (!(count == 4 || all_within_reach) ||
+                                      !corners_agree(std::span<const double>(corner_lx.data(), count)));
+  if (refused) *refused = disagree;
+  if (disagree) return std::nullopt;
   CachedSkyLight sum;
   double total = 0;
   for (int dy = 0; dy <= 1; ++dy) {
     for (int dx = 0; dx <= 1; ++dx) {
-      const Stored* e = stored(std::min(gx + dx, grid_width_ - 1), std::min(gy + dy, grid_height_ - 1));
-      if (!e || !same_surface(e->point, point)) continue;
+      const Stored* e = corners[static_cast<size_t>(2 * dy + dx)];
+      if (!e) continue;
       // Bilinear weights, kept off zero so that a lone compatible corner still counts.
       const double w = std::max(dx ? tx : 1.0 - tx, 1e-3) * std::max(dy ? ty : 1.0 - ty, 1e-3);
       sum.diffuse_irradiance += e->value.diffuse_irradiance * static_cast<float>(w);
@@ -70,7 +94,7 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, co
   for (int cy = std::max(0, gy - cells + 1); cy <= std::min(grid_height_ - 1, gy + cells); ++cy) {
     for (int cx = std::max(0, gx - cells + 1); cx <= std::min(grid_width_ - 1, gx + cells); ++cx) {
       const Stored* e = stored(cx, cy);
-      if (!e || !same_surface(e->point, point)) continue;
+      if (!e || !same_surface(e->point, point) || !within_reach(e->point, point)) continue;
       const double d = std::hypot(pixel_x(cx) + 0.5 - x, pixel_y(cy) + 0.5 - y);
       if (!best || d < best_distance) {  // ties keep the first in scan order: deterministic
         best = e;
@@ -94,7 +118,10 @@ void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& 
         stored_.push_back({*p, {}});
       }
     }
-  tbb::parallel_for(size_t{0}, stored_.size(), [&](size_t i) { stored_[i].value = compute(stored_[i].point); });
+  tbb::parallel_for(size_t{0}, stored_.size(), [&](size_t i) {
+    stored_[i].value = compute(stored_[i].point);
+    stored_[i].diffuse_lx = illuminance(stored_[i].value.diffuse_irradiance);
+  });
 }
 
 namespace {
@@ -135,18 +162,25 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute)
     }
   fine_.compute_wanted(hits, compute);
   // The centres of the pixels that neither grid covers.
-  const auto not_by_grids = uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) {
-    return coarse_.interpolate(x, y, p) || fine_.interpolate(x, y, p) || fine_.nearest(x, y, p, 2);
-  });
+  const auto not_by_grids = uncovered_pixels(
+      hits, [&](double x, double y, const SurfacePoint& p) { return from_grids(x, y, p).has_value(); });
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y]) pixel_.want(x, static_cast<int>(y));
   pixel_.compute_wanted(hits, compute);
 }
 
-std::optional<CachedSkyLight> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {
+std::optional<CachedSkyLight> SurfaceCache::from_grids(double x, double y, const SurfacePoint& point) const {
   if (auto value = coarse_.interpolate(x, y, point)) return value;
-  if (auto value = fine_.interpolate(x, y, point)) return value;
-  if (auto value = fine_.nearest(x, y, point, 2)) return value;
+  bool refused = false;
+  if (auto value = fine_.interpolate(x, y, point, &refused)) return value;
+  // A sliver of a surface takes a neighbour's value; a point whose corners disagree
+  // lies where the sky light changes fast, and gets its pixel's own.
+  if (refused) return std::nullopt;
+  return fine_.nearest(x, y, point, 2);
+}
+
+std::optional<CachedSkyLight> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {
+  if (auto value = from_grids(x, y, point)) return value;
   if (auto value = pixel_.interpolate(x, y, point)) return value;
   return pixel_.nearest(x, y, point, 2);
 }

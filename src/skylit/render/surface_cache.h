@@ -68,7 +68,11 @@ class SurfaceCache {
     int pixel_y(int gy) const { return std::min(gy * spacing_, height_ - 1); }
     // The cell containing image position (x, y) and the position's place in it.
     void cell(double x, double y, int& gx, int& gy, double& tx, double& ty) const;
-    std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point) const;
+    // Bilinear from the cell's corners on the same surface, if their sky light agrees
+    // (render/cache_corner_agreement.h); `refused` says whether there were such corners
+    // but they disagreed (the point then needs a finer level, not a neighbour's value).
+    std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point,
+                                              bool* refused = nullptr) const;
     // The value of the nearest grid point (on screen) within `cells` cells that lies on
     // the same surface: for slivers of a surface next to an edge, which no corner of
     // their own cell sees.
@@ -85,6 +89,7 @@ class SurfaceCache {
     struct Stored {
       SurfacePoint point;
       CachedSkyLight value;
+      double diffuse_lx = 0;  // the value's diffuse illuminance, for corners_agree
     };
     size_t index(int gx, int gy) const { return static_cast<size_t>(gy) * grid_width_ + gx; }
     const Stored* stored(int gx, int gy) const {
@@ -95,6 +100,10 @@ class SurfaceCache {
     std::vector<int32_t> slots_;
     std::vector<Stored> stored_;
   };
+
+  // From the coarse grid or else the fine one (interpolate's first levels); what the
+  // constructor computes the pixel centres for where it finds none.
+  std::optional<CachedSkyLight> from_grids(double x, double y, const SurfacePoint& point) const;
 
   Grid coarse_, fine_, pixel_;
 };

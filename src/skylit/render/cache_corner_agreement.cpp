@@ -1,0 +1,18 @@
+// corners_agree (cache_corner_agreement.h).
+#include "skylit/render/cache_corner_agreement.h"
+
+#include <algorithm>
+
+namespace skylit {
+
+bool within_reach(const SurfacePoint& cached, const SurfacePoint& point) {
+  return length(cached.position - point.position) <= kCornerReach * point.distance;
+}
+
+bool corners_agree(std::span<const double> corner_illuminance_lx) {
+  if (corner_illuminance_lx.empty()) return true;
+  const auto [low, high] = std::minmax_element(corner_illuminance_lx.begin(), corner_illuminance_lx.end());
+  return *high - *low <= kCornerSpread * *high;
+}
+
+}  // namespace skylit
