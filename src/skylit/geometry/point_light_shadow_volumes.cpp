@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "skylit/core/angles.h"
@@ -13,8 +14,8 @@ namespace skylit {
 
 namespace {
 
-// The frusta are tested in groups of at most this many, each behind a cone.
-constexpr size_t kFrustaPerGroup = 4;
+// The hierarchy's leaves hold at most this many frusta.
+constexpr uint32_t kFrustaPerLeaf = 4;
 
 // The frustum behind triangle (p, q, r) seen from a point light at `light`, or false if
 // it has no volume (degenerate, or edge-on to the light). Same face order as a prism:
@@ -57,46 +58,117 @@ bool outside_cone(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& apex,
 
 }  // namespace
 
+// A casting triangle's frustum with the bounding sphere of its corners.
+struct PointLightShadowVolumes::Caster {
+  ShadowVolume frustum;
+  Vec3 centre;
+  double radius;
+  Vec3 direction;  // unit, from the light toward the centre (ordering only)
+  double top_z;    // the highest corner's z when the light is above every corner, else +∞
+};
+
 PointLightShadowVolumes::PointLightShadowVolumes(const std::vector<const TriangleMesh*>& meshes, const Vec3& light,
-                                                 const Vec3& aim, double max_gamma_deg)
+                                                 const Vec3& aim, double max_gamma_deg, double reach_m)
     : light_(light) {
   if (!is_finite(light)) throw std::invalid_argument("PointLightShadowVolumes: the light's position must be finite");
   scale_ = std::max(1.0, max_abs(light));
+  std::vector<Caster> casters;
   for (size_t id = 0; id < meshes.size(); ++id) {
     const TriangleMesh& mesh = checked_mesh(meshes, id, "PointLightShadowVolumes");
     if (mesh.triangles.empty()) continue;
     // A closed surface is left through triangles facing the light, as for the sun.
     const int keep = casting_side(mesh);
-    std::vector<Vec3> corners;  // of the group being filled
-    auto close_group = [&] {
-      const uint32_t begin = groups_.empty() ? 0 : groups_.back().end;
-      const uint32_t end = static_cast<uint32_t>(frusta_.size());
-      if (end == begin) return;
-      Vec3 centre{0, 0, 0};
-      for (const Vec3& c : corners) centre += c;
-      centre = centre / static_cast<double>(corners.size());
-      double radius = 0;
-      for (const Vec3& c : corners) radius = std::max(radius, length(c - centre));
-      const double distance = length(centre - light);
-      // Padded so that rounding never drops a frustum the exact clip would keep.
-      radius = radius * (1 + 1e-9) + kRelativeShadowBoundPadding * scale_;
-      groups_.push_back({distance > radius ? (centre - light) / distance : Vec3{0, 0, 1},
-                         distance > radius ? radius / distance : 2.0, begin, end});
-      corners.clear();
-    };
     for (const auto& t : mesh.triangles) {
       const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
       if (keep != 0 && !(keep * dot(cross(q - p, r - p), light - p) > 0)) continue;
       if (outside_cone(p, q, r, light, aim, max_gamma_deg)) continue;
-      ShadowVolume frustum;
-      if (!make_frustum(p, q, r, light, frustum)) continue;
-      frusta_.push_back(frustum);
-      corners.insert(corners.end(), {p, q, r});
+      const Vec3 centre = (p + q + r) / 3.0;
+      const double radius = std::max({length(p - centre), length(q - centre), length(r - centre)});
+      const double distance = length(centre - light);
+      if (distance - radius > reach_m) continue;
+      // Lit from above, the frustum runs down from the triangle: nothing in it is higher
+      // than its highest corner.
+      const double top = std::max({p.z, q.z, r.z});
+      Caster caster{{},
+                    centre,
+                    radius,
+                    distance > 0 ? (centre - light) / distance : Vec3{0, 0, 1},
+                    top < light.z ? top : std::numeric_limits<double>::infinity()};
+      if (!make_frustum(p, q, r, light, caster.frustum)) continue;
+      casters.push_back(caster);
       scale_ = std::max({scale_, max_abs(p), max_abs(q), max_abs(r)});
-      if (corners.size() >= 3 * kFrustaPerGroup) close_group();
     }
-    close_group();
   }
+  if (casters.empty()) return;
+  nodes_.reserve(2 * casters.size() / kFrustaPerLeaf + 1);
+  build(casters, 0, static_cast<uint32_t>(casters.size()));
+  frusta_.reserve(casters.size());
+  for (const Caster& caster : casters) frusta_.push_back(caster.frustum);
+}
+
+uint32_t PointLightShadowVolumes::build(std::vector<Caster>& casters, uint32_t begin, uint32_t end) {
+  // The node's bounding sphere: around the mean of its casters' centres.
+  Vec3 centre{0, 0, 0};
+  double top_z = -std::numeric_limits<double>::infinity();
+  double lo[3] = {2, 2, 2}, hi[3] = {-2, -2, -2};  // the directions' bounding box
+  for (uint32_t i = begin; i < end; ++i) {
+    centre += casters[i].centre;
+    top_z = std::max(top_z, casters[i].top_z);
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], casters[i].direction[k]);
+      hi[k] = std::max(hi[k], casters[i].direction[k]);
+    }
+  }
+  centre = centre / static_cast<double>(end - begin);
+  double radius = 0;
+  for (uint32_t i = begin; i < end; ++i)
+    radius = std::max(radius, length(casters[i].centre - centre) + casters[i].radius);
+  const double distance = length(centre - light_);
+  // Padded so that rounding never drops a frustum the exact clip would keep.
+  radius = radius * (1 + 1e-9) + kRelativeShadowBoundPadding * scale_;
+  Node node{Vec3{0, 0, 1}, 2.0, 0.0, 0.0, top_z + kRelativeShadowBoundPadding * scale_, begin, end, 0};
+  if (distance > radius) {
+    node.axis = (centre - light_) / distance;
+    node.sin_half = radius / distance;
+    node.cos_half = std::sqrt(std::max(0.0, 1 - node.sin_half * node.sin_half));
+    node.nearest_m = distance - radius;
+  }
+  const uint32_t index = static_cast<uint32_t>(nodes_.size());
+  nodes_.push_back(node);
+  if (end - begin <= kFrustaPerLeaf) return index;
+  // Split at the median along the widest spread of the casters' directions, so that
+  // children see narrow cones.
+  const double spread[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+  const int axis = spread[0] >= spread[1] && spread[0] >= spread[2] ? 0 : (spread[1] >= spread[2] ? 1 : 2);
+  const uint32_t middle = begin + (end - begin) / 2;
+  std::nth_element(casters.begin() + begin, casters.begin() + middle, casters.begin() + end,
+                   [axis](const Caster& a, const Caster& b) { return a.direction[axis] < b.direction[axis]; });
+  build(casters, begin, middle);
+  const uint32_t second = build(casters, middle, end);
+  nodes_[index].second = second;
+  return index;
+}
+
+bool PointLightShadowVolumes::may_meet(const Node& node, const Vec3& plane_normal, double plane_normal_length,
+                                       const Vec3& near, const Vec3& far, double far_distance, double lowest_z) const {
+  // The piece passes above every frustum (ground surfaces under a lamp).
+  if (lowest_z > node.top_z) return false;
+  if (!(node.sin_half < 1)) return true;
+  // Every point of the piece is nearer to the light than the node's casters.
+  if (far_distance < node.nearest_m) return false;
+  if (!(plane_normal_length > 0)) return true;
+  // The plane of the view ray and the light misses the cone.
+  const double off_plane = dot(node.axis, plane_normal);
+  if (std::abs(off_plane) > node.sin_half * plane_normal_length) return false;
+  // The cone meets the plane but perhaps not the arc of the piece's directions: when the
+  // axis's projection lies outside the arc's wedge (by more than rounding), the arc's
+  // nearest direction to the axis is an end's.
+  const double near_length = length(near), far_length = length(far);
+  const bool outside_wedge = dot(cross(near, node.axis), plane_normal) < -1e-9 * near_length * plane_normal_length ||
+                             dot(cross(node.axis, far), plane_normal) < -1e-9 * far_length * plane_normal_length;
+  if (!outside_wedge) return true;
+  const double cos_margin = node.cos_half - 1e-9;
+  return dot(node.axis, near) >= cos_margin * near_length || dot(node.axis, far) >= cos_margin * far_length;
 }
 
 std::vector<Interval> PointLightShadowVolumes::lit_intervals(const Ray& ray, double t_min, double t_max) const {
@@ -108,17 +180,36 @@ std::vector<Interval> PointLightShadowVolumes::lit_intervals(const Ray& ray, dou
 void PointLightShadowVolumes::lit_intervals(const Ray& ray, double t_min, double t_max,
                                             std::vector<Interval>& out) const {
   auto collect_shadows = [&](const Vec3& o, const Vec3& dir, std::vector<Interval>& shadows) {
-    // The view ray and the light span a plane; a group's cone that the plane misses
-    // (its axis further than the cone's half-angle from the plane) holds no frustum the
-    // ray can meet.
-    const Vec3 normal = cross(o - light_, dir);
-    const double normal_length = length(normal);
-    for (const Group& g : groups_) {
-      if (g.sin_half < 1 && normal_length > 0 && std::abs(dot(g.axis, normal)) > g.sin_half * normal_length) continue;
-      for (uint32_t i = g.begin; i < g.end; ++i) {
-        double lo = t_min, hi = t_max;
-        if (clip_to_volume(frusta_[i], o, dir, lo, hi)) shadows.push_back({lo, hi});
+    // The piece's ends seen from the light, and the normal of the plane the view ray and
+    // the light span (oriented from `near` toward `far`).
+    // With no finite start, or a piece (nearly) in line with the light, whose plane
+    // rounding would tilt, every node is visited.
+    const bool bounded = std::isfinite(t_max);
+    const Vec3 near = std::isfinite(t_min) ? o + dir * t_min - light_ : Vec3{0, 0, 0};
+    const Vec3 far = bounded ? o + dir * t_max - light_ : dir;
+    // The piece's farthest point from the light is an end (distance is convex along it).
+    const double far_distance =
+        bounded && std::isfinite(t_min) ? std::max(length(near), length(far)) : std::numeric_limits<double>::infinity();
+    const Vec3 normal = cross(near, far);
+    double normal_length = length(normal);
+    if (!(normal_length > 1e-9 * length(near) * length(far))) normal_length = 0;
+    const double lowest_z =
+        bounded && std::isfinite(t_min) ? light_.z + std::min(near.z, far.z) : -std::numeric_limits<double>::infinity();
+    uint32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[stack[--top]];
+      if (!may_meet(node, normal, normal_length, near, far, far_distance, lowest_z)) continue;
+      if (node.second == 0) {
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+          double lo = t_min, hi = t_max;
+          if (clip_to_volume(frusta_[i], o, dir, lo, hi)) shadows.push_back({lo, hi});
+        }
+        continue;
       }
+      stack[top++] = node.second;
+      stack[top++] = static_cast<uint32_t>(&node - nodes_.data()) + 1;
     }
   };
   lit_intervals_from_shadows(ray, t_min, t_max, scale_, frusta_.empty(), collect_shadows, out);

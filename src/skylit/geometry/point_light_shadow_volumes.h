@@ -4,14 +4,17 @@
 // shows exact beams and shadows without sampling noise.
 //
 // Each casting triangle's volume is the frustum bounded by the three planes through the
-// light and its edges and by its own plane. A BVH like the sun's needs a single
-// direction of light; here the frusta are tested in small groups, each behind a cone
-// from the light around the group's bounding sphere (night scenes have few casting
-// triangles per lamp). docs/geometry.md, "Shadow volumes".
+// light and its edges and by its own plane. The frusta sit in a hierarchy of cones from
+// the light (each around the bounding sphere of its triangles, and no nearer to the
+// light than that sphere): a view ray's piece is checked against a cone by the arc of
+// directions under which the light sees the piece, and by its farthest point from the
+// light, so a query visits the few frusta near the piece rather than all of them (a
+// city block gives a lamp tens of thousands). docs/geometry.md, "Shadow volumes".
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "skylit/core/vec3.h"
@@ -29,8 +32,11 @@ class PointLightShadowVolumes {
   // Triangles wholly outside that cone cast no volume: their shadow lies where the
   // light does not go. Which triangles cast, and the checks on the meshes, are as for
   // SunShadowVolumes (std::invalid_argument for a non-finite light or bad mesh).
+  // Triangles wholly farther than `reach_m` from the light cast no volume either: their
+  // shadows lie beyond it, where the caller takes the light as unshadowed or absent.
   PointLightShadowVolumes(const std::vector<const TriangleMesh*>& meshes, const Vec3& light,
-                          const Vec3& aim = {0, 0, -1}, double max_gamma_deg = 180);
+                          const Vec3& aim = {0, 0, -1}, double max_gamma_deg = 180,
+                          double reach_m = std::numeric_limits<double>::infinity());
 
   // The parts of origin + t direction, t in [t_min, t_max], in no shadow volume of the
   // light (lit if the light shines there), with the conventions of
@@ -43,17 +49,30 @@ class PointLightShadowVolumes {
   size_t volume_count() const { return frusta_.size(); }
 
  private:
-  // Frusta [begin, end), all inside a cone from the light.
-  struct Group {
-    Vec3 axis;        // unit, from the light toward the group's bounding sphere
-    double sin_half;  // of the cone's half-angle; ≥ 1: the light is inside the sphere
-    uint32_t begin, end;
+  // A node of the hierarchy: its frusta all lie inside a cone from the light, no nearer
+  // to it than `nearest_m`. A leaf holds frusta [begin, end); an inner node's children
+  // are the next node and node `second`.
+  struct Node {
+    Vec3 axis;                  // unit, from the light toward the node's bounding sphere
+    double sin_half, cos_half;  // of the cone's half-angle; sin_half ≥ 1: the light is inside the sphere
+    double nearest_m;           // from the light to the sphere
+    double top_z;               // no frustum rises above it (+∞ unless the light is above all corners)
+    uint32_t begin, end;        // leaves: the frusta
+    uint32_t second;            // inner nodes: the second child (0 on leaves)
   };
+  struct Caster;
+  uint32_t build(std::vector<Caster>& casters, uint32_t begin, uint32_t end);
+  // Whether the piece of o + t·dir between `near` and `far` (its ends less the light;
+  // `far` a direction only when the piece is unbounded; `far_distance` the piece's
+  // largest distance from the light, `lowest_z` its lowest height) may meet the node's
+  // frusta.
+  bool may_meet(const Node& node, const Vec3& plane_normal, double plane_normal_length, const Vec3& near,
+                const Vec3& far, double far_distance, double lowest_z) const;
 
   Vec3 light_;
   double scale_ = 1;                  // largest coordinate magnitude of the light and the casting triangles, >= 1 m
-  std::vector<ShadowVolume> frusta_;  // in mesh order
-  std::vector<Group> groups_;
+  std::vector<ShadowVolume> frusta_;  // in the hierarchy's order
+  std::vector<Node> nodes_;           // depth first; the root first
 };
 
 }  // namespace skylit

@@ -14,8 +14,9 @@ SceneLamps::SceneLamps(const std::vector<SceneLight>& lights, const RayTracer& t
   for (const SceneLight& light : lights) {
     Lamp lamp{&light, std::make_unique<IntensityMap>(light.luminaire), nullptr, nullptr};
     if (fog) {
-      lamp.volumes = std::make_unique<PointLightShadowVolumes>(
-          meshes, light.luminaire.position(), light.luminaire.aim(), light.luminaire.distribution().max_gamma_deg());
+      lamp.volumes =
+          std::make_unique<PointLightShadowVolumes>(meshes, light.luminaire.position(), light.luminaire.aim(),
+                                                    light.luminaire.distribution().max_gamma_deg(), kLampReachM);
       lamp.glow = std::make_unique<LampInScatter>(*fog, light.luminaire, light.spectrum_per_candela, lamp.map.get());
     }
     lamps_.push_back(std::move(lamp));
@@ -115,10 +116,23 @@ Radiance SceneLamps::in_scattered(const Ray& ray, double distance) const {
   if (span.empty()) return sum;
   thread_local std::vector<Interval> lit, emitting;  // reused: no allocation per ray
   for (const Lamp& lamp : lamps_) {
-    // Shadows only where the lamp shines at all (a headlight's cone is narrow).
+    // Shadows only where the lamp shines at all (a headlight's cone is narrow), and
+    // within its reach; beyond it the light is counted unshadowed.
     lamp.glow->emitting_intervals(ray, span.lo, span.hi, emitting);
     if (emitting.empty()) continue;
-    lamp.volumes->lit_intervals(ray, emitting.front().begin, emitting.back().end, lit);
+    const double begin = emitting.front().begin, end = emitting.back().end;
+    const Vec3 to_lamp = lamp.light->luminaire.position() - ray.origin;
+    const double foot = dot(to_lamp, ray.direction);  // the ray's direction is unit
+    const double off2 = std::max(0.0, dot(to_lamp, to_lamp) - foot * foot);
+    const double half_chord = std::sqrt(std::max(0.0, kLampReachM * kLampReachM - off2));
+    const double near = std::max(begin, foot - half_chord), far = std::min(end, foot + half_chord);
+    if (off2 >= kLampReachM * kLampReachM || !(near < far)) {
+      lit.assign(1, {begin, end});
+    } else {
+      lamp.volumes->lit_intervals(ray, near, far, lit);
+      if (begin < near) lit.insert(lit.begin(), {begin, near});
+      if (far < end) lit.push_back({far, end});
+    }
     if (!lit.empty()) sum += Radiance(lamp.glow->along(ray, lit, emitting));
   }
   return sum;

@@ -11,6 +11,7 @@
 // tens of metres (< 1 %); lamp light reflected twice.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,18 @@ namespace skylit {
 // Lamps whose unshadowed light reflected from a point adds up to less than this share of
 // the light already found there get no occlusion ray: they are counted as unshadowed.
 inline constexpr double kUntestedShare = 0.01;
+
+// A lamp's reach in the fog's glow: beyond it the lamp's light, even at its peak
+// intensity and with no fog to dim it, is under kReachShare of what it gives at
+// kReachReferenceM (a street's scale: a mounting height, half a spacing), as
+// I/R² = kReachShare · I/(kReachReferenceM)². There the glow's shadows are not
+// looked for (the light is counted unshadowed), so the light the fog scatters per
+// metre at any point the shadows may miss is under 1 % of what the same lamp makes
+// it scatter, at the same angle, 10 m away. Shadows are what cost: the frusta of a
+// city block's triangles beyond the reach are not built or visited.
+inline constexpr double kReachShare = 0.01;
+inline constexpr double kReachReferenceM = 10;
+inline const double kLampReachM = kReachReferenceM / std::sqrt(kReachShare);
 
 class SceneLamps {
  public:
