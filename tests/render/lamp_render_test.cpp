@@ -169,5 +169,67 @@ TEST(LampRender, LampSeenDirectlyLightsItsPixel) {
   EXPECT_LT(image.at(15, 16).y * solid_angle, 1e-3 * expected);  // only that pixel
 }
 
+namespace reach {
+
+// Homogeneous fog (σ = 0.01 m⁻¹, isotropic phase) around an isotropic 1000 cd lamp at
+// (0, 0, 10), with a board x ∈ [−3, 3] whose near face is at y = y_board; the board's
+// shadow on a horizontal view ray from (30, y_ray, 10) toward −x is |x| < 3 y_ray/y_board.
+constexpr double kSigma = 0.01, kCandela = 1000.0, kPhase = 1 / (4 * kPi);
+
+Scene fog_scene(double y_board) {
+  Scene scene = night_scene();
+  scene.objects.clear();
+  scene.objects.push_back({"ground", make_ground_plane({0, 0, -100}, 4000), 0});
+  if (y_board > 0) scene.objects.push_back({"board", make_box({-3, y_board, -50}, {3, y_board + 1, 60}), 0});
+  scene.lights[0] = {"lamp", Luminaire({0, 0, 10}, IntensityDistribution::isotropic(kCandela)),
+                     scene.lights[0].spectrum_per_candela};
+  FogSettings fog;
+  fog.density_at_ground = 1.0;
+  fog.unit_density_extinction_per_m = kSigma;
+  fog.scale_height_m = std::numeric_limits<double>::infinity();
+  fog.bottom_altitude_m = -50;
+  fog.top_altitude_m = 1000;
+  fog.phase = FogPhase::henyey_greenstein;
+  fog.asymmetry = 0;
+  scene.fog = fog;
+  return scene;
+}
+
+// The glow the board's shadow takes from the ray (single scattering, by quadrature).
+double shadow_loss(double y_ray, double y_board) {
+  const double half = 3 * y_ray / y_board;
+  return testing::integrate(
+      [&](double x) {
+        const double r2 = x * x + y_ray * y_ray;
+        return kSigma * kCandela * kPhase * std::exp(-kSigma * (std::sqrt(r2) + 30 - x)) / r2;
+      },
+      -half, half, 1e-12);
+}
+
+double glow(double y_ray, double y_board) {
+  const Scene scene = fog_scene(y_board);
+  return luminance(Renderer(scene).radiance(Ray{{30, y_ray, 10}, {-1, 0, 0}}));
+}
+
+}  // namespace reach
+
+TEST(LampRender, GlowShadowsAreExactWithinTheReachAndBoundedBeyondIt) {
+  // Within kLampReachM (100 m) the board's shadow takes from the glow what the
+  // quadrature says (tolerance 1e-3 of the glow: the glow's own quadrature, 3e-4).
+  ASSERT_NEAR(kLampReachM, 100.0, 1e-9);
+  const double open_near = reach::glow(40, 0), shadowed_near = reach::glow(40, 20);
+  EXPECT_NEAR(open_near - shadowed_near, reach::shadow_loss(40, 20), 1e-3 * open_near);
+  // Beyond it (the ray 105 m off) the shadow is not looked for: the glow is the
+  // unshadowed one, too bright by the shadow's share, which is positive and, with the
+  // lamp's light there under kReachShare of its light at 10 m, below kReachShare times
+  // what the same shadowed length of ray would scatter 10 m from the lamp.
+  const double open_far = reach::glow(105, 0), shadowed_far = reach::glow(105, 60);
+  EXPECT_NEAR(shadowed_far, open_far, 1e-9 * open_far);
+  const double dropped = reach::shadow_loss(105, 60), shadow_length = 2 * 3 * 105 / 60.0;
+  EXPECT_GT(dropped, 0.01 * open_far);  // the case does test a shadow that matters
+  EXPECT_LT(dropped, kReachShare * reach::kSigma * reach::kCandela * reach::kPhase /
+                         (kReachReferenceM * kReachReferenceM) * shadow_length);
+}
+
 }  // namespace
 }  // namespace skylit

@@ -129,9 +129,21 @@ Radiance SceneLamps::in_scattered(const Ray& ray, double distance) const {
     if (off2 >= kLampReachM * kLampReachM || !(near < far)) {
       lit.assign(1, {begin, end});
     } else {
+      // The parts beyond the reach joined to the lit parts they touch: one piece
+      // integrates as accurately as the whole ray would (its panels graded at its ends).
       lamp.volumes->lit_intervals(ray, near, far, lit);
-      if (begin < near) lit.insert(lit.begin(), {begin, near});
-      if (far < end) lit.push_back({far, end});
+      if (begin < near) {
+        if (!lit.empty() && lit.front().begin <= near)
+          lit.front().begin = begin;
+        else
+          lit.insert(lit.begin(), {begin, near});
+      }
+      if (far < end) {
+        if (!lit.empty() && lit.back().end >= far)
+          lit.back().end = end;
+        else
+          lit.push_back({far, end});
+      }
     }
     if (!lit.empty()) sum += Radiance(lamp.glow->along(ray, lit, emitting));
   }
