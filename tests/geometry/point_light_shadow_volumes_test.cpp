@@ -60,8 +60,9 @@ TEST(ShadowVolumes, PointLightHierarchyAgreesWithOcclusionRaysOnTessellatedWalls
   // Walls of a street in 1 m × 1.5 m panels (1,536 triangles, as city models and their
   // facades come) and a lamp over the street: pieces of view rays starting anywhere
   // along them agree with occlusion rays sample by sample (the hierarchy's arc, distance
-  // and height checks drop no frustum that matters); with a reach of 10 m, pieces
-  // wholly within it get the same intervals, and fewer frusta are built.
+  // and height checks drop no frustum that matters, and the panels merged into one face
+  // per wall shadow as the panels do); with a reach of 10 m, pieces wholly within it
+  // get the same intervals, and fewer frusta are built.
   std::vector<TriangleMesh> meshes(1);
   TriangleMesh& walls = meshes[0];
   for (const double x : {-6.0, 6.0})
@@ -75,12 +76,14 @@ TEST(ShadowVolumes, PointLightHierarchyAgreesWithOcclusionRaysOnTessellatedWalls
         walls.triangles.push_back({n, n + 2, n + 3});
       }
   meshes.push_back(make_box_centered({2, 3, 0}, {1, 1, 3}, 20));  // a kiosk on the street
+  meshes.push_back(make_box_centered({0, 45, 0}, {2, 2, 3}, 0));  // beyond the reach
   const Vec3 lamp{3, 0.5, 8};
   std::vector<const TriangleMesh*> pointers;
   for (const auto& m : meshes) pointers.push_back(&m);
   const PointLightShadowVolumes volumes(pointers, lamp);
   const PointLightShadowVolumes reached(pointers, lamp, {0, 0, -1}, 180, 10);
   EXPECT_LT(reached.volume_count(), volumes.volume_count());
+  EXPECT_LE(volumes.volume_count(), 2U + 5 + 5);  // a face per wall, at most 5 lit per box
   RayTracer tracer;
   for (const auto& m : meshes) tracer.add_mesh(m);
   tracer.commit();

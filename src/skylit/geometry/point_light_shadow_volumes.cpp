@@ -17,38 +17,40 @@ namespace {
 // The hierarchy's leaves hold at most this many frusta.
 constexpr uint32_t kFrustaPerLeaf = 4;
 
-// The frustum behind triangle (p, q, r) seen from a point light at `light`, or false if
-// it has no volume (degenerate, or edge-on to the light). Same face order as a prism:
-// three sides through the light and an edge, then the cap (the triangle's plane).
-bool make_frustum(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& light, ShadowVolume& frustum) {
-  const Vec3 corners[3] = {p, q, r};
-  for (int i = 0; i < 3; ++i) {
+// The frustum behind a convex face seen from a point light at `light`, as its planes
+// appended to `planes`, or false if it has none (degenerate, or edge-on to the light):
+// a side through the light and each edge, then the cap (the face's plane).
+bool make_frustum(const ConvexFace& face, const Vec3& centroid, const Vec3& light, std::vector<HalfSpace>& planes) {
+  const size_t first = planes.size();
+  const size_t n = face.corners.size();
+  for (size_t i = 0; i < n; ++i) {
     // As for prisms, the plane through the light and an edge is built from the edge's
-    // ends in one canonical order, so two triangles sharing the edge get it bit for bit.
-    Vec3 a = corners[i], b = corners[(i + 1) % 3];
+    // ends in one canonical order, so two faces sharing the edge get it bit for bit.
+    Vec3 a = face.corners[i], b = face.corners[(i + 1) % n];
     if (lexicographic_less(b, a)) std::swap(a, b);
     const Vec3 m = cross(a - light, b - light);
-    const double side = dot(m, corners[(i + 2) % 3] - light);
-    if (!(side != 0)) return false;
+    const double side = dot(m, centroid - light);
+    if (!(side != 0)) {
+      planes.resize(first);
+      return false;
+    }
     const double sign = side > 0 ? 1.0 : -1.0;
-    frustum.faces[i] = {sign * m, sign * dot(m, light)};
+    planes.push_back({sign * m, sign * dot(m, light)});
   }
-  const Vec3 n = cross(q - p, r - p);
-  const double facing = dot(n, light - p);
-  if (!(facing != 0)) return false;
-  const Vec3 away = facing > 0 ? -n : n;  // from the triangle away from the light
-  frustum.faces[3] = {away, dot(away, p)};
+  const double facing = dot(face.normal, light - face.corners[0]);
+  if (!(facing != 0)) {
+    planes.resize(first);
+    return false;
+  }
+  const Vec3 away = facing > 0 ? -face.normal : face.normal;  // from the face away from the light
+  planes.push_back({away, dot(away, face.corners[0])});
   return true;
 }
 
-// Whether triangle (p, q, r) lies wholly outside the cone of half-angle max_gamma_deg
-// about the unit `aim` from `apex`, by its bounding sphere (conservative: false when
-// unsure).
-bool outside_cone(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& apex, const Vec3& aim,
-                  double max_gamma_deg) {
+// Whether the sphere (centre, radius) lies wholly outside the cone of half-angle
+// max_gamma_deg about the unit `aim` from `apex` (conservative: false when unsure).
+bool outside_cone(const Vec3& centre, double radius, const Vec3& apex, const Vec3& aim, double max_gamma_deg) {
   if (!(max_gamma_deg < 180)) return false;
-  const Vec3 centre = (p + q + r) / 3.0;
-  const double radius = std::max({length(p - centre), length(q - centre), length(r - centre)});
   const Vec3 to_centre = centre - apex;
   const double distance = length(to_centre);
   if (!(distance > radius)) return false;
@@ -56,11 +58,42 @@ bool outside_cone(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& apex,
   return angle - std::asin(radius / distance) > max_gamma_deg * kPi / 180;
 }
 
+// Clips origin + t direction, t in [lo, hi], to a frustum (sides, then the cap), as
+// clip_to_volume does a ShadowVolume: sides closed, the cap open.
+bool clip_to_frustum(const HalfSpace* planes, uint32_t sides, const Vec3& origin, const Vec3& direction, double& lo,
+                     double& hi) {
+  for (uint32_t i = 0; i <= sides; ++i) {
+    const HalfSpace& f = planes[i];
+    const double a = dot(f.normal, origin) - f.offset;
+    const double b = dot(f.normal, direction);
+    if (b > 0) {
+      lo = std::max(lo, -a / b);
+    } else if (b < 0) {
+      hi = std::min(hi, -a / b);
+      if (!(lo < hi)) return false;
+    } else if (a < 0 || (i == sides && a == 0)) {
+      return false;  // parallel to the plane and outside
+    }
+  }
+  return lo < hi;
+}
+
 }  // namespace
 
-// A casting triangle's frustum with the bounding sphere of its corners.
+std::vector<ShadowCasterFaces> shadow_caster_faces(const std::vector<const TriangleMesh*>& meshes) {
+  std::vector<ShadowCasterFaces> out;
+  out.reserve(meshes.size());
+  for (size_t id = 0; id < meshes.size(); ++id) {
+    const TriangleMesh& mesh = checked_mesh(meshes, id, "PointLightShadowVolumes");
+    out.push_back({convex_faces(mesh), mesh.triangles.empty() ? 0 : casting_side(mesh)});
+  }
+  return out;
+}
+
+// A casting face's frustum (planes [first_plane, first_plane + sides + 1) of the
+// constructor's list) with the bounding sphere of its corners.
 struct PointLightShadowVolumes::Caster {
-  ShadowVolume frustum;
+  uint32_t first_plane, sides;
   Vec3 centre;
   double radius;
   Vec3 direction;  // unit, from the light toward the centre (ordering only)
@@ -69,41 +102,56 @@ struct PointLightShadowVolumes::Caster {
 
 PointLightShadowVolumes::PointLightShadowVolumes(const std::vector<const TriangleMesh*>& meshes, const Vec3& light,
                                                  const Vec3& aim, double max_gamma_deg, double reach_m)
+    : PointLightShadowVolumes(shadow_caster_faces(meshes), light, aim, max_gamma_deg, reach_m) {}
+
+PointLightShadowVolumes::PointLightShadowVolumes(const std::vector<ShadowCasterFaces>& meshes, const Vec3& light,
+                                                 const Vec3& aim, double max_gamma_deg, double reach_m)
     : light_(light) {
   if (!is_finite(light)) throw std::invalid_argument("PointLightShadowVolumes: the light's position must be finite");
   scale_ = std::max(1.0, max_abs(light));
   std::vector<Caster> casters;
-  for (size_t id = 0; id < meshes.size(); ++id) {
-    const TriangleMesh& mesh = checked_mesh(meshes, id, "PointLightShadowVolumes");
-    if (mesh.triangles.empty()) continue;
-    // A closed surface is left through triangles facing the light, as for the sun.
-    const int keep = casting_side(mesh);
-    for (const auto& t : mesh.triangles) {
-      const Vec3 &p = mesh.vertices[t[0]], &q = mesh.vertices[t[1]], &r = mesh.vertices[t[2]];
-      if (keep != 0 && !(keep * dot(cross(q - p, r - p), light - p) > 0)) continue;
-      if (outside_cone(p, q, r, light, aim, max_gamma_deg)) continue;
-      const Vec3 centre = (p + q + r) / 3.0;
-      const double radius = std::max({length(p - centre), length(q - centre), length(r - centre)});
+  std::vector<HalfSpace> planes;
+  for (const ShadowCasterFaces& mesh : meshes) {
+    // A closed surface is left through faces facing the light, as for the sun.
+    const int keep = mesh.casting_side;
+    for (const ConvexFace& face : mesh.faces) {
+      if (keep != 0 && !(keep * dot(face.normal, light - face.corners[0]) > 0)) continue;
+      Vec3 centre{0, 0, 0};
+      double top = -std::numeric_limits<double>::infinity();
+      for (const Vec3& c : face.corners) {
+        centre += c;
+        top = std::max(top, c.z);
+      }
+      centre = centre / static_cast<double>(face.corners.size());
+      double radius = 0;
+      for (const Vec3& c : face.corners) radius = std::max(radius, length(c - centre));
+      if (outside_cone(centre, radius, light, aim, max_gamma_deg)) continue;
       const double distance = length(centre - light);
       if (distance - radius > reach_m) continue;
-      // Lit from above, the frustum runs down from the triangle: nothing in it is higher
+      // Lit from above, the frustum runs down from the face: nothing in it is higher
       // than its highest corner.
-      const double top = std::max({p.z, q.z, r.z});
-      Caster caster{{},
+      Caster caster{static_cast<uint32_t>(planes.size()),
+                    static_cast<uint32_t>(face.corners.size()),
                     centre,
                     radius,
                     distance > 0 ? (centre - light) / distance : Vec3{0, 0, 1},
                     top < light.z ? top : std::numeric_limits<double>::infinity()};
-      if (!make_frustum(p, q, r, light, caster.frustum)) continue;
+      if (!make_frustum(face, centre, light, planes)) continue;
       casters.push_back(caster);
-      scale_ = std::max({scale_, max_abs(p), max_abs(q), max_abs(r)});
+      for (const Vec3& c : face.corners) scale_ = std::max(scale_, max_abs(c));
     }
   }
   if (casters.empty()) return;
   nodes_.reserve(2 * casters.size() / kFrustaPerLeaf + 1);
   build(casters, 0, static_cast<uint32_t>(casters.size()));
+  // The planes in the hierarchy's order.
   frusta_.reserve(casters.size());
-  for (const Caster& caster : casters) frusta_.push_back(caster.frustum);
+  planes_.reserve(planes.size());
+  for (const Caster& caster : casters) {
+    frusta_.push_back({static_cast<uint32_t>(planes_.size()), caster.sides});
+    planes_.insert(planes_.end(), planes.begin() + caster.first_plane,
+                   planes.begin() + caster.first_plane + caster.sides + 1);
+  }
 }
 
 uint32_t PointLightShadowVolumes::build(std::vector<Caster>& casters, uint32_t begin, uint32_t end) {
@@ -204,7 +252,8 @@ void PointLightShadowVolumes::lit_intervals(const Ray& ray, double t_min, double
       if (node.second == 0) {
         for (uint32_t i = node.begin; i < node.end; ++i) {
           double lo = t_min, hi = t_max;
-          if (clip_to_volume(frusta_[i], o, dir, lo, hi)) shadows.push_back({lo, hi});
+          if (clip_to_frustum(&planes_[frusta_[i].first_plane], frusta_[i].sides, o, dir, lo, hi))
+            shadows.push_back({lo, hi});
         }
         continue;
       }
