@@ -5,18 +5,21 @@
 #include <vector>
 
 #include "skylit/material/reflection.h"
+#include "skylit/spectrum/cie.h"
 
 namespace skylit {
 
 SceneLamps::SceneLamps(const std::vector<SceneLight>& lights, const RayTracer& tracer,
-                       const std::vector<const TriangleMesh*>& meshes, const FogLayer* fog)
-    : tracer_(tracer), fog_(fog) {
+                       const std::vector<const TriangleMesh*>& meshes, const FogLayer* fog, double reach_m)
+    : tracer_(tracer), fog_(fog), reach_m_(reach_m) {
+  if (fog) faces_ = shadow_caster_faces(meshes);
   for (const SceneLight& light : lights) {
-    Lamp lamp{&light, std::make_unique<IntensityMap>(light.luminaire), nullptr, nullptr};
+    Lamp lamp{&light, std::make_unique<IntensityMap>(light.luminaire), nullptr, nullptr, nullptr, nullptr};
     if (fog) {
       lamp.volumes =
-          std::make_unique<PointLightShadowVolumes>(meshes, light.luminaire.position(), light.luminaire.aim(),
-                                                    light.luminaire.distribution().max_gamma_deg(), kLampReachM);
+          std::make_unique<PointLightShadowVolumes>(faces_, light.luminaire.position(), light.luminaire.aim(),
+                                                    light.luminaire.distribution().max_gamma_deg(), reach_m);
+      lamp.all_built = std::make_unique<std::once_flag>();
       lamp.glow = std::make_unique<LampInScatter>(*fog, light.luminaire, light.spectrum_per_candela, lamp.map.get());
     }
     lamps_.push_back(std::move(lamp));
@@ -109,44 +112,73 @@ Radiance SceneLamps::reflected(const SurfacePoint& point, const Material& materi
   return lambertian_radiance(albedo, irradiance) + glossy;
 }
 
+const PointLightShadowVolumes& SceneLamps::all_volumes(const Lamp& lamp) const {
+  if (!std::isfinite(reach_m_)) return *lamp.volumes;
+  std::call_once(*lamp.all_built, [&] {
+    const Luminaire& luminaire = lamp.light->luminaire;
+    lamp.all_volumes =
+        std::make_unique<PointLightShadowVolumes>(faces_, luminaire.position(), luminaire.aim(),
+                                                  luminaire.distribution().max_gamma_deg(),
+                                                  std::numeric_limits<double>::infinity());
+  });
+  return *lamp.all_volumes;
+}
+
 Radiance SceneLamps::in_scattered(const Ray& ray, double distance) const {
   Radiance sum;
   if (!fog_) return sum;
   const RaySpan span = fog_->clip(ray.origin.z, ray.direction.z, 0.0, distance);
   if (span.empty()) return sum;
-  thread_local std::vector<Interval> lit, emitting;  // reused: no allocation per ray
-  for (const Lamp& lamp : lamps_) {
-    // Shadows only where the lamp shines at all (a headlight's cone is narrow), and
-    // within its reach; beyond it the light is counted unshadowed.
+  // A lamp's glow beyond its reach, unshadowed: an upper bound on what it adds.
+  struct Tail {
+    size_t lamp;
+    double bound_cd_m2;
+  };
+  thread_local std::vector<Interval> lit, emitting, beyond;  // reused: no allocation per ray
+  thread_local std::vector<Spectrum> within;                  // each lamp's glow within its reach
+  thread_local std::vector<Tail> tails;
+  within.assign(lamps_.size(), Spectrum(0.0f));
+  tails.clear();
+  Spectrum within_sum(0.0f);
+  for (size_t i = 0; i < lamps_.size(); ++i) {
+    const Lamp& lamp = lamps_[i];
+    // Shadows only where the lamp shines at all (a headlight's cone is narrow).
     lamp.glow->emitting_intervals(ray, span.lo, span.hi, emitting);
     if (emitting.empty()) continue;
     const double begin = emitting.front().begin, end = emitting.back().end;
+    // The chord [near, far] of the ray within the reach.
     const Vec3 to_lamp = lamp.light->luminaire.position() - ray.origin;
     const double foot = dot(to_lamp, ray.direction);  // the ray's direction is unit
     const double off2 = std::max(0.0, dot(to_lamp, to_lamp) - foot * foot);
-    const double half_chord = std::sqrt(std::max(0.0, kLampReachM * kLampReachM - off2));
-    const double near = std::max(begin, foot - half_chord), far = std::min(end, foot + half_chord);
-    if (off2 >= kLampReachM * kLampReachM || !(near < far)) {
-      lit.assign(1, {begin, end});
-    } else {
-      // The parts beyond the reach joined to the lit parts they touch: one piece
-      // integrates as accurately as the whole ray would (its panels graded at its ends).
+    const double half_chord = std::sqrt(std::max(0.0, reach_m_ * reach_m_ - off2));
+    double near = std::max(begin, foot - half_chord), far = std::min(end, foot + half_chord);
+    if (off2 >= reach_m_ * reach_m_ || !(near < far)) near = far = end;
+    beyond.clear();
+    if (begin < near) beyond.push_back({begin, near});
+    if (far < end) beyond.push_back({far, end});
+    if (near < far) {
       lamp.volumes->lit_intervals(ray, near, far, lit);
-      if (begin < near) {
-        if (!lit.empty() && lit.front().begin <= near)
-          lit.front().begin = begin;
-        else
-          lit.insert(lit.begin(), {begin, near});
-      }
-      if (far < end) {
-        if (!lit.empty() && lit.back().end >= far)
-          lit.back().end = end;
-        else
-          lit.push_back({far, end});
-      }
+      if (!lit.empty()) within[i] = lamp.glow->along(ray, lit, emitting);
+      within_sum += within[i];
     }
-    if (!lit.empty()) sum += Radiance(lamp.glow->along(ray, lit, emitting));
+    if (beyond.empty()) continue;
+    const double bound = luminance(lamp.glow->along(ray, beyond, emitting));
+    if (bound > 0) tails.push_back({i, bound});
   }
+  // Drop the smallest bounds while their sum stays under the share; the rest exactly.
+  std::sort(tails.begin(), tails.end(), [](const Tail& a, const Tail& b) { return a.bound_cd_m2 < b.bound_cd_m2; });
+  double budget = kDroppedGlowShare * luminance(within_sum);
+  for (const Tail& tail : tails) {
+    if (tail.bound_cd_m2 <= budget) {
+      budget -= tail.bound_cd_m2;
+      continue;
+    }
+    const Lamp& lamp = lamps_[tail.lamp];
+    lamp.glow->emitting_intervals(ray, span.lo, span.hi, emitting);
+    all_volumes(lamp).lit_intervals(ray, emitting.front().begin, emitting.back().end, lit);
+    within[tail.lamp] = lit.empty() ? Spectrum(0.0f) : lamp.glow->along(ray, lit, emitting);
+  }
+  for (const Spectrum& glow : within) sum += Radiance(glow);
   return sum;
 }
 

@@ -11,8 +11,9 @@
 // tens of metres (< 1 %); lamp light reflected twice.
 #pragma once
 
-#include <cmath>
+#include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "skylit/geometry/point_light_shadow_volumes.h"
@@ -29,24 +30,25 @@ namespace skylit {
 // the light already found there get no occlusion ray: they are counted as unshadowed.
 inline constexpr double kUntestedShare = 0.01;
 
-// A lamp's reach in the fog's glow: beyond it the lamp's light, even at its peak
-// intensity and with no fog to dim it, is under kReachShare of what it gives at
-// kReachReferenceM (a street's scale: a mounting height, half a spacing), as
-// I/R² = kReachShare · I/(kReachReferenceM)². There the glow's shadows are not
-// looked for (the light is counted unshadowed), so the light the fog scatters per
-// metre at any point the shadows may miss is under 1 % of what the same lamp makes
-// it scatter, at the same angle, 10 m away. Shadows are what cost: the frusta of a
-// city block's triangles beyond the reach are not built or visited.
-inline constexpr double kReachShare = 0.01;
-inline constexpr double kReachReferenceM = 10;
-inline const double kLampReachM = kReachReferenceM / std::sqrt(kReachShare);
+// A lamp's reach in the fog's glow: its shadow volumes are built, eagerly, for the
+// triangles within kLampReachM of it (a city block's triangles beyond are most of them).
+// A view ray's glow from the lamp is exact over the chord of the ray within the reach.
+// The parts beyond it are integrated unshadowed first: that is an upper bound on what
+// they add (shadows only take light away). The lamps' such bounds, smallest first, are
+// dropped while their sum stays under kDroppedGlowShare of the glow found within the
+// reaches; the others are computed exactly, with volumes over all the lamp's triangles
+// (built at the first need). So the lamps' glow on every view ray is exact or below it
+// by less than kDroppedGlowShare of it, in luminance; never above it.
+inline constexpr double kLampReachM = 100;
+inline constexpr double kDroppedGlowShare = 0.01;
 
 class SceneLamps {
  public:
   // `fog` may be null (clear air: no glow); it must outlive this object, as must the
   // lights, the tracer and the meshes.
+  // `reach_m`: kLampReachM but in tests (infinity: every glow exact).
   SceneLamps(const std::vector<SceneLight>& lights, const RayTracer& tracer,
-             const std::vector<const TriangleMesh*>& meshes, const FogLayer* fog);
+             const std::vector<const TriangleMesh*>& meshes, const FogLayer* fog, double reach_m = kLampReachM);
 
   bool empty() const { return lamps_.empty(); }
 
@@ -59,7 +61,8 @@ class SceneLamps {
   Radiance reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const;
 
   // W m⁻² sr⁻¹ nm⁻¹ the fog scatters toward the ray's origin from all lamps, over
-  // [0, distance] (distance may be infinite).
+  // [0, distance] (distance may be infinite); exact or below by less than
+  // kDroppedGlowShare of it in luminance (the reach, above).
   Radiance in_scattered(const Ray& ray, double distance) const;
 
   // W m⁻² nm⁻¹ all lamps put on the surface at `point` (on the side its normal faces),
@@ -76,12 +79,18 @@ class SceneLamps {
   struct Lamp {
     const SceneLight* light;
     std::unique_ptr<IntensityMap> map;                 // the luminaire's intensity, for fast look-ups
-    std::unique_ptr<PointLightShadowVolumes> volumes;  // with fog only
+    std::unique_ptr<PointLightShadowVolumes> volumes;  // with fog only: the triangles within the reach
     std::unique_ptr<LampInScatter> glow;               // with fog only
+    // With fog only: all the triangles' volumes, built by the first ray that needs them.
+    mutable std::unique_ptr<PointLightShadowVolumes> all_volumes;
+    std::unique_ptr<std::once_flag> all_built;
   };
+  const PointLightShadowVolumes& all_volumes(const Lamp& lamp) const;
   std::vector<Lamp> lamps_;
   const RayTracer& tracer_;
   const FogLayer* fog_;
+  std::vector<ShadowCasterFaces> faces_;  // with fog only: the meshes' faces, for every lamp
+  double reach_m_;
 };
 
 }  // namespace skylit
