@@ -81,8 +81,10 @@ double glow_closed_form(double sigma, double intensity, double h, double s0) {
 TEST(LampRender, GlowInHomogeneousFogFallsOffAsTheClosedForm) {
   // Horizontal view rays passing the lamp at growing distances, in a homogeneous fog
   // (σ = 0.01 m⁻¹, isotropic phase) with nothing in the way: the rendered luminance
-  // is the closed form's (the LED spectrum is one candela per candela); tolerance 1e-4
-  // (the quadrature's, tests/media/lamp_in_scatter_test.cpp) plus 1e-6 cd/m² of sky.
+  // is the closed form's (the LED spectrum is one candela per candela), less at most
+  // kDroppedGlowShare for the ray's part beyond the lamp's reach, within 1e-3 (the
+  // quadrature on a ray split at the reach, measured 7e-4; on whole rays it is within
+  // 1e-4, tests/media/lamp_in_scatter_test.cpp) plus 1e-6 cd/m² of sky.
   Scene scene = night_scene();
   scene.objects.clear();
   scene.materials.resize(1);
@@ -103,7 +105,8 @@ TEST(LampRender, GlowInHomogeneousFogFallsOffAsTheClosedForm) {
   for (double offset : {0.5, 2.0, 8.0, 30.0}) {
     const double got = luminance(renderer.radiance(Ray{{offset, 0, 10}, {0, 1, 0}}));
     const double expected = glow_closed_form(0.01, 1000.0, offset, 30.0);
-    EXPECT_NEAR(got, expected, 1e-4 * expected + 1e-6) << "offset " << offset;
+    EXPECT_LE(got, expected * (1 + 1e-3) + 1e-6) << "offset " << offset;
+    EXPECT_GE(got, expected * (1 - kDroppedGlowShare - 1e-3) - 1e-6) << "offset " << offset;
     EXPECT_LT(got, previous);
     previous = got;
   }

@@ -58,26 +58,6 @@ bool outside_cone(const Vec3& centre, double radius, const Vec3& apex, const Vec
   return angle - std::asin(radius / distance) > max_gamma_deg * kPi / 180;
 }
 
-// Clips origin + t direction, t in [lo, hi], to a frustum (sides, then the cap), as
-// clip_to_volume does a ShadowVolume: sides closed, the cap open.
-bool clip_to_frustum(const HalfSpace* planes, uint32_t sides, const Vec3& origin, const Vec3& direction, double& lo,
-                     double& hi) {
-  for (uint32_t i = 0; i <= sides; ++i) {
-    const HalfSpace& f = planes[i];
-    const double a = dot(f.normal, origin) - f.offset;
-    const double b = dot(f.normal, direction);
-    if (b > 0) {
-      lo = std::max(lo, -a / b);
-    } else if (b < 0) {
-      hi = std::min(hi, -a / b);
-      if (!(lo < hi)) return false;
-    } else if (a < 0 || (i == sides && a == 0)) {
-      return false;  // parallel to the plane and outside
-    }
-  }
-  return lo < hi;
-}
-
 }  // namespace
 
 std::vector<ShadowCasterFaces> shadow_caster_faces(const std::vector<const TriangleMesh*>& meshes) {
@@ -252,7 +232,7 @@ void PointLightShadowVolumes::lit_intervals(const Ray& ray, double t_min, double
       if (node.second == 0) {
         for (uint32_t i = node.begin; i < node.end; ++i) {
           double lo = t_min, hi = t_max;
-          if (clip_to_frustum(&planes_[frusta_[i].first_plane], frusta_[i].sides, o, dir, lo, hi))
+          if (clip_to_half_spaces(&planes_[frusta_[i].first_plane], frusta_[i].sides + 1, o, dir, lo, hi))
             shadows.push_back({lo, hi});
         }
         continue;

@@ -12,6 +12,7 @@
 #include <algorithm>
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "skylit/core/function_ref.h"
@@ -37,15 +38,15 @@ struct ShadowVolume {
   std::array<HalfSpace, 4> faces;
 };
 
-// Clips origin + t direction, t in [lo, hi], to the volume; true if something is left.
-// The sides are closed, so a ray lying in a side shared by two volumes is in both; the
-// cap is open, so a ray running along a lit surface (a view ray grazing the ground)
-// stays lit.
+// Clips origin + t direction, t in [lo, hi], to the convex volume inside planes[0..count),
+// the last its cap; true if something is left. The sides are closed, so a ray lying in
+// a side shared by two volumes is in both; the cap is open, so a ray running along a
+// lit surface (a view ray grazing the ground) stays lit.
 // Inline: it runs once per volume per query, the innermost loop of beams and lamp glow.
-inline bool clip_to_volume(const ShadowVolume& volume, const Vec3& origin, const Vec3& direction, double& lo,
-                           double& hi) {
-  for (int i = 0; i < 4; ++i) {
-    const HalfSpace& f = volume.faces[i];
+inline bool clip_to_half_spaces(const HalfSpace* planes, size_t count, const Vec3& origin, const Vec3& direction,
+                                double& lo, double& hi) {
+  for (size_t i = 0; i < count; ++i) {
+    const HalfSpace& f = planes[i];
     const double a = dot(f.normal, origin) - f.offset;
     const double b = dot(f.normal, direction);
     if (b > 0) {
@@ -53,11 +54,17 @@ inline bool clip_to_volume(const ShadowVolume& volume, const Vec3& origin, const
     } else if (b < 0) {
       hi = std::min(hi, -a / b);
       if (!(lo < hi)) return false;
-    } else if (a < 0 || (i == 3 && a == 0)) {
-      return false;  // parallel to the face and outside (the cap open, the sides closed)
+    } else if (a < 0 || (i + 1 == count && a == 0)) {
+      return false;  // parallel to the plane and outside (the cap open, the sides closed)
     }
   }
   return lo < hi;
+}
+
+// The same for a prism or a triangle's frustum.
+inline bool clip_to_volume(const ShadowVolume& volume, const Vec3& origin, const Vec3& direction, double& lo,
+                           double& hi) {
+  return clip_to_half_spaces(volume.faces.data(), volume.faces.size(), origin, direction, lo, hi);
 }
 
 // The lit parts of ray.origin + t ray.direction, t in [t_min, t_max], into `out`

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <mutex>
 #include <vector>
 
 #include "skylit/material/reflection.h"
@@ -116,10 +118,9 @@ const PointLightShadowVolumes& SceneLamps::all_volumes(const Lamp& lamp) const {
   if (!std::isfinite(reach_m_)) return *lamp.volumes;
   std::call_once(*lamp.all_built, [&] {
     const Luminaire& luminaire = lamp.light->luminaire;
-    lamp.all_volumes =
-        std::make_unique<PointLightShadowVolumes>(faces_, luminaire.position(), luminaire.aim(),
-                                                  luminaire.distribution().max_gamma_deg(),
-                                                  std::numeric_limits<double>::infinity());
+    lamp.all_volumes = std::make_unique<PointLightShadowVolumes>(faces_, luminaire.position(), luminaire.aim(),
+                                                                 luminaire.distribution().max_gamma_deg(),
+                                                                 std::numeric_limits<double>::infinity());
   });
   return *lamp.all_volumes;
 }
@@ -135,7 +136,7 @@ Radiance SceneLamps::in_scattered(const Ray& ray, double distance) const {
     double bound_cd_m2;
   };
   thread_local std::vector<Interval> lit, emitting, beyond;  // reused: no allocation per ray
-  thread_local std::vector<Spectrum> within;                  // each lamp's glow within its reach
+  thread_local std::vector<Spectrum> within;                 // each lamp's glow within its reach
   thread_local std::vector<Tail> tails;
   within.assign(lamps_.size(), Spectrum(0.0f));
   tails.clear();

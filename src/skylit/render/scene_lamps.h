@@ -11,7 +11,6 @@
 // tens of metres (< 1 %); lamp light reflected twice.
 #pragma once
 
-#include <limits>
 #include <memory>
 #include <mutex>
 #include <vector>
