@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "skylit/io/scene/scene_loader.h"
+#include "fig9_street.h"
 #include "skylit/render/lamp_glow_image.h"
 #include "skylit/spectrum/cie.h"
 
@@ -19,15 +19,11 @@ TEST(LampGlowImage, PixelCentresMatchExactGlow) {
   // for 99 % of pixels, 2 % for 999 in 1000, 5 % for all (measured at this size 0.8 %,
   // 1.0 %, 3.4 % at a headlight beam's edge; at 1280×720 0.8 %, 0.95 %, 1.5 %), with
   // far fewer evaluations than pixels.
-  const Scene scene = load_scene(std::string(SKYLIT_SOURCE_DIR) + "/examples/fig9.json");
-  std::vector<const TriangleMesh*> meshes;
-  RayTracer tracer;
-  for (const SceneObject& o : scene.objects) {
-    meshes.push_back(&o.mesh);
-    tracer.add_mesh(o.mesh);
-  }
-  tracer.commit();
-  const FogLayer layer(*scene.fog);
+  const Fig9Street street;
+  const Scene& scene = street.scene;
+  const RayTracer& tracer = street.tracer;
+  const std::vector<const TriangleMesh*>& meshes = street.meshes;
+  const FogLayer& layer = street.layer;
   const SceneLamps lamps(scene.lights, tracer, meshes, &layer);
   const int width = 480, height = 270;
   const ImageCamera camera(scene.camera, width, height);

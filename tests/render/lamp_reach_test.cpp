@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "skylit/io/scene/scene_loader.h"
+#include "fig9_street.h"
 #include "skylit/render/camera.h"
 #include "skylit/render/scene_lamps.h"
 #include "skylit/spectrum/cie.h"
@@ -22,15 +22,11 @@ TEST(LampReach, GlowIsExactOrBelowByLessThanTheDroppedShare) {
   // every 7th pixel centre of a 160×90 frame the glow with that reach must lie in
   // [exact·(1 − kDroppedGlowShare), exact], less the glow's own quadrature error on
   // pieces split at the reach (the closed-form tests allow 1e-3; measured here 2e-5).
-  const Scene scene = load_scene(std::string(SKYLIT_SOURCE_DIR) + "/examples/fig9.json");
-  std::vector<const TriangleMesh*> meshes;
-  RayTracer tracer;
-  for (const SceneObject& o : scene.objects) {
-    meshes.push_back(&o.mesh);
-    tracer.add_mesh(o.mesh);
-  }
-  tracer.commit();
-  const FogLayer layer(*scene.fog);
+  const Fig9Street street;
+  const Scene& scene = street.scene;
+  const RayTracer& tracer = street.tracer;
+  const std::vector<const TriangleMesh*>& meshes = street.meshes;
+  const FogLayer& layer = street.layer;
   const SceneLamps exact(scene.lights, tracer, meshes, &layer, std::numeric_limits<double>::infinity());
   const SceneLamps reached(scene.lights, tracer, meshes, &layer, 12.0);
   const int width = 160, height = 90;
