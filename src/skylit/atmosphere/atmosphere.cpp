@@ -6,6 +6,7 @@
 #include "skylit/atmosphere/cie_sky_view.h"
 #include "skylit/atmosphere/moon_light.h"
 #include "skylit/atmosphere/night_sky.h"
+#include "skylit/atmosphere/scattering_orders_table.h"
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/atmosphere/sun_disc.h"
 #include "skylit/core/angles.h"
@@ -28,13 +29,19 @@ Atmosphere::Atmosphere(const AtmosphereSettings& settings, const SpectralBands& 
       extraterrestrial_(Irradiance(
           settings.moon ? moon_extraterrestrial_irradiance(bands, settings.earth_sun_distance_au, *settings.moon)
                         : skylit::extraterrestrial_irradiance(bands, settings.earth_sun_distance_au))) {
-  if (settings.model == AtmosphereModel::full)
-    multiple_ = std::make_unique<MultipleScatteringTable>(medium_, transmittance_, settings.ground_albedo);
+  if (settings.model == AtmosphereModel::full) {
+    if (settings.multiple_scattering == MultipleScatteringMethod::hillaire) {
+      multiple_ = std::make_unique<MultipleScatteringTable>(medium_, transmittance_, settings.ground_albedo);
+    } else {
+      orders_ =
+          std::make_unique<ScatteringOrdersTable>(medium_, transmittance_, settings.aerosol, settings.ground_albedo);
+    }
+  }
   sky_only_ = std::make_unique<ScatteringIntegrator>(medium_, transmittance_, multiple_.get(), nullptr,
-                                                     settings.aerosol, settings.ground_albedo);
+                                                     settings.aerosol, settings.ground_albedo, orders_.get());
   ground_sky_ = std::make_unique<GroundIrradianceTable>(ScatteringIntegrator::ground_irradiance(*sky_only_));
   integrator_ = std::make_unique<ScatteringIntegrator>(medium_, transmittance_, multiple_.get(), ground_sky_.get(),
-                                                       settings.aerosol, settings.ground_albedo);
+                                                       settings.aerosol, settings.ground_albedo, orders_.get());
 }
 
 Atmosphere::~Atmosphere() = default;

@@ -42,7 +42,8 @@ class Atmosphere {
   SpectralBands bands_;
   AtmosphereMedium medium_;
   TransmittanceTable transmittance_;
-  std::unique_ptr<MultipleScatteringTable> multiple_;
+  std::unique_ptr<MultipleScatteringTable> multiple_;  // Hillaire's approximation
+  std::unique_ptr<ScatteringOrdersTable> orders_;
   std::unique_ptr<ScatteringIntegrator> sky_only_;  // without the ground's sky irradiance
   std::unique_ptr<GroundIrradianceTable> ground_sky_;
   std::unique_ptr<ScatteringIntegrator> integrator_;

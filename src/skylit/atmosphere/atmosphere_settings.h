@@ -16,6 +16,12 @@ enum class AtmosphereModel {
   paper,  // the paper's §3.1: single scattering only, no ozone
 };
 
+// How the full model computes multiple scattering (docs/atmosphere.md).
+enum class MultipleScatteringMethod {
+  scattering_orders,  // iterated scattering orders (Bruneton & Neyret 2008; Bruneton 2017)
+  hillaire,           // Hillaire (2020): isotropic after the first event, geometric series
+};
+
 enum class AerosolPhase { cornette_shanks, henyey_greenstein };
 
 // The aerosol types of OPAC (Hess, Koepke & Schult 1998), data/aerosol_types.csv.
@@ -47,6 +53,7 @@ struct AerosolSettings {
 
 struct AtmosphereSettings {
   AtmosphereModel model = AtmosphereModel::full;
+  MultipleScatteringMethod multiple_scattering = MultipleScatteringMethod::scattering_orders;
   AerosolSettings aerosol;
   double ozone_column_du = 300.0;  // total ozone in Dobson units
   double ground_albedo = 0.15;     // Lambertian, grey, for the ground seen through the air and multiple scattering

@@ -7,6 +7,7 @@
 
 #include "skylit/atmosphere/phase_functions.h"
 #include "skylit/atmosphere/shell_geometry.h"
+#include "skylit/atmosphere/sun_zenith_rows.h"
 #include "skylit/core/vec3.h"
 #include "skylit/spectrum/spectral_math.h"
 
@@ -24,19 +25,9 @@ Vec3 fibonacci_direction(int i, int n) {
 }
 
 // Table coordinates: altitude crowded toward the ground, where the density is; the sun's
-// cosine crowded (4×) toward the horizon, where Ψ_ms changes fastest as the sun sets:
-// μ_s = s (¼ + ¾|s|), s ∈ [−1, 1].
+// cosine crowded toward the horizon (sun_zenith_rows.h).
 double altitude_from_unit(double x, double top) { return top * x * x; }
 double unit_from_altitude(double h, double top) { return std::sqrt(std::clamp(h / top, 0.0, 1.0)); }
-double mu_sun_from_unit(double x) {
-  const double s = 2.0 * x - 1.0;
-  return s * (0.25 + 0.75 * std::abs(s));
-}
-double unit_from_mu_sun(double mu_sun) {
-  const double m = std::clamp(std::abs(mu_sun), 0.0, 1.0);
-  const double s = (-0.25 + std::sqrt(0.0625 + 3.0 * m)) / 1.5;
-  return 0.5 * (1.0 + (mu_sun < 0 ? -s : s));
-}
 
 // Ψ_ms falls by orders of magnitude as the sun sets past the point's horizon, nearly
 // exponentially: the table holds its logarithm, so that interpolating between rows

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "skylit/atmosphere/phase_functions.h"
+#include "skylit/atmosphere/scattering_orders_table.h"
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/core/vec3.h"
 #include "skylit/spectrum/spectral_math.h"
@@ -22,10 +23,11 @@ Spectrum GroundIrradianceTable::at(double mu_sun) const {
 ScatteringIntegrator::ScatteringIntegrator(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
                                            const MultipleScatteringTable* multiple,
                                            const GroundIrradianceTable* ground_sky, const AerosolSettings& aerosol,
-                                           double ground_albedo)
+                                           double ground_albedo, const ScatteringOrdersTable* orders)
     : medium_(medium),
       transmittance_(transmittance),
       multiple_(multiple),
+      orders_(orders),
       ground_sky_(ground_sky),
       aerosol_phase_(aerosol),
       ground_albedo_(ground_albedo) {}
@@ -54,11 +56,19 @@ void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, doubl
   const Spectrum extinction = medium_.extinction(rho_r, rho_a, medium_.ozone_density(h));
   const Spectrum segment = transmittance_of(extinction * static_cast<float>(dt));
   const Spectrum sun = transmittance_.to_top(r_t, mu_sun_t);
-  const Spectrum psi = multiple_ ? multiple_->psi(r_t, mu_sun_t) : Spectrum(0.0f);
+  // Multiply scattered light per unit σ_R and σ_A (equal for Hillaire's isotropic Ψ_ms).
+  ScatteringOrdersTable::Source multiple{Spectrum(0.0f), Spectrum(0.0f)};
+  if (orders_) {
+    multiple = orders_->at(r_t, shell::mu_at(r, mu, t, r_t), mu_sun_t, nu);
+  } else if (multiple_) {
+    multiple.rayleigh = multiple_->psi(r_t, mu_sun_t);
+    multiple.aerosol = multiple.rayleigh;
+  }
   const float fr = static_cast<float>(rho_r), fa = static_cast<float>(rho_a), fdt = static_cast<float>(dt);
   for (int k = 0; k < kSpectralBins; ++k) {
     const float sigma_r = medium_.rayleigh_scattering[k] * fr, sigma_a = medium_.aerosol_scattering[k] * fa;
-    const float source = (sigma_r * phase.rayleigh + sigma_a * phase.aerosol) * sun[k] + (sigma_r + sigma_a) * psi[k];
+    const float source = (sigma_r * phase.rayleigh + sigma_a * phase.aerosol) * sun[k] +
+                         sigma_r * multiple.rayleigh[k] + sigma_a * multiple.aerosol[k];
     const float integral = segment_weight(extinction[k], fdt, segment[k]);
     light.radiance[k] += light.transmittance[k] * source * integral;
     light.transmittance[k] *= segment[k];

@@ -2,7 +2,8 @@
 // sky light; Bruneton & Neyret 2008 and Hillaire 2020 in today's form): along the ray,
 // sunlight attenuated on its way to each point is scattered by molecules (Rayleigh) and
 // aerosols (Mie) toward the origin, and attenuated again on the way there; multiple
-// scattering adds σ_s·Ψ_ms (multiple_scattering_table.h); a ray that ends on the ground
+// scattering adds σ_R·S_R + σ_A·S_A (scattering_orders_table.h) or, in Hillaire's
+// approximation, σ_s·Ψ_ms (multiple_scattering_table.h); a ray that ends on the ground
 // adds the ground's Lambertian reflection. Everything is per unit extraterrestrial
 // solar irradiance: multiply by the sun's spectrum to get radiance.
 #pragma once
@@ -14,6 +15,8 @@
 #include "skylit/atmosphere/transmittance_table.h"
 
 namespace skylit {
+
+class ScatteringOrdersTable;
 
 struct ScatteredLight {
   Spectrum radiance;       // sr⁻¹, per unit solar irradiance
@@ -35,10 +38,13 @@ class GroundIrradianceTable {
 
 class ScatteringIntegrator {
  public:
-  // `multiple` and `ground_sky` may be null (the paper's model has neither).
+  // `multiple`, `orders` and `ground_sky` may be null (the paper's model has none);
+  // multiple scattering comes from `orders` (scattering_orders_table.h) or `multiple`
+  // (Hillaire's approximation), whichever is given.
   ScatteringIntegrator(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
                        const MultipleScatteringTable* multiple, const GroundIrradianceTable* ground_sky,
-                       const AerosolSettings& aerosol, double ground_albedo);
+                       const AerosolSettings& aerosol, double ground_albedo,
+                       const ScatteringOrdersTable* orders = nullptr);
 
   // Along the ray (r, μ) to where it leaves the atmosphere or meets the ground, with the
   // sun at zenith cosine μ_s and ν = cos(angle between ray and sun). `segments` steps,
@@ -78,6 +84,7 @@ class ScatteringIntegrator {
   const AtmosphereMedium& medium_;
   const TransmittanceTable& transmittance_;
   const MultipleScatteringTable* multiple_;
+  const ScatteringOrdersTable* orders_;
   const GroundIrradianceTable* ground_sky_;
   AerosolPhaseFunction aerosol_phase_;
   double ground_albedo_;

@@ -1,0 +1,329 @@
+#include "skylit/atmosphere/scattering_orders_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include <tbb/parallel_for.h>
+
+#include "skylit/atmosphere/aerosol_types.h"
+#include "skylit/atmosphere/phase_functions.h"
+#include "skylit/atmosphere/shell_geometry.h"
+#include "skylit/atmosphere/sun_zenith_rows.h"
+#include "skylit/core/vec3.h"
+
+namespace skylit {
+
+namespace {
+
+using Table = ScatteringOrdersTable;
+using Bins = Table::Bins;
+constexpr int kBins = Table::kBins;
+constexpr int kDirections = Table::kMuSize * Table::kAzimuthSize;
+constexpr int kPoints = Table::kAltitudeSize * Table::kMuSunSize;
+
+// The spectral bin that the table's bin b stands for: 0, 6, 11, …, 39.
+int spectral_bin(int b) { return (b * (kSpectralBins - 1) + (kBins - 1) / 2) / (kBins - 1); }
+
+// Grid coordinates (0 … size − 1) and back.
+double altitude_from_unit(double x, double top) { return top * x * x * x; }
+double unit_from_altitude(double h, double top) { return std::cbrt(std::clamp(h / top, 0.0, 1.0)); }
+// Directions at the middle of equal bands of μ and of φ ∈ [0, π].
+double mu_of(int k) { return -1.0 + 2.0 * (k + 0.5) / Table::kMuSize; }
+double azimuth_of(int k) { return kPi * (k + 0.5) / Table::kAzimuthSize; }
+// Each direction stands for its band and its mirror image across the sun's vertical.
+constexpr double kDirectionWeight = (2.0 / Table::kMuSize) * (2.0 * kPi / Table::kAzimuthSize);
+
+Vec3 direction_of(int d) {
+  const double mu = mu_of(d / Table::kAzimuthSize), phi = azimuth_of(d % Table::kAzimuthSize);
+  const double s = std::sqrt(1.0 - mu * mu);
+  return {s * std::cos(phi), s * std::sin(phi), mu};
+}
+
+// The cosine between a direction and the sun, both given in the point's frame.
+double nu_of(double mu, double mu_sun, double azimuth) {
+  return mu * mu_sun + std::sqrt((1.0 - mu * mu) * std::max(0.0, 1.0 - mu_sun * mu_sun)) * std::cos(azimuth);
+}
+
+struct Lerp {
+  int i;
+  float a;
+};
+Lerp lerp(double f, int size) {
+  f = std::clamp(f, 0.0, static_cast<double>(size - 1));
+  const int i = std::min(static_cast<int>(f), size - 2);
+  return {i, static_cast<float>(f - i)};
+}
+
+// Values below the floor are taken as 0 (deep in the Earth's shadow).
+constexpr float kFloor = 1e-30f;
+const float kLogFloor = std::log(kFloor);
+
+Bins log_of(const Bins& v) {
+  Bins out;
+  for (int k = 0; k < kBins; ++k) out[k] = std::log(std::max(v[k], kFloor));
+  return out;
+}
+
+// S at any (r, μ, μ_s, ν) by multilinear interpolation of log S on the grid.
+void interpolate(const std::vector<Bins>& log_r, const std::vector<Bins>& log_a, double rg, double rt, double r,
+                 double mu, double mu_sun, double nu, Bins& out_r, Bins& out_a) {
+  const double denominator = std::sqrt(std::max(0.0, (1.0 - mu * mu) * (1.0 - mu_sun * mu_sun)));
+  const double azimuth = denominator < 1e-9 ? 0.0 : std::acos(std::clamp((nu - mu * mu_sun) / denominator, -1.0, 1.0));
+  const Lerp lr = lerp(unit_from_altitude(r - rg, rt - rg) * (Table::kAltitudeSize - 1), Table::kAltitudeSize);
+  const Lerp ls = lerp(unit_from_mu_sun(mu_sun) * (Table::kMuSunSize - 1), Table::kMuSunSize);
+  const Lerp lm = lerp((mu + 1.0) * 0.5 * Table::kMuSize - 0.5, Table::kMuSize);
+  const Lerp lp = lerp(azimuth / kPi * Table::kAzimuthSize - 0.5, Table::kAzimuthSize);
+  Bins sum_r{}, sum_a{};
+  for (int c = 0; c < 16; ++c) {
+    const int di = c & 1, dj = (c >> 1) & 1, dm = (c >> 2) & 1, dp = (c >> 3) & 1;
+    const float w = (di ? lr.a : 1 - lr.a) * (dj ? ls.a : 1 - ls.a) * (dm ? lm.a : 1 - lm.a) * (dp ? lp.a : 1 - lp.a);
+    if (w == 0.0f) continue;
+    const size_t point = static_cast<size_t>((lr.i + di) * Table::kMuSunSize + ls.i + dj);
+    const size_t index = point * kDirections + static_cast<size_t>((lm.i + dm) * Table::kAzimuthSize + lp.i + dp);
+    for (int k = 0; k < kBins; ++k) {
+      sum_r[k] += w * log_r[index][k];
+      sum_a[k] += w * log_a[index][k];
+    }
+  }
+  for (int k = 0; k < kBins; ++k) {
+    out_r[k] = sum_r[k] <= kLogFloor + 1 ? 0.0f : std::exp(sum_r[k]);
+    out_a[k] = sum_a[k] <= kLogFloor + 1 ? 0.0f : std::exp(sum_a[k]);
+  }
+}
+
+// The phase function's quadrature over the grid's directions: row d gives the weights
+// that turn radiance from every direction d' into ∫ P(ω_d·ω') L(ω') dω'. Each row is
+// normalised to sum to one, so that the quadrature conserves energy exactly (the
+// aerosol's forward peak is coarse on this grid).
+std::vector<float> phase_matrix(const std::function<double(double)>& phase) {
+  std::vector<float> m(static_cast<size_t>(kDirections * kDirections));
+  std::vector<double> row(kDirections);
+  for (int d = 0; d < kDirections; ++d) {
+    const Vec3 a = direction_of(d);
+    double sum = 0;
+    for (int e = 0; e < kDirections; ++e) {
+      const Vec3 b = direction_of(e), mirror{b.x, -b.y, b.z};
+      row[static_cast<size_t>(e)] = kDirectionWeight * 0.5 * (phase(dot(a, b)) + phase(dot(a, mirror)));
+      sum += row[static_cast<size_t>(e)];
+    }
+    for (int e = 0; e < kDirections; ++e)
+      m[static_cast<size_t>(d * kDirections + e)] = static_cast<float>(row[static_cast<size_t>(e)] / sum);
+  }
+  return m;
+}
+
+// The medium's coefficients in the table's bins.
+struct Coefficients {
+  Bins rayleigh, aerosol_scattering, aerosol_extinction, ozone;
+  explicit Coefficients(const AtmosphereMedium& m) {
+    for (int b = 0; b < kBins; ++b) {
+      const int k = spectral_bin(b);
+      rayleigh[b] = m.rayleigh_scattering[k];
+      aerosol_scattering[b] = m.aerosol_scattering[k];
+      aerosol_extinction[b] = m.aerosol_extinction[k];
+      ozone[b] = m.ozone_absorption[k];
+    }
+  }
+};
+
+// One step along a ray: the densities at its middle and its attenuation.
+struct Step {
+  float rho_r, rho_a;
+  Bins weight;       // ∫ over the step of the attenuation from its start: (1 − e^(−σ_t dt))/σ_t
+  Bins attenuation;  // e^(−σ_t dt)
+};
+Step step(const AtmosphereMedium& m, const Coefficients& c, double h, double dt) {
+  Step s{static_cast<float>(m.rayleigh_density(h)), static_cast<float>(m.aerosol_density(h)), {}, {}};
+  const float rho_o = static_cast<float>(m.ozone_density(h)), fdt = static_cast<float>(dt);
+  for (int k = 0; k < kBins; ++k) {
+    const float extinction = c.rayleigh[k] * s.rho_r + c.aerosol_extinction[k] * s.rho_a + c.ozone[k] * rho_o;
+    const float x = extinction * fdt;
+    s.attenuation[k] = std::exp(-x);
+    s.weight[k] = x < 1e-3f ? fdt * (1.0f - x * (0.5f - x * (1.0f / 6.0f))) : (1.0f - s.attenuation[k]) / extinction;
+  }
+  return s;
+}
+
+}  // namespace
+
+// The grid's points and the transport of one order along rays from them.
+struct ScatteringOrdersTable::Grid {
+  const AtmosphereMedium& medium;
+  const TransmittanceTable& transmittance;
+  Coefficients coefficients;
+  float rayleigh_phase_gamma;
+  AerosolPhaseFunction aerosol_phase;
+  double ground_albedo;
+  double rg, rt;
+
+  double radius(int i) const { return rg + altitude_from_unit(static_cast<double>(i) / (kAltitudeSize - 1), rt - rg); }
+  static double mu_sun(int j) { return mu_sun_from_unit(static_cast<double>(j) / (kMuSunSize - 1)); }
+
+  Bins sun_at(double r, double mu_sun) const {
+    const Spectrum t = transmittance.to_top(r, mu_sun);
+    Bins out;
+    for (int b = 0; b < kBins; ++b) out[b] = t[spectral_bin(b)];
+    return out;
+  }
+
+  // L along the ray (r, μ) with the sun at μ_s, ν. Order 1 (`log_r` null): sunlight
+  // scattered once and the sunlit ground. Order n: σ·S_{n−1} (log_r, log_a), and the
+  // ground's reflection of E_{n−1}.
+  Bins transport(const std::vector<Bins>* log_r, const std::vector<Bins>* log_a,
+                 const std::vector<Bins>& ground_irradiance, double r, double mu, double mu_sun, double nu) const {
+    const bool ground = shell::hits_ground(r, mu, rg);
+    const double length = ground ? shell::distance_to_ground(r, mu, rg) : shell::distance_to_outer_sphere(r, mu, rt);
+    const float phase_r = static_cast<float>(rayleigh_phase(nu, rayleigh_phase_gamma));
+    const float phase_a = static_cast<float>(aerosol_phase(nu));
+    Bins throughput, light{}, s_r, s_a;
+    throughput.fill(1.0f);
+    const std::vector<double> bounds = shell::crowded_boundaries(length, -r * mu, kSegments);
+    for (size_t i = 1; i < bounds.size(); ++i) {
+      const double dt = bounds[i] - bounds[i - 1];
+      if (dt <= 0) continue;
+      const double t = 0.5 * (bounds[i] + bounds[i - 1]);
+      const double r_t = std::clamp(shell::radius_at(r, mu, t), rg, rt);
+      const double mu_sun_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
+      const Step s = step(medium, coefficients, r_t - medium.earth_radius_m, dt);
+      if (log_r) {
+        interpolate(*log_r, *log_a, rg, rt, r_t, shell::mu_at(r, mu, t, r_t), mu_sun_t, nu, s_r, s_a);
+      } else {
+        const Bins sun = sun_at(r_t, mu_sun_t);
+        for (int k = 0; k < kBins; ++k) {
+          s_r[k] = phase_r * sun[k];
+          s_a[k] = phase_a * sun[k];
+        }
+      }
+      for (int k = 0; k < kBins; ++k) {
+        const float source = coefficients.rayleigh[k] * s.rho_r * s_r[k] +
+                             coefficients.aerosol_scattering[k] * s.rho_a * s_a[k];
+        light[k] += throughput[k] * source * s.weight[k];
+        throughput[k] *= s.attenuation[k];
+      }
+    }
+    if (ground) {
+      const double mu_sun_g = std::clamp((r * mu_sun + length * nu) / rg, -1.0, 1.0);
+      Bins e{};
+      if (log_r) {
+        const Lerp ls = lerp(unit_from_mu_sun(mu_sun_g) * (kMuSunSize - 1), kMuSunSize);
+        for (int k = 0; k < kBins; ++k)
+          e[k] = ground_irradiance[static_cast<size_t>(ls.i)][k] * (1 - ls.a) +
+                 ground_irradiance[static_cast<size_t>(ls.i + 1)][k] * ls.a;
+      } else if (mu_sun_g > 0) {
+        const Bins sun = sun_at(rg, mu_sun_g);
+        for (int k = 0; k < kBins; ++k) e[k] = sun[k] * static_cast<float>(mu_sun_g);
+      }
+      for (int k = 0; k < kBins; ++k) light[k] += throughput[k] * e[k] * static_cast<float>(ground_albedo / kPi);
+    }
+    return light;
+  }
+
+  // Irradiance on the ground from the radiance on the grid's lowest row, per μ_s.
+  static std::vector<Bins> ground_irradiance(const std::vector<Bins>& radiance) {
+    std::vector<Bins> e(kMuSunSize, Bins{});
+    for (int j = 0; j < kMuSunSize; ++j)
+      for (int d = 0; d < kDirections; ++d) {
+        const double mu = mu_of(d / kAzimuthSize);
+        if (mu <= 0) continue;
+        const float w = static_cast<float>(mu * kDirectionWeight);
+        for (int k = 0; k < kBins; ++k)
+          e[static_cast<size_t>(j)][k] += radiance[static_cast<size_t>(j * kDirections + d)][k] * w;
+      }
+    return e;
+  }
+};
+
+ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
+                                             const AerosolSettings& aerosol, double ground_albedo)
+    : ground_radius_(transmittance.ground_radius()), top_radius_(transmittance.top_radius()) {
+  const Grid grid{medium,        transmittance,  Coefficients(medium), static_cast<float>(medium.rayleigh_gamma),
+                  AerosolPhaseFunction(aerosol), ground_albedo, ground_radius_, top_radius_};
+  const double gamma = medium.rayleigh_gamma;
+  const std::vector<float> phase_r = phase_matrix([gamma](double c) { return rayleigh_phase(c, gamma); });
+  const std::vector<float> phase_a = phase_matrix([&grid](double c) { return grid.aerosol_phase(c); });
+
+  const size_t size = static_cast<size_t>(kPoints * kDirections);
+  std::vector<Bins> radiance(size), order_r(size), order_a(size), log_r(size), log_a(size), ground;
+  std::vector<Bins> total_r(size, Bins{}), total_a(size, Bins{});
+  Bins last_sum_r{}, last_sum_a{}, before_sum_r{}, before_sum_a{};
+  for (int order = 1; order <= kOrders; ++order) {
+    // L_order at every point and direction.
+    const bool first = order == 1;
+    tbb::parallel_for(0, kPoints, [&](int p) {
+      const double r = grid.radius(p / kMuSunSize), mu_sun = Grid::mu_sun(p % kMuSunSize);
+      for (int d = 0; d < kDirections; ++d) {
+        const double mu = mu_of(d / kAzimuthSize);
+        radiance[static_cast<size_t>(p * kDirections + d)] =
+            grid.transport(first ? nullptr : &log_r, first ? nullptr : &log_a, ground, r, mu, mu_sun,
+                           nu_of(mu, mu_sun, azimuth_of(d % kAzimuthSize)));
+      }
+    });
+    ground = Grid::ground_irradiance(radiance);
+    // S_order = ∫ P L_order dω at every point.
+    tbb::parallel_for(0, kPoints, [&](int p) {
+      const size_t base = static_cast<size_t>(p * kDirections);
+      for (int d = 0; d < kDirections; ++d) {
+        Bins sr{}, sa{};
+        const float* row_r = &phase_r[static_cast<size_t>(d * kDirections)];
+        const float* row_a = &phase_a[static_cast<size_t>(d * kDirections)];
+        for (int e = 0; e < kDirections; ++e) {
+          const Bins& l = radiance[base + static_cast<size_t>(e)];
+          for (int k = 0; k < kBins; ++k) {
+            sr[k] += row_r[e] * l[k];
+            sa[k] += row_a[e] * l[k];
+          }
+        }
+        const size_t i = base + static_cast<size_t>(d);
+        order_r[i] = sr;
+        order_a[i] = sa;
+        log_r[i] = log_of(sr);
+        log_a[i] = log_of(sa);
+      }
+    });
+    before_sum_r = last_sum_r;
+    before_sum_a = last_sum_a;
+    last_sum_r = last_sum_a = Bins{};
+    for (size_t i = 0; i < size; ++i)
+      for (int k = 0; k < kBins; ++k) {
+        total_r[i][k] += order_r[i][k];
+        total_a[i][k] += order_a[i][k];
+        last_sum_r[k] += order_r[i][k];
+        last_sum_a[k] += order_a[i][k];
+      }
+  }
+  // The orders past the last: a geometric series with the ratio of the last two orders'
+  // totals over the whole table (per bin, at most 0.9).
+  for (int k = 0; k < kBins; ++k) {
+    const float q_r = before_sum_r[k] > 0 ? std::clamp(last_sum_r[k] / before_sum_r[k], 0.0f, 0.9f) : 0.0f;
+    const float q_a = before_sum_a[k] > 0 ? std::clamp(last_sum_a[k] / before_sum_a[k], 0.0f, 0.9f) : 0.0f;
+    for (size_t i = 0; i < size; ++i) {
+      total_r[i][k] += order_r[i][k] * q_r / (1 - q_r);
+      total_a[i][k] += order_a[i][k] * q_a / (1 - q_a);
+    }
+  }
+  log_rayleigh_.resize(size);
+  log_aerosol_.resize(size);
+  for (size_t i = 0; i < size; ++i) {
+    log_rayleigh_[i] = log_of(total_r[i]);
+    log_aerosol_[i] = log_of(total_a[i]);
+  }
+}
+
+ScatteringOrdersTable::Source ScatteringOrdersTable::at(double r, double mu, double mu_sun, double nu) const {
+  Bins s_r, s_a;
+  interpolate(log_rayleigh_, log_aerosol_, ground_radius_, top_radius_, r, mu, mu_sun, nu, s_r, s_a);
+  // Linear in wavelength between the table's bins.
+  Source out;
+  for (int b = 0; b + 1 < kBins; ++b) {
+    const int k0 = spectral_bin(b), k1 = spectral_bin(b + 1);
+    for (int k = k0; k <= k1; ++k) {
+      const float a = static_cast<float>(k - k0) / static_cast<float>(k1 - k0);
+      out.rayleigh[k] = s_r[b] * (1 - a) + s_r[b + 1] * a;
+      out.aerosol[k] = s_a[b] * (1 - a) + s_a[b + 1] * a;
+    }
+  }
+  return out;
+}
+
+}  // namespace skylit

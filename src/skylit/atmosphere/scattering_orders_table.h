@@ -1,0 +1,65 @@
+// Multiple scattering by iterated scattering orders (Bruneton & Neyret 2008; Bruneton
+// 2017), computed on the CPU for every wavelength bin.
+//
+// In a spherically symmetric atmosphere lit by one distant sun the radiance field
+// depends on four numbers: the radius r of a point, the cosine μ_s of the sun's zenith
+// angle there, and the direction's zenith cosine μ and azimuth φ from the sun's
+// vertical (mirror-symmetric, so φ ∈ [0, π]). The table holds, on a grid of points
+// (r, μ_s) and directions (μ, φ), the light of all orders ≥ 1 scattered at the point
+// into each direction, per unit scattering coefficient: S_R = ∫ P_R L dω and
+// S_A = ∫ P_A L dω (Rayleigh and aerosol phase functions). A point with scattering
+// coefficients σ_R, σ_A then sends σ_R·S_R + σ_A·S_A (the multiply scattered source)
+// along the view ray, which ScatteringIntegrator integrates with single scattering.
+//
+// Each order n: radiance L_n at every grid point and direction by integrating
+// σ·S_{n−1} along the ray (and the ground's Lambertian reflection of the order n − 1
+// irradiance where it ends there), then S_n = ∫ P L_n dω by a fixed quadrature over the
+// grid's directions. L_1 is single scattering plus the sunlit ground, computed along
+// the ray exactly as for the sky. Orders past the last computed one are added as the
+// geometric series of the last two (measured ratios < 0.6: docs/atmosphere.md).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "skylit/atmosphere/transmittance_table.h"
+#include "skylit/spectrum/spectrum.h"
+
+namespace skylit {
+
+struct AerosolSettings;
+
+class ScatteringOrdersTable {
+ public:
+  // Grid: altitude ∝ x³ (dense near the ground, where the aerosols are), μ_s crowded
+  // toward the horizon (the terminator), directions in equal bands of μ (equal solid
+  // angle) and of φ.
+  static constexpr int kAltitudeSize = 12, kMuSunSize = 32, kMuSize = 16, kAzimuthSize = 8;
+  static constexpr int kSegments = 16;  // along each ray, crowded where it is lowest
+  static constexpr int kOrders = 5;     // orders computed; the rest by the geometric tail
+  // Multiply scattered light is smooth in wavelength: it is computed in 8 of the 40
+  // bins, spread evenly, and interpolated linearly between them (λ^−4 curves by 0.5 %
+  // over the 25 nm between them).
+  static constexpr int kBins = 8;
+  using Bins = std::array<float, kBins>;
+
+  ScatteringOrdersTable(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
+                        const AerosolSettings& aerosol, double ground_albedo);
+
+  // ∫ P L dω for both phase functions (sr⁻¹ per unit solar irradiance, per unit σ) at
+  // radius r, direction μ, sun μ_s, ν = cos(direction, sun).
+  struct Source {
+    Spectrum rayleigh, aerosol;
+  };
+  Source at(double r, double mu, double mu_sun, double nu) const;
+
+ private:
+  struct Grid;
+  double ground_radius_, top_radius_;
+  // log S (floored) per [point][direction]: S falls by orders of magnitude across the
+  // terminator, and interpolating its logarithm follows that fall where interpolating
+  // S overshot it (docs/atmosphere.md, Twilight).
+  std::vector<Bins> log_rayleigh_, log_aerosol_;
+};
+
+}  // namespace skylit
