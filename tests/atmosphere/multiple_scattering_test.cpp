@@ -114,7 +114,9 @@ constexpr std::array<View, 6> kViews{{{"zenith", 90, 0, false},
                                       {"20 deg, 90 deg from the sun", 20, 90, false},
                                       {"10 deg away from the sun", 10, 180, false},
                                       {"horizontal plane", 90, 0, true}}};
-constexpr std::array<double, 5> kSunElevationsDeg{60, 30, 10, 4, -4};
+// The first four are above the horizon; kTwilight is −4°.
+constexpr std::array<double, 7> kSunElevationsDeg{60, 30, 10, 4, 0, -4, -8};
+constexpr int kTwilight = 5;
 constexpr int kSuns = static_cast<int>(kSunElevationsDeg.size());
 
 struct Estimate {
@@ -127,7 +129,7 @@ struct ViewResult {
   std::array<Estimate, kSuns> multiple, total;
   std::array<Estimate, kSuns> multiple_isotropic, total_isotropic;
   std::array<Estimate, kSuns> tail;  // orders ≥ 6
-  std::array<double, kSuns> model_single{}, model_full{};
+  std::array<double, kSuns> model_single{}, model_full{}, model_hillaire{};
 };
 
 class MonteCarloSky {
@@ -346,6 +348,9 @@ void print_report(const MonteCarloResults& mc);
 const MonteCarloResults& monte_carlo() {
   static const MonteCarloResults results = [] {
     static const Atmosphere atmosphere(AtmosphereSettings{}, monte_carlo_bands());
+    AtmosphereSettings hillaire_settings;
+    hillaire_settings.multiple_scattering = MultipleScatteringMethod::hillaire;
+    static const Atmosphere hillaire(hillaire_settings, monte_carlo_bands());
     const AtmosphereSettings& settings = atmosphere.settings();
     const ScatteringIntegrator single(atmosphere.medium(), atmosphere.transmittance(), nullptr, nullptr,
                                       settings.aerosol, settings.ground_albedo);
@@ -360,6 +365,8 @@ const MonteCarloResults& monte_carlo() {
               model_value(single, atmosphere.ground_radius(), bin, kViews[v], kSunElevationsDeg[s]);
           result.model_full[s] =
               model_value(atmosphere.integrator(), atmosphere.ground_radius(), bin, kViews[v], kSunElevationsDeg[s]);
+          result.model_hillaire[s] =
+              model_value(hillaire.integrator(), hillaire.ground_radius(), bin, kViews[v], kSunElevationsDeg[s]);
         }
       }
     }
@@ -406,10 +413,12 @@ TEST(MultipleScattering, MonteCarloFirstOrderMatchesSingleScattering) {
   // 1 % for the integrator's quadrature (400 segments agree with 3,200 within 0.02 %
   // for a sun above the horizon and 0.5 % at −4°, where the Earth's shadow crosses the
   // ray; the horizontal plane's 16 × 32 directions are within 0.7 % of 64 × 128).
+  // Not at −8° (the last sun): there few backward paths reach the sunlit air, and in
+  // some views none of the 51,200 does.
   const MonteCarloResults& mc = monte_carlo();
   for (int b = 0; b < 2; ++b)
     for (size_t v = 0; v < kViews.size(); ++v)
-      for (int s = 0; s < kSuns; ++s) {
+      for (int s = 0; s + 1 < kSuns; ++s) {
         const ViewResult& r = mc.views[b][v];
         const Estimate& first = r.order[s][1];
         EXPECT_NEAR(first.mean, r.model_single[s], 4.0 * first.standard_error + 0.01 * r.model_single[s])
@@ -451,10 +460,12 @@ TEST(MultipleScattering, OrdersFallGeometricallyAndConverge) {
 struct TotalDifference {
   double relative, standard_error;
 };
-TotalDifference total_difference(const ViewResult& r, int sun, bool isotropic_higher_orders) {
+// `hillaire`: the model with Hillaire's approximation, else with scattering orders.
+TotalDifference total_difference(const ViewResult& r, int sun, bool isotropic_higher_orders, bool hillaire) {
   const Estimate& multiple = isotropic_higher_orders ? r.multiple_isotropic[sun] : r.multiple[sun];
   const double reference = r.model_single[sun] + multiple.mean;
-  return {r.model_full[sun] / reference - 1.0, multiple.standard_error / reference};
+  const double model = hillaire ? r.model_hillaire[sun] : r.model_full[sun];
+  return {model / reference - 1.0, multiple.standard_error / reference};
 }
 
 std::string describe(int b, size_t v, int s) {
@@ -474,7 +485,7 @@ TEST(MultipleScattering, HillaireMatchesMonteCarloUnderItsIsotropicAssumption) {
   for (int b = 0; b < 2; ++b)
     for (size_t v = 0; v < kViews.size(); ++v)
       for (int s = 0; s < 4; ++s) {
-        const TotalDifference d = total_difference(mc.views[b][v], s, true);
+        const TotalDifference d = total_difference(mc.views[b][v], s, true, true);
         EXPECT_LT(std::abs(d.relative), 0.08 + 4.0 * d.standard_error) << describe(b, v, s);
       }
 }
@@ -486,15 +497,15 @@ TEST(MultipleScattering, TwilightMatchesMonteCarloUnderTheIsotropicAssumption) {
   // (each within 2.3σ; σ = 1.5–8.8 %). With Ψ_ms linear in 20 rows the model was
   // +8 … +53 % (650 nm, 10° away from the sun: +52.8 ± 5.0 %). Tolerance 6 % + 3σ.
   const MonteCarloResults& mc = monte_carlo();
-  const int twilight = kSuns - 1;
+  const int twilight = kTwilight;
   for (int b = 0; b < 2; ++b)
     for (size_t v = 0; v < kViews.size(); ++v) {
-      const TotalDifference d = total_difference(mc.views[b][v], twilight, true);
+      const TotalDifference d = total_difference(mc.views[b][v], twilight, true, true);
       EXPECT_LT(std::abs(d.relative), 0.06 + 3.0 * d.standard_error) << describe(b, v, twilight);
     }
 }
 
-TEST(MultipleScattering, FullModelMatchesMonteCarloOnTheHorizontalPlaneAndAtTheZenith) {
+TEST(MultipleScattering, HillaireMatchesMonteCarloOnTheHorizontalPlaneAndAtTheZenith) {
   // The physics: anisotropic scattering at every order. Hillaire's isotropic higher
   // orders put the multiply scattered light in the wrong directions (see the top of
   // this file: −21 % … +28 % in single directions), but roughly conserve it, so the
@@ -514,12 +525,30 @@ TEST(MultipleScattering, FullModelMatchesMonteCarloOnTheHorizontalPlaneAndAtTheZ
   const size_t zenith = 0, plane = kViews.size() - 1;
   for (int b = 0; b < 2; ++b) {
     for (size_t v : {zenith, plane}) {
-      const TotalDifference d = total_difference(mc.views[b][v], 0, false);
+      const TotalDifference d = total_difference(mc.views[b][v], 0, false, true);
       EXPECT_LT(std::abs(d.relative), 0.08 + 4.0 * d.standard_error) << describe(b, v, 0);
     }
-    const TotalDifference d = total_difference(mc.views[b][plane], 1, false);
+    const TotalDifference d = total_difference(mc.views[b][plane], 1, false, true);
     EXPECT_LT(std::abs(d.relative), 0.07 + 4.0 * d.standard_error) << describe(b, plane, 1);
   }
+}
+
+TEST(MultipleScattering, ScatteringOrdersMatchMonteCarloInEveryView) {
+  // The converged method against the physical paths (anisotropic scattering at every
+  // order, the aerosol's own phase function): all six views (zenith, 45° toward and
+  // away from the sun, 20° up at 90° from it, 10° up away from it, and the horizontal
+  // plane), 450 and 650 nm, suns 60°, 30°, 10°, 4°, 0° and −4°. Measured: the total
+  // within −9.1 … +4.4 % (σ 0.2–1.6 % by day, 1.5–8.8 % at −4°); Hillaire's approximation
+  // was −20 … +27 % on the same paths. Tolerance: 5 % (issue 15) plus 3σ of the Monte
+  // Carlo orders ≥ 2. At −8° the backward paths are too few to judge (σ 12–76 %, and
+  // views where the paths' estimate is far below both models): not asserted.
+  const MonteCarloResults& mc = monte_carlo();
+  for (int s = 0; s <= kTwilight; ++s)
+    for (int b = 0; b < 2; ++b)
+      for (size_t v = 0; v < kViews.size(); ++v) {
+        const TotalDifference d = total_difference(mc.views[b][v], s, false, false);
+        EXPECT_LT(std::abs(d.relative), 0.05 + 3.0 * d.standard_error) << describe(b, v, s);
+      }
 }
 
 void print_report(const MonteCarloResults& mc) {
@@ -530,16 +559,20 @@ void print_report(const MonteCarloResults& mc) {
         const auto& o = r.order[s];
         double tail = 0;
         for (int k = 6; k <= kMaxOrder; ++k) tail += o[k].mean;
-        const TotalDifference physical = total_difference(r, s, false), isotropic = total_difference(r, s, true);
+        const TotalDifference physical = total_difference(r, s, false, true),
+                              isotropic = total_difference(r, s, true, true);
+        const TotalDifference orders = total_difference(r, s, false, false);
         std::printf(
             "%s | %-28s | sun %3.0f | o1 %.4e ±%.2f%% vs single %+.2f%% | o2..o5 %.3e %.3e %.3e %.3e, >=6 %.2f%% | "
-            "model total vs MC %+.1f%% ±%.1f (ms %+.1f%%) | vs MC-iso %+.1f%% ±%.1f (ms %+.1f%%)\n",
+            "hillaire total vs MC %+.1f%% ±%.1f (ms %+.1f%%) | vs MC-iso %+.1f%% ±%.1f (ms %+.1f%%) | "
+            "orders vs MC %+.1f%% ±%.1f (ms %+.1f%%)\n",
             bin_name(b), kViews[v].name, kSunElevationsDeg[s], o[1].mean, 100 * o[1].standard_error / o[1].mean,
             100 * (o[1].mean / r.model_single[s] - 1), o[2].mean, o[3].mean, o[4].mean, o[5].mean,
             100 * tail / r.total[s].mean, 100 * physical.relative, 100 * physical.standard_error,
-            100 * ((r.model_full[s] - r.model_single[s]) / r.multiple[s].mean - 1), 100 * isotropic.relative,
+            100 * ((r.model_hillaire[s] - r.model_single[s]) / r.multiple[s].mean - 1), 100 * isotropic.relative,
             100 * isotropic.standard_error,
-            100 * ((r.model_full[s] - r.model_single[s]) / r.multiple_isotropic[s].mean - 1));
+            100 * ((r.model_hillaire[s] - r.model_single[s]) / r.multiple_isotropic[s].mean - 1), 100 * orders.relative,
+            100 * orders.standard_error, 100 * ((r.model_full[s] - r.model_single[s]) / r.multiple[s].mean - 1));
       }
 }
 

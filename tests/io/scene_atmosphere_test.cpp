@@ -49,8 +49,10 @@ TEST(SceneAtmosphere, AtmosphereSettingsAreRead) {
       "scene.json", testing::small_scene_json().replace(
                         1, 0,
                         R"( "atmosphere": {"model": "paper", "aod_550": 0.3, "angstrom_exponent": 1.0, "ozone_du": 250,
-          "ground_albedo": 0.3, "aerosol_phase": "henyey_greenstein", "asymmetry": 0.7},)")));
+          "ground_albedo": 0.3, "aerosol_phase": "henyey_greenstein", "asymmetry": 0.7,
+          "multiple_scattering": "hillaire"},)")));
   EXPECT_EQ(scene.atmosphere.model, AtmosphereModel::paper);
+  EXPECT_EQ(scene.atmosphere.multiple_scattering, MultipleScatteringMethod::hillaire);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.aod_550, 0.3);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.angstrom_exponent, 1.0);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.angstrom_exponent_short, 1.0);

@@ -196,8 +196,8 @@ struct ScatteringOrdersTable::Grid {
         }
       }
       for (int k = 0; k < kBins; ++k) {
-        const float source = coefficients.rayleigh[k] * s.rho_r * s_r[k] +
-                             coefficients.aerosol_scattering[k] * s.rho_a * s_a[k];
+        const float source =
+            coefficients.rayleigh[k] * s.rho_r * s_r[k] + coefficients.aerosol_scattering[k] * s.rho_a * s_a[k];
         light[k] += throughput[k] * source * s.weight[k];
         throughput[k] *= s.attenuation[k];
       }
@@ -237,8 +237,14 @@ struct ScatteringOrdersTable::Grid {
 ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
                                              const AerosolSettings& aerosol, double ground_albedo)
     : ground_radius_(transmittance.ground_radius()), top_radius_(transmittance.top_radius()) {
-  const Grid grid{medium,        transmittance,  Coefficients(medium), static_cast<float>(medium.rayleigh_gamma),
-                  AerosolPhaseFunction(aerosol), ground_albedo, ground_radius_, top_radius_};
+  const Grid grid{medium,
+                  transmittance,
+                  Coefficients(medium),
+                  static_cast<float>(medium.rayleigh_gamma),
+                  AerosolPhaseFunction(aerosol),
+                  ground_albedo,
+                  ground_radius_,
+                  top_radius_};
   const double gamma = medium.rayleigh_gamma;
   const std::vector<float> phase_r = phase_matrix([gamma](double c) { return rayleigh_phase(c, gamma); });
   const std::vector<float> phase_a = phase_matrix([&grid](double c) { return grid.aerosol_phase(c); });

@@ -36,7 +36,7 @@ class ScatteringOrdersTable {
   // angle) and of φ.
   static constexpr int kAltitudeSize = 12, kMuSunSize = 32, kMuSize = 16, kAzimuthSize = 8;
   static constexpr int kSegments = 16;  // along each ray, crowded where it is lowest
-  static constexpr int kOrders = 5;     // orders computed; the rest by the geometric tail
+  static constexpr int kOrders = 4;     // orders computed; the rest by the geometric tail
   // Multiply scattered light is smooth in wavelength: it is computed in 8 of the 40
   // bins, spread evenly, and interpolated linearly between them (λ^−4 curves by 0.5 %
   // over the 25 nm between them).
