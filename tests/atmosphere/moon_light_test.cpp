@@ -48,6 +48,7 @@ TEST(MoonLight, ThroughAThinAtmosphereTheIlluminanceIsTheClosedForm) {
   // phase law); two altitudes, 1.5 s each (the sky model's tables).
   const double phase = 75;
   AtmosphereSettings air = moonlit_air(phase);
+  air.air_density = AirDensity::exponential;
   air.rayleigh_scale_height_m = 1.0;
   air.aerosol.aod_550 = 0;
   air.ozone_column_du = 0;

@@ -66,9 +66,16 @@ TEST(Transmittance, ColumnDensitiesMatchBruteForceOnSlantPaths) {
     EXPECT_NEAR(fast.aerosol / slow.aerosol, 1.0, 2e-4) << c.height << " " << c.mu;
     EXPECT_NEAR(fast.ozone / slow.ozone, 1.0, 3e-3) << c.height << " " << c.mu;
   }
-  // The vertical column from sea level is the scale height (closed form, H(1 − e^(−100/H))).
+  // The vertical column from sea level: for the US Standard Atmosphere (default) its
+  // equivalent height (the 100 km top leaves out 6e-7 of it); for the exponential the
+  // closed form H(1 − e^(−100/H)).
   const ColumnDensities up = column_densities(medium, kEarth, 1.0, kTop - kEarth);
-  EXPECT_NEAR(up.rayleigh / (7994.0 * (1 - std::exp(-100e3 / 7994.0))), 1.0, 2e-4);
+  EXPECT_NEAR(up.rayleigh / AirDensityProfile::us_standard_1976().equivalent_height_m(), 1.0, 2e-4);
+  AtmosphereSettings exponential_air;
+  exponential_air.air_density = AirDensity::exponential;
+  const AtmosphereMedium exponential(exponential_air, SpectralBands::render_bins());
+  const ColumnDensities up_exponential = column_densities(exponential, kEarth, 1.0, kTop - kEarth);
+  EXPECT_NEAR(up_exponential.rayleigh / (7994.0 * (1 - std::exp(-100e3 / 7994.0))), 1.0, 2e-4);
   EXPECT_NEAR(up.aerosol / 1200.0, 1.0, 2e-4);
   EXPECT_NEAR(up.ozone / 15e3, 1.0, 3e-3);  // the tent profile's area
 }

@@ -50,9 +50,10 @@ TEST(SceneAtmosphere, AtmosphereSettingsAreRead) {
                         1, 0,
                         R"( "atmosphere": {"model": "paper", "aod_550": 0.3, "angstrom_exponent": 1.0, "ozone_du": 250,
           "ground_albedo": 0.3, "aerosol_phase": "henyey_greenstein", "asymmetry": 0.7,
-          "multiple_scattering": "hillaire"},)")));
+          "multiple_scattering": "hillaire", "air_density": "exponential"},)")));
   EXPECT_EQ(scene.atmosphere.model, AtmosphereModel::paper);
   EXPECT_EQ(scene.atmosphere.multiple_scattering, MultipleScatteringMethod::hillaire);
+  EXPECT_EQ(scene.atmosphere.air_density, AirDensity::exponential);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.aod_550, 0.3);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.angstrom_exponent, 1.0);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.angstrom_exponent_short, 1.0);

@@ -22,6 +22,13 @@ enum class MultipleScatteringMethod {
   hillaire,           // Hillaire (2020): isotropic after the first event, geometric series
 };
 
+// The air's density against altitude (air_density_profile.h). The paper's model is
+// always exponential.
+enum class AirDensity {
+  us_standard_1976,  // the US Standard Atmosphere 1976: right at 20–60 km, where twilight is lit
+  exponential,       // the paper's Eq. (1) with rayleigh_scale_height_m
+};
+
 enum class AerosolPhase { cornette_shanks, henyey_greenstein };
 
 // The aerosol types of OPAC (Hess, Koepke & Schult 1998), data/aerosol_types.csv.
@@ -57,7 +64,8 @@ struct AtmosphereSettings {
   AerosolSettings aerosol;
   double ozone_column_du = 300.0;  // total ozone in Dobson units
   double ground_albedo = 0.15;     // Lambertian, grey, for the ground seen through the air and multiple scattering
-  double rayleigh_scale_height_m = 7994;  // the paper's Eq. (1)
+  AirDensity air_density = AirDensity::us_standard_1976;
+  double rayleigh_scale_height_m = 7994;  // the paper's Eq. (1), for AirDensity::exponential
   double earth_radius_m = 6371e3;
   double top_altitude_m = 100e3;       // above sea level
   double site_elevation_m = 0.0;       // the scene's ground (z = 0) above sea level

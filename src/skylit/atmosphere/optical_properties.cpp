@@ -106,7 +106,9 @@ double aod_550_from_linke_turbidity(double linke_turbidity) {
 AtmosphereMedium::AtmosphereMedium(const AtmosphereSettings& settings, const SpectralBands& bands)
     : earth_radius_m(settings.earth_radius_m),
       site_elevation_m(settings.site_elevation_m),
-      rayleigh_scale_height_m_(settings.rayleigh_scale_height_m),
+      air_(settings.model == AtmosphereModel::full && settings.air_density == AirDensity::us_standard_1976
+               ? AirDensityProfile::us_standard_1976()
+               : AirDensityProfile::exponential(settings.rayleigh_scale_height_m)),
       aerosol_scale_height_m_(settings.aerosol.scale_height_m),
       ozone_(settings.model == AtmosphereModel::full && settings.ozone_column_du > 0) {
   const AerosolSettings& aerosol = settings.aerosol;
@@ -119,8 +121,9 @@ AtmosphereMedium::AtmosphereMedium(const AtmosphereSettings& settings, const Spe
         (rayleigh_optical_depth_sea_level(lo) + 4.0 * rayleigh_optical_depth_sea_level(0.5 * (lo + hi)) +
          rayleigh_optical_depth_sea_level(hi)) /
         6.0;
-    // The scale height fixes the sea-level coefficient: τ = β₀·H (issue 3; docs/atmosphere.md).
-    rayleigh_scattering[i] = static_cast<float>(tau_r / rayleigh_scale_height_m_);
+    // The profile's equivalent height fixes the sea-level coefficient: τ = β₀·∫ρ/ρ₀ dh
+    // (H for the exponential; issue 3; docs/atmosphere.md).
+    rayleigh_scattering[i] = static_cast<float>(tau_r / air_.equivalent_height_m());
     const double lambda = 0.5 * (lo + hi);
     const double aerosol_tau = aerosol.aod_550 * aerosol_relative_optical_depth(aerosol, lambda);
     aerosol_extinction[i] = static_cast<float>(aerosol_tau / aerosol_scale_height_m_);
@@ -134,9 +137,7 @@ AtmosphereMedium::AtmosphereMedium(const AtmosphereSettings& settings, const Spe
   rayleigh_gamma = depolarisation / (2.0 - depolarisation);
 }
 
-double AtmosphereMedium::rayleigh_density(double altitude_m) const {
-  return std::exp(-altitude_m / rayleigh_scale_height_m_);  // Eq. (1)
-}
+double AtmosphereMedium::rayleigh_density(double altitude_m) const { return air_.relative_density(altitude_m); }
 
 double AtmosphereMedium::aerosol_density(double altitude_m) const {
   // Relative to the site's ground, so that aod_550 is the column above the site.

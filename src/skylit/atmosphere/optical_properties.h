@@ -6,6 +6,7 @@
 
 #include <array>
 
+#include "skylit/atmosphere/air_density_profile.h"
 #include "skylit/atmosphere/atmosphere_settings.h"
 #include "skylit/spectrum/spectrum.h"
 
@@ -62,7 +63,8 @@ struct AtmosphereMedium {
   Spectrum extinction(double rayleigh, double aerosol, double ozone) const;
 
  private:
-  double rayleigh_scale_height_m_, aerosol_scale_height_m_;
+  AirDensityProfile air_;
+  double aerosol_scale_height_m_;
   bool ozone_;
 };
 

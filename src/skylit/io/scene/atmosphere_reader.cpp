@@ -70,9 +70,9 @@ void place_sun(const JsonReader& root, const std::optional<SiteLocation>& site, 
 }
 
 AtmosphereSettings read_atmosphere(const JsonReader& j) {
-  j.allow_only({"model", "multiple_scattering", "aerosol_type", "aod_550", "visibility_km", "linke_turbidity",
-                "angstrom_exponent", "single_scattering_albedo", "asymmetry", "aerosol_phase", "aerosol_scale_height_m",
-                "ozone_du", "ground_albedo"});
+  j.allow_only({"model", "multiple_scattering", "air_density", "aerosol_type", "aod_550", "visibility_km",
+                "linke_turbidity", "angstrom_exponent", "single_scattering_albedo", "asymmetry", "aerosol_phase",
+                "aerosol_scale_height_m", "ozone_du", "ground_albedo"});
   AtmosphereSettings a;
   if (auto m = j.optional("model"))
     a.model = m->one_of({"full", "paper"}) == "paper" ? AtmosphereModel::paper : AtmosphereModel::full;
@@ -80,6 +80,9 @@ AtmosphereSettings read_atmosphere(const JsonReader& j) {
     a.multiple_scattering = m->one_of({"scattering_orders", "hillaire"}) == "hillaire"
                                 ? MultipleScatteringMethod::hillaire
                                 : MultipleScatteringMethod::scattering_orders;
+  if (auto d = j.optional("air_density"))
+    a.air_density = d->one_of({"us_standard_1976", "exponential"}) == "exponential" ? AirDensity::exponential
+                                                                                    : AirDensity::us_standard_1976;
   if (auto t = j.optional("aerosol_type")) {
     a.aerosol = with_aerosol_type(a.aerosol, *aerosol_type_from_name(t->one_of(aerosol_type_names())));
   }
