@@ -331,7 +331,7 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
         // Each output direction: its source at every level, its radiance by the formal
         // solution, and the light scattered toward it.
         std::vector<double> source(static_cast<size_t>(levels)), body(static_cast<size_t>(levels));
-        std::vector<double> l(static_cast<size_t>(levels));
+        std::vector<double> l(static_cast<size_t>(levels)), diffuse_only(static_cast<size_t>(levels));
         for (size_t d = 0; d < directions; ++d) {
           const double uo = direction_[d], mu_o = std::abs(uo);
           for (int k = 0; k < levels; ++k) {
@@ -358,10 +358,33 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
                                           sw.exit * source[static_cast<size_t>(k)];
             }
           }
+          // The forward spike returns the diffuse radiance along the view, but not the
+          // sun's first scattering by p' in it: the beams carry the sun's single
+          // scattering with the true phase function and the spike's light after it
+          // (fog_sun_inscatter with k), and p' misplaces a sharp peak's light by tens of
+          // degrees (Nakajima and Tanaka 1988's TMS correction).
+          if (uo < 0) {
+            diffuse_only[0] = l[0];
+            for (int k = 0; k < layers; ++k) {
+              const StepWeights sw = weights(k, mu_o);
+              diffuse_only[static_cast<size_t>(k + 1)] =
+                  sw.through * diffuse_only[static_cast<size_t>(k)] +
+                  omega_scaled * (sw.entry * body[static_cast<size_t>(k)] + sw.exit * body[static_cast<size_t>(k + 1)]);
+            }
+          } else {
+            diffuse_only[static_cast<size_t>(layers)] = l[static_cast<size_t>(layers)];
+            for (int k = layers - 1; k >= 0; --k) {
+              const StepWeights sw = weights(k, mu_o);
+              diffuse_only[static_cast<size_t>(k)] =
+                  sw.through * diffuse_only[static_cast<size_t>(k + 1)] +
+                  omega_scaled * (sw.entry * body[static_cast<size_t>(k + 1)] + sw.exit * body[static_cast<size_t>(k)]);
+            }
+          }
           for (int k = 0; k < levels; ++k) {
             const size_t at = (static_cast<size_t>(k) * directions + d) * kModes + static_cast<size_t>(m);
             const double radiance = m == 0 ? std::max(0.0, l[static_cast<size_t>(k)]) : l[static_cast<size_t>(k)];
-            const double scattered = f_ * radiance + (1 - f_) * body[static_cast<size_t>(k)];
+            const double scattered =
+                f_ * diffuse_only[static_cast<size_t>(k)] + (1 - f_) * body[static_cast<size_t>(k)];
             radiance_[at][b] = static_cast<float>(radiance);
             scattered_[at][b] = static_cast<float>(m == 0 ? std::max(0.0, scattered) : scattered);
           }

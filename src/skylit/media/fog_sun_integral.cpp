@@ -79,7 +79,12 @@ double fog_sun_weight(const FogLayer& layer, double z_p, double z_v, double z_su
 Spectrum fog_sun_inscatter(const FogLayer& layer, const Vec3& viewpoint, const Vec3& view_dir, const Vec3& to_sun,
                            double s1, double s2, const Spectrum& sun_irradiance, double sun_depth_scale) {
   Spectrum out;
-  const FogSunSegment segment = fog_sun_segment(layer, viewpoint.z, view_dir.z, to_sun.z, s1, s2, sun_depth_scale);
+  // With k < 1 the forward spike's light stays in the beam both before and after the
+  // one scattering by F (δ-M's "TMS" single scattering): the optical depths toward the
+  // sun and back to the viewpoint are both scaled by k, i.e. σ becomes k·σ in the closed
+  // form, and the scattering coefficient k·σ in it is divided back by k.
+  const double k = std::clamp(sun_depth_scale, 1e-6, 1.0);
+  const FogSunSegment segment = fog_sun_segment(layer, viewpoint.z, view_dir.z, to_sun.z, s1, s2);
   if (!segment.lit) return out;
   // F(θ) is constant along the segment for parallel light (§5.1), so it factors out.
   const double scale = layer.single_scattering_albedo() * layer.phase(dot(view_dir, to_sun));
@@ -87,7 +92,7 @@ Spectrum fog_sun_inscatter(const FogLayer& layer, const Vec3& viewpoint, const V
   double last_sigma = -1.0, weight = 0.0;  // with b = 0 (the default) every bin has the same σ
   for (int i = 0; i < kSpectralBins; ++i) {
     const double s = sigma[static_cast<size_t>(i)];
-    if (s != last_sigma) weight = fog_sun_weight(segment, last_sigma = s);
+    if (s != last_sigma) weight = fog_sun_weight(segment, k * (last_sigma = s)) / k;
     out[i] = static_cast<float>(scale * sun_irradiance[i] * weight);
   }
   return out;
