@@ -94,6 +94,15 @@ void BM_Fig8Frame(benchmark::State& state) {
 }
 BENCHMARK(BM_Fig8Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Fig. 8a with the fog's multiple scattering off (arg 0, the paper's single scattering)
+// and on (arg 1): what the diffuse field and its camera table cost (docs/fog.md).
+void BM_Fig8FogMultipleScattering(benchmark::State& state) {
+  const std::filesystem::path file = std::filesystem::path(SKYLIT_SOURCE_DIR) / "examples" / "fig8a.json";
+  frames_of(state, skylit::load_scene(
+                       file, {state.range(0) == 0 ? "fog.multiple_scattering=false" : "fog.multiple_scattering=true"}));
+}
+BENCHMARK(BM_Fig8FogMultipleScattering)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The paper's Fig. 10a (sun in front of the camera, arg 0) and 10b (sun behind, arg 1).
 void BM_Fig10Frame(benchmark::State& state) {
   const std::filesystem::path file =
