@@ -107,6 +107,15 @@ TEST(FogMultipleScattering, FollowsTheSunInAzimuthWithTheDropletPhaseFunction) {
   compare(1.0, 10, 1.0, {30}, {0, 150}, 2000);
 }
 
+TEST(FogMultipleScattering, CountsTheSunsSingleScatteringOnceWithASharpPeak) {
+  // Henyey–Greenstein g = 0.99 at optical depth 1, sun 60°, looking 30° up and 30° in
+  // azimuth from it (36° from the sun): δ-M's truncated phase function puts 58 % too much
+  // light 30–60° from the sun, and while the view's diffuse radiance held the sun's first
+  // scattering by it the fast method read 1.23 of the reference; with the sun's single
+  // scattering in the beams alone, 1.08 (standard error 0.5 % with 4000 paths).
+  compare(1.0, 60, 0.99, {30}, {150}, 4000);
+}
+
 // A list of numbers from an environment variable ("1,3,10"), or `fallback` without it.
 std::vector<double> numbers_from_environment(const char* name, std::vector<double> fallback) {
   const char* text = std::getenv(name);

@@ -49,6 +49,9 @@ double fog_sun_weight(const FogLayer& layer, double z_p, double z_v, double z_su
 // [s1, s2] of the ray from `viewpoint` along the unit `view_dir`, for sunlight from the
 // unit direction `to_sun` whose irradiance on a plane facing the sun, without fog, is
 // `sun_irradiance` (W m⁻² nm⁻¹): ω·F(θ)·E·weight, cos θ = view_dir·to_sun.
+// With `sun_depth_scale` k < 1 (δ-M, media/fog_diffuse_field.h) the optical depths toward
+// the sun and back to the viewpoint are both scaled by k: the forward spike's light stays
+// in the beam before and after the one scattering by F (the "TMS" single scattering).
 Spectrum fog_sun_inscatter(const FogLayer& layer, const Vec3& viewpoint, const Vec3& view_dir, const Vec3& to_sun,
                            double s1, double s2, const Spectrum& sun_irradiance, double sun_depth_scale = 1.0);
 
