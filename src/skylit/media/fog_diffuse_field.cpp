@@ -331,6 +331,7 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
         // Each output direction: its source at every level, its radiance by the formal
         // solution, and the light scattered toward it.
         std::vector<double> source(static_cast<size_t>(levels)), body(static_cast<size_t>(levels));
+        std::vector<double> streams_source(static_cast<size_t>(levels));
         std::vector<double> l(static_cast<size_t>(levels)), diffuse_only(static_cast<size_t>(levels));
         for (size_t d = 0; d < directions; ++d) {
           const double uo = direction_[d], mu_o = std::abs(uo);
@@ -339,47 +340,38 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
             for (int t = 0; t < kStreamsAll; ++t)
               integral += out_coupling[d * kStreamsAll + static_cast<size_t>(t)] * node(k, t);
             body[static_cast<size_t>(k)] = integral;
+            streams_source[static_cast<size_t>(k)] = omega_scaled * integral;
             source[static_cast<size_t>(k)] = omega_scaled * integral + out_sun[d] * beam(k);
           }
-          if (uo < 0) {
-            l[0] = sky_out[d][static_cast<size_t>(m)][b];
-            for (int k = 0; k < layers; ++k) {
-              const StepWeights sw = weights(k, mu_o);
-              l[static_cast<size_t>(k + 1)] = sw.through * l[static_cast<size_t>(k)] +
-                                              sw.entry * source[static_cast<size_t>(k)] +
-                                              sw.exit * source[static_cast<size_t>(k + 1)];
+          // The formal solution along the direction from its boundary: the sky at the
+          // top for light travelling down, the ground's reflection at the bottom for up.
+          const double boundary = uo < 0 ? sky_out[d][static_cast<size_t>(m)][b] : ground_up;
+          auto formal_solution = [&](const std::vector<double>& src, std::vector<double>& out) {
+            if (uo < 0) {
+              out[0] = boundary;
+              for (int k = 0; k < layers; ++k) {
+                const StepWeights sw = weights(k, mu_o);
+                out[static_cast<size_t>(k + 1)] = sw.through * out[static_cast<size_t>(k)] +
+                                                  sw.entry * src[static_cast<size_t>(k)] +
+                                                  sw.exit * src[static_cast<size_t>(k + 1)];
+              }
+            } else {
+              out[static_cast<size_t>(layers)] = boundary;
+              for (int k = layers - 1; k >= 0; --k) {
+                const StepWeights sw = weights(k, mu_o);
+                out[static_cast<size_t>(k)] = sw.through * out[static_cast<size_t>(k + 1)] +
+                                              sw.entry * src[static_cast<size_t>(k + 1)] +
+                                              sw.exit * src[static_cast<size_t>(k)];
+              }
             }
-          } else {
-            l[static_cast<size_t>(layers)] = ground_up;
-            for (int k = layers - 1; k >= 0; --k) {
-              const StepWeights sw = weights(k, mu_o);
-              l[static_cast<size_t>(k)] = sw.through * l[static_cast<size_t>(k + 1)] +
-                                          sw.entry * source[static_cast<size_t>(k + 1)] +
-                                          sw.exit * source[static_cast<size_t>(k)];
-            }
-          }
+          };
+          formal_solution(source, l);
           // The forward spike returns the diffuse radiance along the view, but not the
           // sun's first scattering by p' in it: the beams carry the sun's single
           // scattering with the true phase function and the spike's light after it
           // (fog_sun_inscatter with k), and p' misplaces a sharp peak's light by tens of
           // degrees (Nakajima and Tanaka 1988's TMS correction).
-          if (uo < 0) {
-            diffuse_only[0] = l[0];
-            for (int k = 0; k < layers; ++k) {
-              const StepWeights sw = weights(k, mu_o);
-              diffuse_only[static_cast<size_t>(k + 1)] =
-                  sw.through * diffuse_only[static_cast<size_t>(k)] +
-                  omega_scaled * (sw.entry * body[static_cast<size_t>(k)] + sw.exit * body[static_cast<size_t>(k + 1)]);
-            }
-          } else {
-            diffuse_only[static_cast<size_t>(layers)] = l[static_cast<size_t>(layers)];
-            for (int k = layers - 1; k >= 0; --k) {
-              const StepWeights sw = weights(k, mu_o);
-              diffuse_only[static_cast<size_t>(k)] =
-                  sw.through * diffuse_only[static_cast<size_t>(k + 1)] +
-                  omega_scaled * (sw.entry * body[static_cast<size_t>(k + 1)] + sw.exit * body[static_cast<size_t>(k)]);
-            }
-          }
+          formal_solution(streams_source, diffuse_only);
           for (int k = 0; k < levels; ++k) {
             const size_t at = (static_cast<size_t>(k) * directions + d) * kModes + static_cast<size_t>(m);
             const double radiance = m == 0 ? std::max(0.0, l[static_cast<size_t>(k)]) : l[static_cast<size_t>(k)];
