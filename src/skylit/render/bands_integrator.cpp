@@ -11,7 +11,8 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
     : scene_(scene), sky_(scene.sky()), to_sun_(scene.to_sun()) {
   const auto obstacle = [this](const Ray& ray, const Hit& hit) { return obstacle_radiance(ray, hit); };
   sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle);
-  sliver_sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kSliverDirections));
+  one_pixel_sky_light_ =
+      std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kOnePixelDirections));
   reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
                                                   [this](const Vec3& position, const Vec3& normal) {
                                                     return sun_reaching(SurfacePoint{position, normal, 0, 0});
@@ -163,7 +164,7 @@ Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const 
   std::optional<CachedSkyLight> sky_light;
   if (context.caches.sky_light) {
     sky_light = context.caches.sky_light->interpolate(context.image_x, context.image_y, hit.point);
-    if (!sky_light) sky_light = sky_light_at(*sliver_sky_light_, hit.point, -ray.direction);
+    if (!sky_light) sky_light = sky_light_for_one_pixel(hit.point, -ray.direction);
   } else {
     sky_light = sky_light_at(hit.point, -ray.direction);
   }

@@ -8,8 +8,8 @@
 // The image loop (image_loop.h) and the tests call the same function, radiance(); the
 // loop only hands it what it found once for the whole image (the surface a pixel's
 // centre sees, the cached sky light and lamp glow), and each of these is computed
-// exactly where it is not given (but for the sky light of a sample on a sliver that the
-// cache lacks: with fewer directions, kSliverDirections).
+// exactly where it is not given (but for the sky light of what stands for one pixel or
+// less: with fewer directions, kOnePixelDirections).
 #pragma once
 
 #include <memory>
@@ -83,12 +83,19 @@ class BandsIntegrator {
     return sky_light_at(*sky_light_, point, to_viewer);
   }
 
-  // Obstruction directions for a sample whose surface the image's cache has no value
-  // for: a sliver that no pixel centre within 2 pixels sees, narrower than a pixel, so
-  // that only some of a pixel's antialiasing samples fall on it. A quarter of the
+  // The same with kOnePixelDirections: for a value that stands for one pixel at most (the
+  // cache's per-pixel level).
+  CachedSkyLight sky_light_for_one_pixel(const SurfacePoint& point, const Vec3& to_viewer) const {
+    return sky_light_at(*one_pixel_sky_light_, point, to_viewer);
+  }
+
+  // Obstruction directions for sky light that stands for one pixel or less: the image
+  // cache's per-pixel level (a pixel centre that no grid point covers, shared only by
+  // that pixel's antialiasing samples) and a sample whose surface the cache has no
+  // value for (a sliver that no pixel centre within 2 pixels sees). A quarter of the
   // directions; what this changes in the image is measured against the exact sky light
   // by tests/render/sky_light_accuracy_test.cpp (docs/sky-light.md).
-  static constexpr int kSliverDirections = 256;
+  static constexpr int kOnePixelDirections = 256;
 
   // The sunlight that glass and metal facades reflect onto the surface at `point`
   // (W m⁻² nm⁻¹, on the side its normal faces): the rough facades' from `cached`
@@ -134,7 +141,7 @@ class BandsIntegrator {
   const SkyModel& sky_;
   Vec3 to_sun_;
   std::unique_ptr<SkyLight> sky_light_;
-  std::unique_ptr<SkyLight> sliver_sky_light_;  // kSliverDirections
+  std::unique_ptr<SkyLight> one_pixel_sky_light_;  // kOnePixelDirections
   std::unique_ptr<ReflectedSun> reflected_sun_;
 };
 

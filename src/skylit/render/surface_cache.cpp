@@ -141,7 +141,7 @@ std::vector<std::vector<int>> uncovered_pixels(const PrimaryHits& hits, const Co
 
 }  // namespace
 
-SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute)
+SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, const Compute& compute_one_pixel)
     : coarse_(hits.width(), hits.height(), kCoarseSpacing),
       fine_(hits.width(), hits.height(), kFineSpacing),
       pixel_(hits.width(), hits.height(), kPixelSpacing) {
@@ -166,7 +166,7 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute)
       hits, [&](double x, double y, const SurfacePoint& p) { return from_grids(x, y, p).has_value(); });
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y]) pixel_.want(x, static_cast<int>(y));
-  pixel_.compute_wanted(hits, compute);
+  pixel_.compute_wanted(hits, compute_one_pixel ? compute_one_pixel : compute);
 }
 
 std::optional<CachedSkyLight> SurfaceCache::from_grids(double x, double y, const SurfacePoint& point) const {

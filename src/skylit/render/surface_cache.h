@@ -44,8 +44,9 @@ class SurfaceCache {
 
   // From the surfaces seen at every pixel centre: computes the coarse grid, the fine
   // grid where the coarse one does not cover a pixel's surface, and the pixel's own
-  // centre where neither does; in parallel.
-  SurfaceCache(const PrimaryHits& hits, const Compute& compute);
+  // centre where neither does, the last with `compute_one_pixel` if given (a value that
+  // stands for one pixel may be found more coarsely); in parallel.
+  SurfaceCache(const PrimaryHits& hits, const Compute& compute, const Compute& compute_one_pixel = {});
 
   // The value for a surface point seen at image position (x, y) in pixels: interpolated
   // from the coarse grid or else the fine one; else the nearest fine grid point within 8
