@@ -8,8 +8,11 @@
 namespace skylit {
 
 BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
-    : scene_(scene), sky_(scene.sky()), to_sun_(scene.to_sun()) {
-  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return obstacle_radiance(ray, hit); };
+    : scene_(scene),
+      sky_(scene.sky()),
+      to_sun_(scene.to_sun()),
+      obstacle_materials_(obstacle_materials(scene.scene().materials)) {
+  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_radiance(ray, hit); };
   sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle);
   one_pixel_sky_light_ =
       std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kOnePixelDirections));
@@ -73,25 +76,31 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
   return reaching;
 }
 
-Radiance BandsIntegrator::lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer) const {
+Radiance BandsIntegrator::lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer,
+                                                       const Material& material) const {
   const Irradiance irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
                                 sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
-  const PointMaterial material = scene_.material_at(point);
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
-  return lambertian_radiance(diffuse_albedo(material.get(), dot(point.normal, to_viewer)), irradiance);
+  return lambertian_radiance(diffuse_albedo(material, dot(point.normal, to_viewer)), irradiance);
 }
 
-Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit) const {
-  const SurfacePoint point = scene_.surface_point(ray, hit);
+Radiance BandsIntegrator::element_obstacle_radiance(const Ray& ray, const Hit& hit) const {
+  const SurfacePoint point = scene_.untextured_point(ray, hit);
+  return obstacle_radiance(ray, point, obstacle_materials_[point.material]);
+}
+
+Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& body) const {
   const Vec3 to_viewer = -ray.direction;
-  Radiance radiance = lambertian_obstacle_radiance(point, to_viewer);
+  Radiance radiance = lambertian_obstacle_radiance(point, to_viewer, body);
   const Reflectance fresnel = specular_fresnel(scene_.material(point.material), dot(point.normal, to_viewer));
   if (fresnel.is_black()) return radiance;
   const Ray mirrored{offset_from_surface(point.position, point.normal), mirror_direction(point.normal, to_viewer)};
-  if (const std::optional<Hit> next = scene_.tracer().intersect(mirrored))
+  if (const std::optional<Hit> next = scene_.tracer().intersect(mirrored)) {
+    const SurfacePoint seen = scene_.untextured_point(mirrored, *next);
     return radiance +
-           fresnel * lambertian_obstacle_radiance(scene_.surface_point(mirrored, *next), -mirrored.direction);
+           fresnel * lambertian_obstacle_radiance(seen, -mirrored.direction, obstacle_materials_[seen.material]);
+  }
   return radiance + fresnel * sky_.sky_radiance_near_ground(mirrored.direction) * sky_share(point.position.z);
 }
 
@@ -110,7 +119,11 @@ Irradiance BandsIntegrator::reflected_sun(const SurfacePoint& point, const Cache
 
 Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direction) const {
   const Ray ray{offset_from_surface(point.position, point.normal), direction};
-  if (const std::optional<Hit> hit = scene_.tracer().intersect(ray)) return obstacle_radiance(ray, *hit);
+  if (const std::optional<Hit> hit = scene_.tracer().intersect(ray)) {
+    // Seen in the mirror by the camera: with its textures.
+    const SurfacePoint seen = scene_.surface_point(ray, *hit);
+    return obstacle_radiance(ray, seen, scene_.material_at(seen).get());
+  }
   return sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction);
 }
 

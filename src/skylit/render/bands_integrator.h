@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "skylit/render/lamp_glow_image.h"
+#include "skylit/render/obstacle_materials.h"
 #include "skylit/render/prepared_scene.h"
 #include "skylit/render/primary_hits.h"
 #include "skylit/render/reflected_sun.h"
@@ -134,8 +135,14 @@ class BandsIntegrator {
   // metal, the sky or the Lambertian obstacle it mirrors (its Fresnel reflectance times
   // the light from the mirror direction: a glossy lobe's blur is left out, the sky being
   // smooth; the sun it reflects is ReflectedSun's).
-  Radiance obstacle_radiance(const Ray& ray, const Hit& hit) const;
-  Radiance lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer) const;
+  // `body` is the material of the obstacle's Lambertian part (textured or not); what it
+  // mirrors is seen by its materials' means.
+  Radiance obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& body) const;
+  // The same for a ray that stands for a sky element: textures by their means
+  // (render/obstacle_materials.h).
+  Radiance element_obstacle_radiance(const Ray& ray, const Hit& hit) const;
+  Radiance lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer,
+                                        const Material& material) const;
 
   const PreparedScene& scene_;
   const SkyModel& sky_;
@@ -143,6 +150,7 @@ class BandsIntegrator {
   std::unique_ptr<SkyLight> sky_light_;
   std::unique_ptr<SkyLight> one_pixel_sky_light_;  // kOnePixelDirections
   std::unique_ptr<ReflectedSun> reflected_sun_;
+  std::vector<Material> obstacle_materials_;  // per scene material: what obstacle rays see
 };
 
 }  // namespace skylit

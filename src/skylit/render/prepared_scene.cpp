@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "skylit/core/angles.h"
+#include "skylit/render/obstacle_materials.h"
 #include "skylit/spectrum/rgb_spectrum_table.h"
 
 namespace skylit {
@@ -76,14 +77,7 @@ std::array<double, 2> uv_change(const Vec3& e1, const Vec3& e2, const std::array
 
 void PreparedScene::appearance_at(const SurfaceAppearance& appearance, const SceneObject& object, const Hit& hit,
                                   const Ray& ray, SurfacePoint& point) const {
-  const std::array<float, 3> mean_color = [&] {
-    std::array<float, 3> c{};
-    if (appearance.base_color) {
-      const Rgba m = appearance.base_color->mean();
-      for (size_t i = 0; i < 3; ++i) c[i] = static_cast<float>(appearance.base_color_factor[i]) * m[i];
-    }
-    return c;
-  }();
+  const std::array<float, 3> mean_color = mean_base_color(appearance);
   Rgba color{mean_color[0], mean_color[1], mean_color[2], 1}, emission{1, 1, 1, 1};
   if (!object.corner_uvs.empty()) {
     const CornerUvs& uv = object.corner_uvs[hit.triangle];

@@ -56,14 +56,20 @@ class PreparedScene {
   // (appearance_at); where it shines, so does the point; where it has a normal map, the
   // normal is the map's (normal_mapped).
   SurfacePoint surface_point(const Ray& ray, const Hit& hit) const {
+    SurfacePoint point = untextured_point(ray, hit);
+    if (const SurfaceAppearance* a = scene_.materials[point.material].appearance.get())
+      appearance_at(*a, scene_.objects[hit.mesh_id], hit, ray, point);
+    return point;
+  }
+  // The same without the textures' look-ups (no texture colour, emission or normal
+  // map): for a ray that stands for a whole sky element (render/obstacle_materials.h).
+  SurfacePoint untextured_point(const Ray& ray, const Hit& hit) const {
     const SceneObject& object = scene_.objects[hit.mesh_id];
     SurfacePoint point{ray.origin + hit.t * ray.direction, hit.geometric_normal, hit.t,
                        object.material_of(hit.triangle)};
     const bool front = dot(point.normal, ray.direction) <= 0;
     if (!front) point.normal = -point.normal;
     if (!object.corner_normals.empty()) shade_smooth(object, hit, ray, front, point);
-    if (const SurfaceAppearance* a = scene_.materials[point.material].appearance.get())
-      appearance_at(*a, object, hit, ray, point);
     return point;
   }
   const Material& material(uint32_t index) const { return scene_.materials[index].material; }
