@@ -1,5 +1,5 @@
 // The sky-light cache (render/surface_cache.h) and the fewer directions of sliver samples
-// (BandsIntegrator::kSliverDirections) against the exact sky light at every sample, on a
+// (BandsIntegrator::kOnePixelDirections) against the exact sky light at every sample, on a
 // dense model: 8 × 8 copies of examples/models/house.obj (886 triangles, 7 materials
 // each) seen from afar at 320 × 180, where nearly every pixel is an edge. Heavy (the
 // exact image takes about a minute here): run with SKYLIT_SKY_LIGHT_ACCURACY=1;
@@ -66,7 +66,7 @@ TEST(SkyLightAccuracy, CacheAndSliverSamplesStayCloseToTheExactSkyLight) {
               100.0 * static_cast<double>(beyond) / static_cast<double>(deviations.size()));
   // Measured on these 64 houses (2026-12-02): with sliver samples from all 1024
   // directions (the cache's own error) mean ratio 1.00288, 99th percentile 17.5 %, 4.0 %
-  // of pixels beyond 5 %; with kSliverDirections the same to 1e-4. The errors are the
+  // of pixels beyond 5 %; with kOnePixelDirections the same to 1e-4. The errors are the
   // cache's: sky light taken from a neighbouring point of the same material and plane
   // (window frames and roof facets a pixel wide). The bounds leave those a margin of
   // 2.5 points; a systematic error (a wrong direction set, a misplaced look-up) moves
