@@ -38,7 +38,10 @@ TEST(Renderer, HorizontalPlaneHasLambertLuminance) {
     const double expected = 0.6 * (e_direct + e_sky) / kPi;
     for (int y = 0; y < 8; y += 7)
       for (int x = 0; x < 8; x += 7) EXPECT_NEAR(image.at(x, y).y, expected, 0.005 * expected) << altitude;
-    EXPECT_GT(e_direct, e_sky);  // a clear sky: the sun dominates above 10°
+    // A clear sky: the sun dominates on a horizontal plane once it is well up. At 10° the
+    // two are comparable (the beam's horizontal share is sin 10° = 0.17 of its normal
+    // illuminance; with converged multiple scattering the diffuse is 1.05 times it).
+    if (altitude >= 30) EXPECT_GT(e_direct, e_sky);
   }
 }
 
