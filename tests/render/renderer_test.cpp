@@ -41,7 +41,9 @@ TEST(Renderer, HorizontalPlaneHasLambertLuminance) {
     // A clear sky: the sun dominates on a horizontal plane once it is well up. At 10° the
     // two are comparable (the beam's horizontal share is sin 10° = 0.17 of its normal
     // illuminance; with converged multiple scattering the diffuse is 1.05 times it).
-    if (altitude >= 30) EXPECT_GT(e_direct, e_sky);
+    if (altitude >= 30) {
+      EXPECT_GT(e_direct, e_sky);
+    }
   }
 }
 
