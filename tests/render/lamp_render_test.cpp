@@ -21,6 +21,20 @@ constexpr double kReflectance = 0.5;
 
 // A dark night (sun 40° below the horizon: no twilight; no night sky), a grey ground, one isotropic
 // 1000 cd LED lamp 5 m up.
+// A fog of one extinction coefficient everywhere the lamps' rays go (from 50 m below the
+// ground to 1 km up), scattering isotropically: the closed forms' medium.
+FogSettings homogeneous_isotropic_fog(double extinction_per_m) {
+  FogSettings fog;
+  fog.density_at_ground = 1.0;
+  fog.unit_density_extinction_per_m = extinction_per_m;
+  fog.scale_height_m = std::numeric_limits<double>::infinity();
+  fog.bottom_altitude_m = -50;
+  fog.top_altitude_m = 1000;
+  fog.phase = FogPhase::henyey_greenstein;
+  fog.asymmetry = 0;
+  return fog;
+}
+
 Scene night_scene() {
   Scene scene;
   scene.camera = Camera{{0, -20, 1.6}, {0, 0, 0}, {0, 0, 1}, 50.0};
@@ -91,15 +105,7 @@ TEST(LampRender, GlowInHomogeneousFogFallsOffAsTheClosedForm) {
   scene.objects.push_back({"ground", make_ground_plane({0, 0, -100}, 2000), 0});
   scene.lights[0] = {"lamp", Luminaire({0, 30, 10}, IntensityDistribution::isotropic(1000.0)),
                      scene.lights[0].spectrum_per_candela};
-  FogSettings fog;
-  fog.density_at_ground = 1.0;
-  fog.unit_density_extinction_per_m = 0.01;
-  fog.scale_height_m = std::numeric_limits<double>::infinity();
-  fog.bottom_altitude_m = -50;
-  fog.top_altitude_m = 1000;
-  fog.phase = FogPhase::henyey_greenstein;
-  fog.asymmetry = 0;
-  scene.fog = fog;
+  scene.fog = homogeneous_isotropic_fog(0.01);
   const Renderer renderer(scene);
   double previous = std::numeric_limits<double>::infinity();
   for (double offset : {0.5, 2.0, 8.0, 30.0}) {
@@ -186,15 +192,7 @@ Scene fog_scene(double y_board) {
   if (y_board > 0) scene.objects.push_back({"board", make_box({-3, y_board, -50}, {3, y_board + 1, 60}), 0});
   scene.lights[0] = {"lamp", Luminaire({0, 0, 10}, IntensityDistribution::isotropic(kCandela)),
                      scene.lights[0].spectrum_per_candela};
-  FogSettings fog;
-  fog.density_at_ground = 1.0;
-  fog.unit_density_extinction_per_m = kSigma;
-  fog.scale_height_m = std::numeric_limits<double>::infinity();
-  fog.bottom_altitude_m = -50;
-  fog.top_altitude_m = 1000;
-  fog.phase = FogPhase::henyey_greenstein;
-  fog.asymmetry = 0;
-  scene.fog = fog;
+  scene.fog = homogeneous_isotropic_fog(kSigma);
   return scene;
 }
 
