@@ -36,8 +36,7 @@ constexpr double kHuge = 1e300;
 
 }  // namespace
 
-FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2,
-                              double k) {
+FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2) {
   FogSunSegment out;
   if (!(z_sun > 0.0)) return out;  // no direct sunlight with the sun at or below the horizon
   const RaySpan span = layer.clip(z_p, z_v, std::max(s1, 0.0), s2);
@@ -48,11 +47,11 @@ FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, dou
   out.lit = true;
   out.viewer_to_start = layer.column(z_p, z_v, 0.0, span.lo);
   out.segment = layer.piece_column(z_a, rise, length);
-  out.sun_from_start = std::min(k * layer.sun_column(z_a, z_sun), kOpaqueColumnM);
-  out.sun_from_end = std::min(k * layer.sun_column(z_b, z_sun), kOpaqueColumnM);
-  // (z_L − k·z_v)/z_L rather than 1 − k·z_v/z_L: for k = 1 the difference of nearly
-  // equal cosines is exact, so ε keeps its relative precision as z_v → z_L.
-  out.slope_mismatch = std::clamp((z_sun - k * z_v) / z_sun, -kHuge, kHuge);
+  out.sun_from_start = std::min(layer.sun_column(z_a, z_sun), kOpaqueColumnM);
+  out.sun_from_end = std::min(layer.sun_column(z_b, z_sun), kOpaqueColumnM);
+  // (z_L − z_v)/z_L rather than 1 − z_v/z_L: the difference of nearly equal cosines is
+  // exact, so ε keeps its relative precision as z_v → z_L.
+  out.slope_mismatch = std::clamp((z_sun - z_v) / z_sun, -kHuge, kHuge);
   return out;
 }
 

@@ -25,17 +25,12 @@ struct FogSunSegment {
   bool lit = false;              // false: no part in the layer, or the sun at/below the horizon
   double viewer_to_start = 0.0;  // from the viewpoint to a (t(a) = σ·this)
   double segment = 0.0;          // from a to b
-  double sun_from_start = 0.0;   // k × the column from z(a) toward the sun (k·t'(a) = σ·this)
+  double sun_from_start = 0.0;   // the column from z(a) toward the sun (t'(a) = σ·this)
   double sun_from_end = 0.0;     // the same from z(b)
-  double slope_mismatch = 0.0;   // ε = 1 − k·z_v/z_L: d(t + k·t')/ds = ε·τ(s)
+  double slope_mismatch = 0.0;   // ε = 1 − z_v/z_L: d(t + t')/ds = ε·τ(s)
 };
 
-// `sun_depth_scale` k multiplies the fog's optical depth toward the sun: 1 for the
-// direct beam alone, 1 − ωf to keep the light of the phase function's forward spike in
-// it (δ-M scaling, media/fog_diffuse_field.h). The closed form holds for any k: then
-// d(t + k·t')/ds = (1 − k·z_v/z_L)·τ(s).
-FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2,
-                              double sun_depth_scale = 1.0);
+FogSunSegment fog_sun_segment(const FogLayer& layer, double z_p, double z_v, double z_sun, double s1, double s2);
 
 // ∫ σρ(s)·e^(−t'(s))·e^(−t(s)) ds over the segment for an extinction at unit density σ
 // (m⁻¹): a pure number in [0, 1]. Finite and ≥ 0 for any finite input.
