@@ -39,6 +39,11 @@ heavy=(
   SkyLight.UnobstructedIrradianceMatchesADenseQuadratureOfTheSky
   SkyIrradiance.MatchesABruteForceIntegralOverTheSphere
   MultipleScattering.MonteCarloFirstOrderMatchesSingleScattering
+  # the same Monte Carlo reference (about 25 s of CPU in Release, both estimators), which
+  # whichever of these runs first in a shard computes.
+  MultipleScattering.SunlitLineEstimatorAgreesWithTheCollisionEstimator
+  MultipleScattering.SunlitLineFirstOrderMatchesSingleScattering
+  MultipleScattering.ScatteringOrdersMatchTheSunlitLineEstimatorAtTwilight
   # issue 20: some twenty small renders to compare merged shards with one process;
   # the shards' file format (XyzFile) and the animation (AnimateCommand) run here.
   SplitRuns.ShardsMergeIntoTheSameSweepAndAnimation

@@ -7,22 +7,26 @@
 // thin sunlit air (standard errors of 12–76 %, views with no such path at all).
 //
 // This estimator follows the same backward paths (observer, delta-tracked free flights,
-// the same direction sampling, Lambertian ground, Russian roulette) but scores each
-// free flight by the expected value of the collision estimator at its end: from a
-// vertex x along w, up to t_max (the ground or the top of the atmosphere),
-//   ∫₀^t_max T(x, x + tw) (σ_R P_R(w·s) + σ_A P_A(w·s)) T_sun(x + tw) dt
-//     + T(x, x + t_max w) (albedo/π) cos θ_s T_sun  if the flight ends on the ground,
+// the same direction sampling, Lambertian ground, Russian roulette) but scores at each
+// vertex x the expected value of the collision estimator at the next vertex along a
+// line (x, v): up to t_max (the ground or the top of the atmosphere),
+//   ∫₀^t_max T(x, x + tv) (σ_R P_R(v·s) + σ_A P_A(v·s)) T_sun(x + tv) dt
+//     + T(x, x + t_max v) (albedo/π) cos θ_s T_sun  if the line ends on the ground,
 // which is what the collision (with probability density σ_t T, weight σ_s/σ_t, and the
-// mixed phase function) or the ground hit scores on average. The integrand vanishes in
-// the Earth's shadow, a cylinder of the ground's radius behind the Earth, so the
-// samples are drawn only on the rest of the line: the line is cut into cells there,
-// each cell weighted by the integrand at its middle (90 %) and by its length (10 %, so
-// that no sunlit point has zero density), and 8 samples are drawn stratified over that
-// piecewise-constant density. T(x, x + tw) is estimated by ratio tracking (Novák,
-// Selle & Jarosz 2014) against a majorant twice the air's densest extinction on each of
-// 16 pieces of the line, so every factor is at least ½. Every step is an unbiased
-// estimate of the one before, so the estimator is unbiased; it scores every vertex
-// whose line crosses sunlit air, which at −8° is most of them.
+// mixed phase function) or the ground hit scores on average. Order 1 takes the view
+// ray itself; at later vertices v is drawn, apart from the path's own next direction,
+// from an equal mixture of that direction's density and a Henyey–Greenstein lobe
+// (g = 0.75) about the horizon under the sun, where the sunlit air is lowest and
+// densest at twilight, and weighted by the vertex's phase function (or the ground's
+// BRDF) over the mixture's density. The integrand vanishes in the Earth's shadow, a
+// cylinder of the ground's radius behind the Earth, so the line is sampled only on the
+// rest: cut into cells there, each weighted by the integrand at its middle (90 %) and by
+// its length (10 %, so that no sunlit point has zero density), with 8 samples
+// stratified over that piecewise-constant density. T(x, x + tv) is estimated by ratio
+// tracking (Novák, Selle & Jarosz 2014) against a majorant twice the densest extinction
+// on each of 16 pieces of the line, so every factor is at least ½. Each step is an
+// unbiased estimate of the one it replaces, so the estimator is unbiased; it scores
+// every vertex from which the drawn line crosses sunlit air, which at −8° is most.
 //
 // Shared with the model, as for MonteCarloSky: the medium's coefficients and density
 // profiles, the phase functions, and TransmittanceTable::to_top for the sun (zero in the
@@ -131,11 +135,10 @@ class SunlitLineSky {
       // sun (all suns share its azimuth), where the sunlit air lies low at twilight.
       const Vec3 up = normalize(p);
       const Vec3 horizon = normalize(kSunAzimuth - up * dot(kSunAzimuth, up));
-      const Vec3 v = random.uniform() < 0.5
-                         ? sample_continuation()
-                         : around(horizon, sample_henyey_greenstein(kLobeG, random.uniform()), 2.0 * kPi * random.uniform());
-      const double pdf_v =
-          0.5 * continuation_pdf(v) + 0.5 * henyey_greenstein_phase(dot(v, horizon), kLobeG);
+      const Vec3 v = random.uniform() < 0.5 ? sample_continuation()
+                                            : around(horizon, sample_henyey_greenstein(kLobeG, random.uniform()),
+                                                     2.0 * kPi * random.uniform());
+      const double pdf_v = 0.5 * continuation_pdf(v) + 0.5 * henyey_greenstein_phase(dot(v, horizon), kLobeG);
       const double f_v = scattered(v);
       if (f_v > 0) score(bin, k, p, v, weight * f_v / pdf_v, order, random, steps, tally);
 
@@ -155,9 +158,9 @@ class SunlitLineSky {
   struct Density {
     double rayleigh, aerosol_scattering, extinction;  // σ_R, σ_A, σ_t (m⁻¹)
   };
-  static constexpr int kPieces = 16;     // of the line, each with its own majorant
-  static constexpr int kCells = 16;      // of the sunlit part, for the sampling density
-  static constexpr int kSamples = 8;     // stratified over the cells' density
+  static constexpr int kPieces = 16;  // of the line, each with its own majorant
+  static constexpr int kCells = 16;   // of the sunlit part, for the sampling density
+  static constexpr int kSamples = 8;  // stratified over the cells' density
   static constexpr double kShadowMarginM = 5e3;
   // The gathering lobe: Henyey–Greenstein about the horizon under the sun.
   static constexpr double kLobeG = 0.75;
