@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 
 #include <tbb/parallel_for.h>
@@ -11,6 +13,7 @@
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/atmosphere/sun_zenith_rows.h"
 #include "skylit/core/vec3.h"
+#include "skylit/spectrum/spectral_math.h"
 
 namespace skylit {
 
@@ -65,55 +68,103 @@ Bins log_of(const Bins& v) {
   return out;
 }
 
-// S at any (r, μ, μ_s, ν) by multilinear interpolation of log S on the grid.
-void interpolate(const std::vector<Bins>& log_r, const std::vector<Bins>& log_a, double rg, double rt, double r,
-                 double mu, double mu_sun, double nu, Bins& out_r, Bins& out_a) {
+// Where a point (r, μ, μ_s, ν) falls in the table: each axis's lower grid index and
+// the fraction toward the next, and how far past the outermost band of μ it lies (0 … 1).
+struct TableCoordinates {
+  uint8_t altitude, mu_sun, mu, azimuth;
+  float a_altitude, a_mu_sun, a_mu, a_azimuth;
+  float pole;
+};
+
+TableCoordinates coordinates(double rg, double rt, double r, double mu, double mu_sun, double nu) {
   const double denominator = std::sqrt(std::max(0.0, (1.0 - mu * mu) * (1.0 - mu_sun * mu_sun)));
   const double azimuth = denominator < 1e-9 ? 0.0 : std::acos(std::clamp((nu - mu * mu_sun) / denominator, -1.0, 1.0));
+  const double f_mu = (mu + 1.0) * 0.5 * Table::kMuSize - 0.5;
   const Lerp lr = lerp(unit_from_altitude(r - rg, rt - rg) * (Table::kAltitudeSize - 1), Table::kAltitudeSize);
   const Lerp ls = lerp(unit_from_mu_sun(mu_sun) * (Table::kMuSunSize - 1), Table::kMuSunSize);
-  const Lerp lm = lerp((mu + 1.0) * 0.5 * Table::kMuSize - 0.5, Table::kMuSize);
+  const Lerp lm = lerp(f_mu, Table::kMuSize);
   const Lerp lp = lerp(azimuth / kPi * Table::kAzimuthSize - 0.5, Table::kAzimuthSize);
-  Bins sum_r{}, sum_a{};
-  for (int c = 0; c < 16; ++c) {
-    const int di = c & 1, dj = (c >> 1) & 1, dm = (c >> 2) & 1, dp = (c >> 3) & 1;
-    const float w = (di ? lr.a : 1 - lr.a) * (dj ? ls.a : 1 - ls.a) * (dm ? lm.a : 1 - lm.a) * (dp ? lp.a : 1 - lp.a);
-    if (w == 0.0f) continue;
-    const size_t point = static_cast<size_t>((lr.i + di) * Table::kMuSunSize + ls.i + dj);
-    const size_t index = point * kDirections + static_cast<size_t>((lm.i + dm) * Table::kAzimuthSize + lp.i + dp);
-    for (int k = 0; k < kBins; ++k) {
-      sum_r[k] += w * log_r[index][k];
-      sum_a[k] += w * log_a[index][k];
-    }
-  }
   // Beyond the outermost band of μ toward the zenith or the nadir every azimuth meets
   // in one direction: blend toward the mean over φ of the outermost band, so that the
   // light there does not depend on the azimuth (clamping left a 2–4 % seam at the zenith).
-  const double f_mu = (mu + 1.0) * 0.5 * Table::kMuSize - 0.5;
   const float pole = static_cast<float>(std::clamp(2.0 * std::max(-f_mu, f_mu - (Table::kMuSize - 1)), 0.0, 1.0));
-  if (pole > 0) {
-    const int row = f_mu < 0 ? 0 : Table::kMuSize - 1;
+  return {static_cast<uint8_t>(lr.i),
+          static_cast<uint8_t>(ls.i),
+          static_cast<uint8_t>(lm.i),
+          static_cast<uint8_t>(lp.i),
+          lr.a,
+          ls.a,
+          lm.a,
+          lp.a,
+          pole};
+}
+
+// e^x in single precision for the interpolated logarithms (Cephes' expf polynomial as
+// in exp_nonpositive, relative error below 2e-7), for x of either sign up to 88;
+// branch-free so that the 8 bins go through it together (libm's expf took a tenth of
+// the tables' time).
+inline float exp_of_log(float x) {
+  x = std::min(std::max(x, -87.0f), 88.0f);
+  const float t = x * 1.44269504088896341f;                    // x / ln 2
+  const int n = static_cast<int>(t + std::copysign(0.5f, t));  // nearest integer
+  const float fn = static_cast<float>(n);
+  const float r = x - fn * 0.693359375f + fn * 2.12194440e-4f;  // x − n ln 2 in two parts
+  float p = 1.9875691500e-4f;
+  p = p * r + 1.3981999507e-3f;
+  p = p * r + 8.3334519073e-3f;
+  p = p * r + 4.1665795894e-2f;
+  p = p * r + 1.6666665459e-1f;
+  p = p * r + 5.0000001201e-1f;
+  const float y = p * r * r + r + 1.0f;
+  const int32_t bits = (n + 127) << 23;  // 2^n
+  float scale;
+  std::memcpy(&scale, &bits, sizeof scale);
+  return y * scale;
+}
+
+// S at a table position by multilinear interpolation of log S on the grid.
+void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c, Bins& out_r, Bins& out_a) {
+  Bins sum_r{}, sum_a{};
+  for (int corner = 0; corner < 16; ++corner) {
+    const int di = corner & 1, dj = (corner >> 1) & 1, dm = (corner >> 2) & 1, dp = (corner >> 3) & 1;
+    const float w = (di ? c.a_altitude : 1 - c.a_altitude) * (dj ? c.a_mu_sun : 1 - c.a_mu_sun) *
+                    (dm ? c.a_mu : 1 - c.a_mu) * (dp ? c.a_azimuth : 1 - c.a_azimuth);
+    if (w == 0.0f) continue;
+    const size_t point = static_cast<size_t>((c.altitude + di) * Table::kMuSunSize + c.mu_sun + dj);
+    const size_t index = point * kDirections + static_cast<size_t>((c.mu + dm) * Table::kAzimuthSize + c.azimuth + dp);
+    for (int k = 0; k < kBins; ++k) {
+      sum_r[k] += w * logs[index].rayleigh[k];
+      sum_a[k] += w * logs[index].aerosol[k];
+    }
+  }
+  if (c.pole > 0) {
+    const int row = c.mu == 0 ? 0 : Table::kMuSize - 1;
     Bins mean_r{}, mean_a{};
-    for (int c = 0; c < 4; ++c) {
-      const int di = c & 1, dj = (c >> 1) & 1;
-      const float w = (di ? lr.a : 1 - lr.a) * (dj ? ls.a : 1 - ls.a) / Table::kAzimuthSize;
-      const size_t point = static_cast<size_t>((lr.i + di) * Table::kMuSunSize + ls.i + dj);
+    for (int corner = 0; corner < 4; ++corner) {
+      const int di = corner & 1, dj = (corner >> 1) & 1;
+      const float w = (di ? c.a_altitude : 1 - c.a_altitude) * (dj ? c.a_mu_sun : 1 - c.a_mu_sun) / Table::kAzimuthSize;
+      const size_t point = static_cast<size_t>((c.altitude + di) * Table::kMuSunSize + c.mu_sun + dj);
       for (int p = 0; p < Table::kAzimuthSize; ++p) {
         const size_t index = point * kDirections + static_cast<size_t>(row * Table::kAzimuthSize + p);
         for (int k = 0; k < kBins; ++k) {
-          mean_r[k] += w * log_r[index][k];
-          mean_a[k] += w * log_a[index][k];
+          mean_r[k] += w * logs[index].rayleigh[k];
+          mean_a[k] += w * logs[index].aerosol[k];
         }
       }
     }
     for (int k = 0; k < kBins; ++k) {
-      sum_r[k] += pole * (mean_r[k] - sum_r[k]);
-      sum_a[k] += pole * (mean_a[k] - sum_a[k]);
+      sum_r[k] += c.pole * (mean_r[k] - sum_r[k]);
+      sum_a[k] += c.pole * (mean_a[k] - sum_a[k]);
     }
   }
+  // Every bin through exp first and the floor after, so that both loops vectorise.
   for (int k = 0; k < kBins; ++k) {
-    out_r[k] = sum_r[k] <= kLogFloor + 1 ? 0.0f : std::exp(sum_r[k]);
-    out_a[k] = sum_a[k] <= kLogFloor + 1 ? 0.0f : std::exp(sum_a[k]);
+    out_r[k] = exp_of_log(sum_r[k]);
+    out_a[k] = exp_of_log(sum_a[k]);
+  }
+  for (int k = 0; k < kBins; ++k) {
+    out_r[k] = sum_r[k] <= kLogFloor + 1 ? 0.0f : out_r[k];
+    out_a[k] = sum_a[k] <= kLogFloor + 1 ? 0.0f : out_a[k];
   }
 }
 
@@ -164,7 +215,7 @@ Step step(const AtmosphereMedium& m, const Coefficients& c, double h, double dt)
   for (int k = 0; k < kBins; ++k) {
     const float extinction = c.rayleigh[k] * s.rho_r + c.aerosol_extinction[k] * s.rho_a + c.ozone[k] * rho_o;
     const float x = extinction * fdt;
-    s.attenuation[k] = std::exp(-x);
+    s.attenuation[k] = exp_nonpositive(-x);
     s.weight[k] = x < 1e-3f ? fdt * (1.0f - x * (0.5f - x * (1.0f / 6.0f))) : (1.0f - s.attenuation[k]) / extinction;
   }
   return s;
@@ -192,11 +243,11 @@ struct ScatteringOrdersTable::Grid {
     return out;
   }
 
-  // L along the ray (r, μ) with the sun at μ_s, ν. Order 1 (`log_r` null): sunlight
-  // scattered once and the sunlit ground. Order n: σ·S_{n−1} (log_r, log_a), and the
-  // ground's reflection of E_{n−1}.
-  Bins transport(const std::vector<Bins>* log_r, const std::vector<Bins>* log_a,
-                 const std::vector<Bins>& ground_irradiance, double r, double mu, double mu_sun, double nu) const {
+  // L along the ray (r, μ) with the sun at μ_s, ν. Order 1 (`logs` null): sunlight
+  // scattered once and the sunlit ground. Order n: σ·S_{n−1} (from its logarithms
+  // `logs`), and the ground's reflection of E_{n−1}.
+  Bins transport(const std::vector<LogSource>* logs, const std::vector<Bins>& ground_irradiance, double r, double mu,
+                 double mu_sun, double nu) const {
     const bool ground = shell::hits_ground(r, mu, rg);
     const double length = ground ? shell::distance_to_ground(r, mu, rg) : shell::distance_to_outer_sphere(r, mu, rt);
     const float phase_r = static_cast<float>(rayleigh_phase(nu, rayleigh_phase_gamma));
@@ -211,8 +262,8 @@ struct ScatteringOrdersTable::Grid {
       const double r_t = std::clamp(shell::radius_at(r, mu, t), rg, rt);
       const double mu_sun_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
       const Step s = step(medium, coefficients, r_t - medium.earth_radius_m, dt);
-      if (log_r) {
-        interpolate(*log_r, *log_a, rg, rt, r_t, shell::mu_at(r, mu, t, r_t), mu_sun_t, nu, s_r, s_a);
+      if (logs) {
+        gather(*logs, coordinates(rg, rt, r_t, shell::mu_at(r, mu, t, r_t), mu_sun_t, nu), s_r, s_a);
       } else {
         const Bins sun = sun_at(r_t, mu_sun_t);
         for (int k = 0; k < kBins; ++k) {
@@ -230,7 +281,7 @@ struct ScatteringOrdersTable::Grid {
     if (ground) {
       const double mu_sun_g = std::clamp((r * mu_sun + length * nu) / rg, -1.0, 1.0);
       Bins e{};
-      if (log_r) {
+      if (logs) {
         const Lerp ls = lerp(unit_from_mu_sun(mu_sun_g) * (kMuSunSize - 1), kMuSunSize);
         for (int k = 0; k < kBins; ++k)
           e[k] = ground_irradiance[static_cast<size_t>(ls.i)][k] * (1 - ls.a) +
@@ -275,41 +326,49 @@ ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, con
   const std::vector<float> phase_a = phase_matrix([&grid](double c) { return grid.aerosol_phase(c); });
 
   const size_t size = static_cast<size_t>(kPoints * kDirections);
-  std::vector<Bins> radiance(size), order_r(size), order_a(size), log_r(size), log_a(size), ground;
+  std::vector<Bins> radiance(size), order_r(size), order_a(size), ground;
+  std::vector<LogSource> logs(size);
   std::vector<Bins> total_r(size, Bins{}), total_a(size, Bins{});
   Bins last_sum_r{}, last_sum_a{}, before_sum_r{}, before_sum_a{};
   for (int order = 1; order <= kOrders; ++order) {
     // L_order at every point and direction.
-    const bool first = order == 1;
     tbb::parallel_for(0, kPoints, [&](int p) {
       const double r = grid.radius(p / kMuSunSize), mu_sun = Grid::mu_sun(p % kMuSunSize);
       for (int d = 0; d < kDirections; ++d) {
         const double mu = mu_of(d / kAzimuthSize);
-        radiance[static_cast<size_t>(p * kDirections + d)] =
-            grid.transport(first ? nullptr : &log_r, first ? nullptr : &log_a, ground, r, mu, mu_sun,
-                           nu_of(mu, mu_sun, azimuth_of(d % kAzimuthSize)));
+        radiance[static_cast<size_t>(p * kDirections + d)] = grid.transport(
+            order == 1 ? nullptr : &logs, ground, r, mu, mu_sun, nu_of(mu, mu_sun, azimuth_of(d % kAzimuthSize)));
       }
     });
     ground = Grid::ground_irradiance(radiance);
     // S_order = ∫ P L_order dω at every point.
     tbb::parallel_for(0, kPoints, [&](int p) {
       const size_t base = static_cast<size_t>(p * kDirections);
-      for (int d = 0; d < kDirections; ++d) {
-        Bins sr{}, sa{};
-        const float* row_r = &phase_r[static_cast<size_t>(d * kDirections)];
-        const float* row_a = &phase_a[static_cast<size_t>(d * kDirections)];
+      // Two output directions at a time: four independent sums per input direction
+      // keep the adds' latency hidden (one direction at a time waited on it).
+      static_assert(kDirections % 2 == 0);
+      for (int d = 0; d < kDirections; d += 2) {
+        Bins sr0{}, sa0{}, sr1{}, sa1{};
+        const float* row_r0 = &phase_r[static_cast<size_t>(d * kDirections)];
+        const float* row_a0 = &phase_a[static_cast<size_t>(d * kDirections)];
+        const float* row_r1 = row_r0 + kDirections;
+        const float* row_a1 = row_a0 + kDirections;
         for (int e = 0; e < kDirections; ++e) {
           const Bins& l = radiance[base + static_cast<size_t>(e)];
           for (int k = 0; k < kBins; ++k) {
-            sr[k] += row_r[e] * l[k];
-            sa[k] += row_a[e] * l[k];
+            sr0[k] += row_r0[e] * l[k];
+            sa0[k] += row_a0[e] * l[k];
+            sr1[k] += row_r1[e] * l[k];
+            sa1[k] += row_a1[e] * l[k];
           }
         }
         const size_t i = base + static_cast<size_t>(d);
-        order_r[i] = sr;
-        order_a[i] = sa;
-        log_r[i] = log_of(sr);
-        log_a[i] = log_of(sa);
+        order_r[i] = sr0;
+        order_a[i] = sa0;
+        order_r[i + 1] = sr1;
+        order_a[i + 1] = sa1;
+        logs[i] = {log_of(sr0), log_of(sa0)};
+        logs[i + 1] = {log_of(sr1), log_of(sa1)};
       }
     });
     before_sum_r = last_sum_r;
@@ -333,17 +392,15 @@ ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, con
       total_a[i][k] += order_a[i][k] * q_a / (1 - q_a);
     }
   }
-  log_rayleigh_.resize(size);
-  log_aerosol_.resize(size);
+  log_source_.resize(size);
   for (size_t i = 0; i < size; ++i) {
-    log_rayleigh_[i] = log_of(total_r[i]);
-    log_aerosol_[i] = log_of(total_a[i]);
+    log_source_[i] = {log_of(total_r[i]), log_of(total_a[i])};
   }
 }
 
 ScatteringOrdersTable::Source ScatteringOrdersTable::at(double r, double mu, double mu_sun, double nu) const {
   Bins s_r, s_a;
-  interpolate(log_rayleigh_, log_aerosol_, ground_radius_, top_radius_, r, mu, mu_sun, nu, s_r, s_a);
+  gather(log_source_, coordinates(ground_radius_, top_radius_, r, mu, mu_sun, nu), s_r, s_a);
   // Linear in wavelength between the table's bins.
   Source out;
   for (int b = 0; b + 1 < kBins; ++b) {

@@ -53,13 +53,19 @@ class ScatteringOrdersTable {
   };
   Source at(double r, double mu, double mu_sun, double nu) const;
 
+  // One entry of the table: log S_R and log S_A in the table's bins.
+  struct LogSource {
+    Bins rayleigh, aerosol;
+  };
+
  private:
   struct Grid;
   double ground_radius_, top_radius_;
   // log S (floored) per [point][direction]: S falls by orders of magnitude across the
   // terminator, and interpolating its logarithm follows that fall where interpolating
-  // S overshot it (docs/atmosphere.md, Twilight).
-  std::vector<Bins> log_rayleigh_, log_aerosol_;
+  // S overshot it (docs/atmosphere.md, Twilight). Both phase functions' values side by
+  // side, so that a look-up's 16 corners touch 16 cache lines rather than 32.
+  std::vector<LogSource> log_source_;
 };
 
 }  // namespace skylit
