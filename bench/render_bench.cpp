@@ -35,6 +35,7 @@ void BM_AtmosphereTables(benchmark::State& state) {
   const skylit::Scene scene = skylit::load_scene(kExample);
   const skylit::Vec3 to_sun = skylit::direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
   for (auto _ : state) {
+    skylit::forget_shared_atmosphere_tables();  // a cold build each time, as for a new air
     const skylit::Atmosphere atmosphere(scene.atmosphere);
     const skylit::SkyModel sky(atmosphere, to_sun, scene.camera.position.z);
     benchmark::DoNotOptimize(&sky);

@@ -52,6 +52,9 @@ heavy=(
   # Fig. 7): their code runs here through the closed-form tests of the same features.
   FogMultipleScattering.FollowsTheSunInAzimuthWithTheDropletPhaseFunction
   ReflectedSunFig7.AluminiumTowerAgainstThePathTracer
+  # thirteen airs' tables built to check the shared tables' key; the sharing itself
+  # (and its threads) runs here in the other AtmosphereTables tests.
+  AtmosphereTables.EveryChangeOfTheAirBuildsItsOwn
 )
 filter="-$(IFS=:; echo "${heavy[*]}")"
 

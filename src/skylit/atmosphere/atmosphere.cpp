@@ -6,7 +6,6 @@
 #include "skylit/atmosphere/cie_sky_view.h"
 #include "skylit/atmosphere/moon_light.h"
 #include "skylit/atmosphere/night_sky.h"
-#include "skylit/atmosphere/scattering_orders_table.h"
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/atmosphere/sun_disc.h"
 #include "skylit/core/angles.h"
@@ -23,32 +22,16 @@ constexpr double kGroundLayerM = 50.0;
 Atmosphere::Atmosphere(const AtmosphereSettings& settings, const SpectralBands& bands)
     : settings_(settings),
       bands_(bands),
-      medium_(settings, bands),
-      transmittance_(medium_, settings.earth_radius_m + settings.site_elevation_m,
-                     settings.earth_radius_m + settings.top_altitude_m),
+      tables_(shared_atmosphere_tables(settings, bands)),
       extraterrestrial_(Irradiance(
           settings.moon ? moon_extraterrestrial_irradiance(bands, settings.earth_sun_distance_au, *settings.moon)
-                        : skylit::extraterrestrial_irradiance(bands, settings.earth_sun_distance_au))) {
-  if (settings.model == AtmosphereModel::full) {
-    if (settings.multiple_scattering == MultipleScatteringMethod::hillaire) {
-      multiple_ = std::make_unique<MultipleScatteringTable>(medium_, transmittance_, settings.ground_albedo);
-    } else {
-      orders_ =
-          std::make_unique<ScatteringOrdersTable>(medium_, transmittance_, settings.aerosol, settings.ground_albedo);
-    }
-  }
-  sky_only_ = std::make_unique<ScatteringIntegrator>(medium_, transmittance_, multiple_.get(), nullptr,
-                                                     settings.aerosol, settings.ground_albedo, orders_.get());
-  ground_sky_ = std::make_unique<GroundIrradianceTable>(ScatteringIntegrator::ground_irradiance(*sky_only_));
-  integrator_ = std::make_unique<ScatteringIntegrator>(medium_, transmittance_, multiple_.get(), ground_sky_.get(),
-                                                       settings.aerosol, settings.ground_albedo, orders_.get());
-}
+                        : skylit::extraterrestrial_irradiance(bands, settings.earth_sun_distance_au))) {}
 
 Atmosphere::~Atmosphere() = default;
 
 Irradiance Atmosphere::direct_sun(double height_m, double sun_elevation_rad) const {
-  return extraterrestrial_ *
-         Transmittance(transmittance_.to_top(ground_radius() + std::max(0.0, height_m), std::sin(sun_elevation_rad)));
+  return extraterrestrial_ * Transmittance(tables_->transmittance.to_top(ground_radius() + std::max(0.0, height_m),
+                                                                         std::sin(sun_elevation_rad)));
 }
 
 namespace {
@@ -65,8 +48,8 @@ Irradiance direct_sun_through(const AtmosphereMedium& medium, const Irradiance& 
 }  // namespace
 
 Irradiance Atmosphere::direct_sun_exact(double height_m, double sun_elevation_rad) const {
-  return direct_sun_through(medium_, extraterrestrial_, ground_radius() + std::max(0.0, height_m), sun_elevation_rad,
-                            ground_radius(), transmittance_.top_radius());
+  return direct_sun_through(tables_->medium, extraterrestrial_, ground_radius() + std::max(0.0, height_m),
+                            sun_elevation_rad, ground_radius(), tables_->transmittance.top_radius());
 }
 
 Irradiance direct_sun_at_ground(const AtmosphereSettings& settings, double sun_elevation_rad) {

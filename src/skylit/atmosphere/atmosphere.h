@@ -1,7 +1,8 @@
 // The atmosphere of a scene: what the sun and sky look like from any point in it.
 //
 // `Atmosphere` holds what does not depend on the sun's position (optical properties,
-// transmittance and multiple-scattering tables, the ground's sky irradiance);
+// transmittance and multiple-scattering tables, the ground's sky irradiance: shared by
+// every Atmosphere of the same air, atmosphere_tables.h);
 // `SkyModel` adds what does, for one sun and one observer (the sky-view table, aerial
 // perspective, sky irradiance on surfaces). Both are built once per scene and then only
 // read, by any number of threads. The model and its constants: docs/atmosphere.md.
@@ -12,6 +13,7 @@
 
 #include "skylit/atmosphere/aerial_perspective_table.h"
 #include "skylit/atmosphere/atmosphere_settings.h"
+#include "skylit/atmosphere/atmosphere_tables.h"
 #include "skylit/atmosphere/sky_irradiance_table.h"
 #include "skylit/atmosphere/sky_view_table.h"
 
@@ -24,11 +26,11 @@ class Atmosphere {
 
   const AtmosphereSettings& settings() const { return settings_; }
   const SpectralBands& bands() const { return bands_; }
-  const AtmosphereMedium& medium() const { return medium_; }
-  const TransmittanceTable& transmittance() const { return transmittance_; }
-  const ScatteringIntegrator& integrator() const { return *integrator_; }
+  const AtmosphereMedium& medium() const { return tables_->medium; }
+  const TransmittanceTable& transmittance() const { return tables_->transmittance; }
+  const ScatteringIntegrator& integrator() const { return *tables_->integrator; }
   // The scene's ground (z = 0) as a sphere about the Earth's centre.
-  double ground_radius() const { return transmittance_.ground_radius(); }
+  double ground_radius() const { return tables_->transmittance.ground_radius(); }
   // W m⁻² nm⁻¹ at the top of the atmosphere, for the date's Earth–Sun distance.
   const Irradiance& extraterrestrial_irradiance() const { return extraterrestrial_; }
   // Direct sunlight on a plane normal to the sun at `height_m` above the ground; 0 when
@@ -40,13 +42,7 @@ class Atmosphere {
  private:
   AtmosphereSettings settings_;
   SpectralBands bands_;
-  AtmosphereMedium medium_;
-  TransmittanceTable transmittance_;
-  std::unique_ptr<MultipleScatteringTable> multiple_;  // Hillaire's approximation
-  std::unique_ptr<ScatteringOrdersTable> orders_;
-  std::unique_ptr<ScatteringIntegrator> sky_only_;  // without the ground's sky irradiance
-  std::unique_ptr<GroundIrradianceTable> ground_sky_;
-  std::unique_ptr<ScatteringIntegrator> integrator_;
+  std::shared_ptr<const AtmosphereTables> tables_;  // shared with every Atmosphere of the same air
   Irradiance extraterrestrial_;
 };
 

@@ -56,8 +56,11 @@ struct AerosolSettings {
   double asymmetry = 0.703;                 // the phase function's mean cosine ⟨cos θ⟩ at 550 nm
   AerosolPhase phase = AerosolPhase::cornette_shanks;
   double scale_height_m = 1200.0;  // the paper's §3.1 after Sekine (1987)
+  bool operator==(const AerosolSettings&) const = default;
 };
 
+// A new field that changes the air (not the sun's side: moon, CIE sky, night sky) must
+// join the key of the shared tables in atmosphere_tables.cpp.
 struct AtmosphereSettings {
   AtmosphereModel model = AtmosphereModel::full;
   MultipleScatteringMethod multiple_scattering = MultipleScatteringMethod::scattering_orders;

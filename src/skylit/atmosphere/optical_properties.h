@@ -21,6 +21,7 @@ struct SpectralBands {
   static SpectralBands render_bins();
   // kSpectralBins bands of width `width_nm` centred on first_nm, first_nm + width_nm, ...
   static SpectralBands consecutive(double first_center_nm, double width_nm);
+  bool operator==(const SpectralBands&) const = default;
 };
 
 // Rayleigh scattering after Bodhaine, Wood, Dutton & Slusser (1999), J. Atmos. Oceanic
