@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -183,6 +184,44 @@ TEST(RayTracer, ConcurrentQueriesAgree) {
   EXPECT_EQ(a, serial);
   EXPECT_EQ(b, serial);
   EXPECT_GT(std::count_if(serial.begin(), serial.end(), [](double t) { return t > 0; }), 100);
+}
+
+TEST(RayTracer, PacketsFindWhatSingleRaysFind) {
+  // Rays from one point of a street of turned boxes toward a spiral of directions over
+  // the sphere (as a surface point's sky rays are), plus rays that must miss: a
+  // non-finite one, an empty segment, and a count that is no multiple of the packet.
+  RayTracer tracer;
+  for (int i = 0; i < 20; ++i) tracer.add_mesh(make_box_centered({i * 3.0, 4, 5}, {2, 2, 10}, i * 7.0));
+  tracer.add_mesh(make_ground_plane({0, 0, 0}, 200));
+  tracer.commit();
+  std::vector<Ray> rays;
+  constexpr int kDirections = 1001;
+  for (int k = 0; k < kDirections; ++k) {
+    const double z = 1 - (2 * k + 1.0) / kDirections, r = std::sqrt(1 - z * z), phi = 2.399963 * k;
+    rays.push_back({{25, 0, 1.5}, {r * std::cos(phi), r * std::sin(phi), z}});
+  }
+  rays.push_back({{25, 0, 1.5}, {0, 0, std::nan("")}});
+  rays.push_back({{25, 0, 1.5}, {0, 0, -1}, 2, 1});
+  std::vector<std::optional<Hit>> hits;
+  tracer.intersect(rays, hits);
+  ASSERT_EQ(hits.size(), rays.size());
+  int hit_count = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const std::optional<Hit> single = tracer.intersect(rays[i]);
+    ASSERT_EQ(hits[i].has_value(), single.has_value()) << "ray " << i;
+    if (!single) continue;
+    ++hit_count;
+    // The same triangle at the same distance: both trace in single precision.
+    EXPECT_EQ(hits[i]->mesh_id, single->mesh_id) << "ray " << i;
+    EXPECT_EQ(hits[i]->triangle, single->triangle) << "ray " << i;
+    EXPECT_NEAR(hits[i]->t, single->t, 1e-5 * single->t) << "ray " << i;
+    EXPECT_NEAR(hits[i]->u, single->u, 1e-5) << "ray " << i;
+    EXPECT_NEAR(hits[i]->v, single->v, 1e-5) << "ray " << i;
+    EXPECT_NEAR(dot(hits[i]->geometric_normal, single->geometric_normal), 1.0, 1e-9) << "ray " << i;
+  }
+  // Half the directions look down at the ground; some of the rest meet the boxes.
+  EXPECT_GT(hit_count, kDirections / 2 + 20);
+  EXPECT_LT(hit_count, kDirections);
 }
 
 }  // namespace

@@ -232,6 +232,56 @@ std::optional<Hit> RayTracer::intersect(const Ray& ray) const {
   return Hit{static_cast<double>(rh.ray.tfar), n, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v};
 }
 
+void RayTracer::intersect(std::span<const Ray> rays, std::vector<std::optional<Hit>>& hits) const {
+  if (!impl_->committed) throw std::logic_error("RayTracer::intersect before commit()");
+  hits.assign(rays.size(), std::nullopt);
+  constexpr size_t kPacket = 16;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  alignas(64) RTCRayHit16 packet;
+  alignas(64) std::array<int, kPacket> active;
+  for (size_t first = 0; first < rays.size(); first += kPacket) {
+    const size_t count = std::min(kPacket, rays.size() - first);
+    for (size_t i = 0; i < kPacket; ++i) {
+      const bool use = i < count && valid(rays[first + i]);
+      if (i < count) impl_->count_query();
+      active[i] = use ? -1 : 0;
+      if (!use) continue;
+      const Ray& ray = rays[first + i];
+      RTCRay16& r = packet.ray;
+      r.org_x[i] = static_cast<float>(ray.origin.x);
+      r.org_y[i] = static_cast<float>(ray.origin.y);
+      r.org_z[i] = static_cast<float>(ray.origin.z);
+      r.dir_x[i] = static_cast<float>(ray.direction.x);
+      r.dir_y[i] = static_cast<float>(ray.direction.y);
+      r.dir_z[i] = static_cast<float>(ray.direction.z);
+      r.tnear[i] = static_cast<float>(std::max(ray.t_min, 0.0));
+      r.tfar[i] = static_cast<float>(ray.t_max);
+      r.time[i] = 0.0f;
+      r.mask[i] = 0xFFFFFFFFu;
+      r.id[i] = 0;
+      r.flags[i] = 0;
+      packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.primID[i] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect16(active.data(), impl_->scene, &context, &packet);
+    for (size_t i = 0; i < count; ++i) {
+      if (!active[i] || packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+      Vec3 n{packet.hit.Ng_x[i], packet.hit.Ng_y[i], packet.hit.Ng_z[i]};
+      const double len = length(n);
+      n = len > 0 ? n / len : Vec3{0, 0, 0};
+      hits[first + i] = Hit{static_cast<double>(packet.ray.tfar[i]),
+                            n,
+                            packet.hit.geomID[i],
+                            packet.hit.primID[i],
+                            packet.hit.u[i],
+                            packet.hit.v[i]};
+    }
+  }
+}
+
 bool RayTracer::occluded(const Ray& ray) const {
   if (!impl_->committed) throw std::logic_error("RayTracer::occluded before commit()");
   impl_->count_query();

@@ -11,6 +11,8 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "skylit/core/vec3.h"
 #include "skylit/geometry/triangle_mesh.h"
@@ -90,6 +92,13 @@ class RayTracer {
   // Whether anything is hit with t in [t_min, t_max]; cheaper than intersect.
   // Throws std::logic_error before commit().
   bool occluded(const Ray& ray) const;
+
+  // The same for many rays at once, traced in Embree's packets: hits[i] (resized to
+  // rays.size()) is what intersect(rays[i]) gives, up to single-precision rounding
+  // (docs/geometry.md). Faster where neighbouring rays are coherent: they share an
+  // origin and point in nearby directions, as the rays of one surface point toward
+  // neighbouring sky elements do.
+  void intersect(std::span<const Ray> rays, std::vector<std::optional<Hit>>& hits) const;
 
   // intersect() and occluded() calls since construction, from all threads (for the
   // benchmark's rays per second).

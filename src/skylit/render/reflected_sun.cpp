@@ -151,13 +151,28 @@ void ReflectedSun::add_nodes(OrientationClass& orientation, const Material& mate
 Irradiance ReflectedSun::from(const Vec3& position, const Vec3& normal, bool mirrors) const {
   Spectrum sum(0.0f);
   const Vec3 origin = offset_from_surface(position, normal);
+  // Each class's node rays go to the tracer together: they share the origin and lie
+  // within one lobe, a coherent packet.
+  thread_local std::vector<Ray> rays;
+  thread_local std::vector<const Node*> ray_nodes;
+  thread_local std::vector<std::optional<Hit>> hits;
   for (size_t c = 0; c < classes_.size(); ++c) {
     const OrientationClass& orientation = classes_[c];
     if (orientation.mirror != mirrors) continue;
+    rays.clear();
+    ray_nodes.clear();
     for (const Node& node : orientation.nodes) {
       const double cos_point = dot(normal, node.toward);
       if (!(cos_point > 0) || !ray_meets_box(origin, node.toward, orientation.box)) continue;
-      const std::optional<Hit> hit = tracer_.intersect(Ray{origin, node.toward});
+      rays.push_back(Ray{origin, node.toward});
+      ray_nodes.push_back(&node);
+    }
+    if (rays.empty()) continue;
+    tracer_.intersect(rays, hits);
+    for (size_t r = 0; r < rays.size(); ++r) {
+      const Node& node = *ray_nodes[r];
+      const double cos_point = dot(normal, node.toward);
+      const std::optional<Hit>& hit = hits[r];
       if (!hit) continue;
       const std::vector<int32_t>& groups_of_mesh = triangle_group_[hit->mesh_id];
       if (groups_of_mesh.empty()) continue;

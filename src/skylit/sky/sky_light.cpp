@@ -13,6 +13,22 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
                    std::vector<SkyElement> elements)
     : sky_(sky), tracer_(tracer), obstacle_radiance_(std::move(obstacle_radiance)), elements_(std::move(elements)) {
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
+  // Bands of equal height with about 2 × 16 elements per band for each band, so that a
+  // packet of 16 rays spans about as much in height as in azimuth; within a band by
+  // azimuth.
+  const int bands = std::max(1, static_cast<int>(std::lround(std::sqrt(elements_.size() / 32.0))));
+  auto band_of = [&](uint32_t i) {
+    return std::min(bands - 1, static_cast<int>((1 - elements_[i].direction.z) / 2 * bands));
+  };
+  packet_order_.resize(elements_.size());
+  for (uint32_t i = 0; i < packet_order_.size(); ++i) packet_order_[i] = i;
+  std::sort(packet_order_.begin(), packet_order_.end(), [&](uint32_t a, uint32_t b) {
+    const int band_a = band_of(a), band_b = band_of(b);
+    if (band_a != band_b) return band_a < band_b;
+    const double azimuth_a = std::atan2(elements_[a].direction.y, elements_[a].direction.x);
+    const double azimuth_b = std::atan2(elements_[b].direction.y, elements_[b].direction.x);
+    return azimuth_a != azimuth_b ? azimuth_a < azimuth_b : a < b;
+  });
 }
 
 Radiance SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const {
@@ -109,27 +125,40 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   // building opposite blotchy from one surface point to the next.)
   std::map<std::pair<int, int>, size_t> index;
   for (size_t i = 0; i < found.size(); ++i) index[{found[i].k, found[i].j}] = i;
+  // The elements' rays go to the tracer together (the walk keeps neighbours together: a
+  // coherent packet), and so do the 3 × 3 rays of every element an edge crosses.
+  thread_local std::vector<Ray> rays, edge_rays;
+  thread_local std::vector<std::optional<Hit>> hits, edge_hits;
+  rays.clear();
+  for (const Element& e : found) rays.push_back(Ray{origin, e.direction});
+  tracer_.intersect(rays, hits);
   std::vector<std::optional<Radiance>> obstacle(found.size());  // the obstacle's light, if hidden
-  for (size_t i = 0; i < found.size(); ++i) {
-    const Ray ray{origin, found[i].direction};
-    if (const std::optional<Hit> hit = tracer_.intersect(ray)) obstacle[i] = obstacle_radiance_(ray, *hit);
-  }
+  for (size_t i = 0; i < found.size(); ++i)
+    if (hits[i]) obstacle[i] = obstacle_radiance_(rays[i], *hits[i]);
+  std::vector<bool> edge(found.size(), false);
+  edge_rays.clear();
   for (size_t i = 0; i < found.size(); ++i) {
     const Element& e = found[i];
-    bool edge = false;
     for (const auto& [dk, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
       const auto it = index.find({e.k + dk, e.j + dj});
-      edge = edge || (it != index.end() && obstacle[it->second].has_value() != obstacle[i].has_value());
+      edge[i] = edge[i] || (it != index.end() && obstacle[it->second].has_value() != obstacle[i].has_value());
     }
+    if (!edge[i]) continue;
+    for (int u = -1; u <= 1; ++u)
+      for (int w = -1; w <= 1; ++w)
+        edge_rays.push_back(Ray{origin, direction_at(e.alpha + u * width / 3, e.delta + w * width / 3)});
+  }
+  tracer_.intersect(edge_rays, edge_hits);
+  size_t next_edge_ray = 0;
+  for (size_t i = 0; i < found.size(); ++i) {
+    const Element& e = found[i];
     Radiance incoming_light = obstacle[i] ? *obstacle[i] : e.sky;
-    if (edge) {
+    if (edge[i]) {
       Radiance mixed;
-      for (int u = -1; u <= 1; ++u)
-        for (int w = -1; w <= 1; ++w) {
-          const Ray ray{origin, direction_at(e.alpha + u * width / 3, e.delta + w * width / 3)};
-          const std::optional<Hit> hit = tracer_.intersect(ray);
-          mixed += hit ? obstacle_radiance_(ray, *hit) : e.sky;
-        }
+      for (int sub = 0; sub < 9; ++sub, ++next_edge_ray) {
+        const std::optional<Hit>& hit = edge_hits[next_edge_ray];
+        mixed += hit ? obstacle_radiance_(edge_rays[next_edge_ray], *hit) : e.sky;
+      }
       incoming_light = mixed * (1.0f / 9.0f);
     }
     sum += specular_reflection(material, normal, e.direction, to_viewer).reflect(incoming_light, e.solid_angle);
@@ -142,12 +171,26 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
   Spectrum irradiance = sky_.sky_irradiance(normal).spectrum();
   const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
+  // The rays toward the elements above the surface's horizon, traced together in packet
+  // order; then each element's change in the elements' own order (the sum is clamped
+  // at every step, so its order is kept).
+  thread_local std::vector<Ray> rays;
+  thread_local std::vector<std::optional<Hit>> hits;
+  thread_local std::vector<int32_t> ray_of_element;
+  rays.clear();
+  ray_of_element.assign(elements.size(), -1);
+  for (const uint32_t i : packet_order_) {
+    if (dot(normal, elements[i].direction) <= 0) continue;
+    ray_of_element[i] = static_cast<int32_t>(rays.size());
+    rays.push_back(Ray{origin, elements[i].direction});
+  }
+  tracer_.intersect(rays, hits);
   for (size_t i = 0; i < elements.size(); ++i) {
     const SkyElement& e = elements[i];
+    if (ray_of_element[i] < 0) continue;
     const double cosine = dot(normal, e.direction);
-    if (cosine <= 0) continue;
-    const Ray ray{origin, e.direction};
-    const std::optional<Hit> hit = tracer_.intersect(ray);
+    const Ray& ray = rays[static_cast<size_t>(ray_of_element[i])];
+    const std::optional<Hit>& hit = hits[static_cast<size_t>(ray_of_element[i])];
     if (!hit) continue;
     // Hidden: the element's sky leaves, the obstacle's light comes in its place.
     const float weight = static_cast<float>(cosine * e.solid_angle);

@@ -76,7 +76,11 @@ class SkyLight {
   Radiance incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const;
 
   std::vector<SkyElement> elements_;
-  std::vector<Radiance> element_radiance_;  // the sky (or far ground) at each element
+  std::vector<Radiance> element_radiance_;
+  // The elements in an order that keeps neighbouring directions together (bands of
+  // height, by azimuth within each), so that the rays of one point go to the tracer in
+  // coherent packets.
+  std::vector<uint32_t> packet_order_;  // the sky (or far ground) at each element
 };
 
 }  // namespace skylit
