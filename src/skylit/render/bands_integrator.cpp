@@ -177,7 +177,14 @@ Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const 
   std::optional<CachedSkyLight> sky_light;
   if (context.caches.sky_light) {
     sky_light = context.caches.sky_light->interpolate(context.image_x, context.image_y, hit.point);
-    if (!sky_light) sky_light = sky_light_for_one_pixel(hit.point, -ray.direction);
+    if (!sky_light && context.slivers) {
+      if (const CachedSkyLight* shared = context.slivers->find(context.image_x, context.image_y, hit.point))
+        sky_light = *shared;
+    }
+    if (!sky_light) {
+      sky_light = sky_light_for_one_pixel(hit.point, -ray.direction);
+      if (context.slivers) context.slivers->add(context.image_x, context.image_y, hit.point, *sky_light);
+    }
   } else {
     sky_light = sky_light_at(hit.point, -ray.direction);
   }

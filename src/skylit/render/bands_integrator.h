@@ -21,6 +21,7 @@
 #include "skylit/render/primary_hits.h"
 #include "skylit/render/reflected_sun.h"
 #include "skylit/render/surface_cache.h"
+#include "skylit/render/tile_sliver_values.h"
 #include "skylit/render/view_path.h"
 #include "skylit/sky/sky_light.h"
 
@@ -64,6 +65,9 @@ struct SampleContext {
   double image_x = 0, image_y = 0;  // pixels, for the caches' look-ups
   ImageCaches caches;
   PixelViewPath* pixel_path = nullptr;  // none: the view path is found for this ray alone
+  // Where sky light the cache has no value for is kept and shared within the tile; none:
+  // each such sample computes its own.
+  TileSliverValues* slivers = nullptr;
 };
 
 class BandsIntegrator {
@@ -93,7 +97,8 @@ class BandsIntegrator {
   // Obstruction directions for sky light that stands for one pixel or less: the image
   // cache's per-pixel level (a pixel centre that no grid point covers, shared only by
   // that pixel's antialiasing samples) and a sample whose surface the cache has no
-  // value for (a sliver that no pixel centre within 2 pixels sees). A quarter of the
+  // value for (a sliver that no pixel centre within 2 pixels sees; shared with the
+  // tile's later samples on the same surface within 2 pixels). A quarter of the
   // directions; what this changes in the image is measured against the exact sky light
   // by tests/render/sky_light_accuracy_test.cpp (docs/sky-light.md).
   static constexpr int kOnePixelDirections = 256;

@@ -76,11 +76,11 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
 
   // A pixel's value from a regular grid × grid of samples inside it, averaged with equal
   // weights. Grid 1 is the pixel's centre, whose hit is known already.
-  auto pixel_value = [&](int x, int y, int grid) {
+  auto pixel_value = [&](int x, int y, int grid, TileSliverValues& slivers) {
     if (!camera.sees(x + 0.5, y + 0.5)) return Spectrum(0.0f);  // outside a fisheye's circle: black
     PixelViewPath pixel_path;
     if (grid == 1) {
-      const SampleContext context{x + 0.5, y + 0.5, caches, &pixel_path};
+      const SampleContext context{x + 0.5, y + 0.5, caches, &pixel_path, &slivers};
       return integrator.radiance(camera.ray_through(x + 0.5, y + 0.5), hits->at(x, y), context).spectrum();
     }
     Spectrum sum;
@@ -88,7 +88,7 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
       for (int sx = 0; sx < grid; ++sx) {
         const double px = x + (sx + 0.5) / grid, py = y + (sy + 0.5) / grid;
         const Ray ray = camera.ray_through(px, py);
-        const SampleContext context{px, py, caches, &pixel_path};
+        const SampleContext context{px, py, caches, &pixel_path, &slivers};
         sum += integrator.radiance(ray, integrator.first_hit(ray), context).spectrum();
       }
     return sum * static_cast<float>(1.0 / (grid * grid));
@@ -109,12 +109,13 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
   auto render_tile = [&](int tile, int pass) {
     if (!options.share.renders(tile)) return;
     const ImageTile t = image_tile(tile, width, height);
+    TileSliverValues slivers;  // the samples' own sky light, shared within the tile
     for (int y = t.y0; y < t.y1; ++y)
       for (int x = t.x0; x < t.x1; ++x) {
         if (pass == 0)
-          centres.set(x, y, pixel_value(x, y, passes == 1 ? n : 1));
+          centres.set(x, y, pixel_value(x, y, passes == 1 ? n : 1, slivers));
         else if (is_edge(centres.image(), *hits, x, y))
-          refined->set(x, y, pixel_value(x, y, n));
+          refined->set(x, y, pixel_value(x, y, n, slivers));
       }
     if (options.on_progress) {
       std::lock_guard lock(progress_mutex);

@@ -2,8 +2,9 @@
 // from it (the sky light on surfaces, the lamps' glow), then the pixels in tiles in
 // parallel, in two passes (adaptive antialiasing), into the film. Every sample's light
 // comes from the one per-ray function, BandsIntegrator::radiance. Pixels are computed
-// independently on a fixed grid of samples, so the output does not depend on the
-// number of threads.
+// on a fixed grid of samples, and the samples of one tile (which share the sky light
+// that the cache has no value for, tile_sliver_values.h) in a fixed order, so the
+// output does not depend on the number of threads.
 #pragma once
 
 #include <functional>
