@@ -5,7 +5,8 @@
 // Backward paths start at the observer on the ground; free flights by delta tracking
 // against one majorant (Rayleigh and aerosol extinction at the ground plus ozone at
 // its peak); at every real collision the throughput takes the single-scattering albedo
-// σ_s/σ_t and next-event estimation adds the sun through TransmittanceTable::to_top
+// σ_s/σ_t and next-event estimation adds the sun through TransmittanceTable::sun (bent
+// by refraction, as the model's sun is; the scattered light's paths stay straight)
 // with the mixed phase function (σ_R P_R + σ_A P_A)/σ_s; new directions come from a
 // 50/50 mixture of Henyey–Greenstein(g) and isotropic, weighted by phase/pdf; the
 // ground is Lambertian with the model's albedo; Russian roulette ends long paths. All
@@ -217,7 +218,7 @@ class MonteCarloSky {
         weight_iso *= sigma_s / sigma_t;
         const double r_p = length(p);
         for (int s = 0; s < kSuns; ++s) {
-          const float sun = transmittance.to_top(r_p, dot(p, suns[s]) / r_p)[bin];
+          const float sun = transmittance.sun(r_p, dot(p, suns[s]) / r_p)[bin];
           if (sun <= 0) continue;
           physical[static_cast<size_t>(s) * kSlots + order] += weight * phase(sigma_r, sigma_a, dot(w, suns[s])) * sun;
           if (order >= 2) isotropic[static_cast<size_t>(s)] += weight_iso / kFourPi * sun;
@@ -237,7 +238,7 @@ class MonteCarloSky {
         for (int s = 0; s < kSuns; ++s) {
           const double cos_sun = dot(n, suns[s]);
           if (cos_sun <= 0) continue;
-          const double lit = albedo / kPi * cos_sun * transmittance.to_top(rg, cos_sun)[bin];
+          const double lit = albedo / kPi * cos_sun * transmittance.sun(rg, cos_sun)[bin];
           physical[static_cast<size_t>(s) * kSlots + order] += weight * lit;
           if (order >= 2) isotropic[static_cast<size_t>(s)] += weight_iso * lit;
         }

@@ -50,8 +50,9 @@ TEST(SceneAtmosphere, AtmosphereSettingsAreRead) {
                         1, 0,
                         R"( "atmosphere": {"model": "paper", "aod_550": 0.3, "angstrom_exponent": 1.0, "ozone_du": 250,
           "ground_albedo": 0.3, "aerosol_phase": "henyey_greenstein", "asymmetry": 0.7,
-          "multiple_scattering": "hillaire", "air_density": "exponential"},)")));
+          "multiple_scattering": "hillaire", "air_density": "exponential", "refraction": false},)")));
   EXPECT_EQ(scene.atmosphere.model, AtmosphereModel::paper);
+  EXPECT_FALSE(scene.atmosphere.refraction);
   EXPECT_EQ(scene.atmosphere.multiple_scattering, MultipleScatteringMethod::hillaire);
   EXPECT_EQ(scene.atmosphere.air_density, AirDensity::exponential);
   EXPECT_DOUBLE_EQ(scene.atmosphere.aerosol.aod_550, 0.3);
@@ -112,6 +113,11 @@ TEST(SceneAtmosphere, MistakesAreNamed) {
   EXPECT_NE(load_error(testing::small_scene_json().replace(1, 0, R"( "atmosphere": {"model": "klassen"},)"))
                 .find("atmosphere.model: expected one of: full, paper"),
             std::string::npos);
+  const std::string refraction =
+      load_error(testing::small_scene_json().replace(1, 0, R"( "atmosphere": {"refraction": "on"},)"));
+  EXPECT_NE(refraction.find("scene.json"), std::string::npos) << refraction;
+  EXPECT_NE(refraction.find("atmosphere.refraction"), std::string::npos) << refraction;
+  EXPECT_NE(refraction.find("true or false"), std::string::npos) << refraction;
 }
 
 }  // namespace

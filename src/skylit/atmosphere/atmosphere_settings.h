@@ -69,6 +69,10 @@ struct AtmosphereSettings {
   double ground_albedo = 0.15;     // Lambertian, grey, for the ground seen through the air and multiple scattering
   AirDensity air_density = AirDensity::us_standard_1976;
   double rayleigh_scale_height_m = 7994;  // the paper's Eq. (1), for AirDensity::exponential
+  // Sunlight bent by the air on its way to each scattering point and the sunlit ground
+  // (refracted_ray.h), which lifts the Earth's shadow at twilight; false: straight rays.
+  // The paper's model is always straight. The scene's sun altitude stays the geometric one.
+  bool refraction = true;
   double earth_radius_m = 6371e3;
   double top_altitude_m = 100e3;       // above sea level
   double site_elevation_m = 0.0;       // the scene's ground (z = 0) above sea level

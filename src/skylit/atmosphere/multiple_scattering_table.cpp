@@ -67,7 +67,7 @@ MultipleScatteringTable::Factors MultipleScatteringTable::factors_at(const Atmos
       const Spectrum scattering = medium.rayleigh_scattering * static_cast<float>(rho_r) +
                                   medium.aerosol_scattering * static_cast<float>(rho_a);
       const Spectrum segment_transmittance = transmittance_of(extinction * static_cast<float>(dt));
-      const Spectrum sun = transmittance.to_top(r_t, mu_s_t);
+      const Spectrum sun = transmittance.sun(r_t, mu_s_t);
       for (int k = 0; k < kSpectralBins; ++k) {
         // ∫ over the segment of T·σ_s·(source) = T·σ_s·source·(1 − e^(−σ_t·dt))/σ_t.
         const float integral = segment_weight(extinction[k], static_cast<float>(dt), segment_transmittance[k]);
@@ -81,7 +81,7 @@ MultipleScatteringTable::Factors MultipleScatteringTable::factors_at(const Atmos
       const double r_g = rg;
       const double mu_s_g = std::clamp((r * mu_sun + length * nu) / r_g, -1.0, 1.0);
       if (mu_s_g > 0) {
-        const Spectrum sun = transmittance.to_top(r_g, mu_s_g);
+        const Spectrum sun = transmittance.sun(r_g, mu_s_g);
         for (int k = 0; k < kSpectralBins; ++k)
           light[k] += throughput[k] * sun[k] * static_cast<float>(mu_s_g * ground_albedo / kPi);
       }

@@ -17,13 +17,6 @@ constexpr double kLoschmidtPerCm3 = 2.546899e19;  // N_s at 288.15 K, 1013.25 hP
 constexpr double kAvogadro = 6.0221367e23;
 constexpr double kSeaLevelPressureDynPerCm2 = 1013.25e3;
 
-// Peck & Reeder (1972) for 300 ppm CO₂, scaled to 360 ppm (Bodhaine Eqs. 18–19).
-double refractive_index_air(double wavelength_nm) {
-  const double inv_um2 = 1.0 / std::pow(wavelength_nm * 1e-3, 2);
-  const double n300_minus_1 = (8060.51 + 2480990.0 / (132.274 - inv_um2) + 17455.7 / (39.32957 - inv_um2)) * 1e-8;
-  return 1.0 + n300_minus_1 * (1.0 + 0.54 * (kCo2PartsPerVolume - 0.0003));
-}
-
 // Gravity at 45° latitude at the mass-weighted column height above sea level (Bodhaine Eqs. 10–11), cm s⁻².
 double bodhaine_gravity_cm_s2() {
   const double zc = 5517.56;  // m, 0.73737·z + 5517.56 at z = 0
@@ -44,6 +37,13 @@ const Tabulated& ozone_cross_section_cm2() {
 }
 
 }  // namespace
+
+// Peck & Reeder (1972) for 300 ppm CO₂, scaled to 360 ppm (Bodhaine Eqs. 18–19).
+double refractive_index_air(double wavelength_nm) {
+  const double inv_um2 = 1.0 / std::pow(wavelength_nm * 1e-3, 2);
+  const double n300_minus_1 = (8060.51 + 2480990.0 / (132.274 - inv_um2) + 17455.7 / (39.32957 - inv_um2)) * 1e-8;
+  return 1.0 + n300_minus_1 * (1.0 + 0.54 * (kCo2PartsPerVolume - 0.0003));
+}
 
 SpectralBands SpectralBands::render_bins() {
   SpectralBands bands;
@@ -135,6 +135,9 @@ AtmosphereMedium::AtmosphereMedium(const AtmosphereSettings& settings, const Spe
   const double f = king_factor_air(550.0);
   const double depolarisation = (6.0 * f - 6.0) / (3.0 + 7.0 * f);  // F = (6 + 3ρ)/(6 − 7ρ)
   rayleigh_gamma = depolarisation / (2.0 - depolarisation);
+  // One index for every wavelength: across 400–700 nm n − 1 changes by ±1.5 %, and the
+  // bending with it (docs/atmosphere.md, "Twilight").
+  if (settings.model == AtmosphereModel::full && settings.refraction) refractivity = refractive_index_air(550.0) - 1.0;
 }
 
 double AtmosphereMedium::rayleigh_density(double altitude_m) const { return air_.relative_density(altitude_m); }

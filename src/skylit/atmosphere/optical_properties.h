@@ -29,6 +29,9 @@ struct SpectralBands {
 // King factor (Bates 1984), cross section σ(λ) in m² per molecule.
 double rayleigh_cross_section_m2(double wavelength_nm);
 double king_factor_air(double wavelength_nm);
+// The refractive index of dry air at 15 °C and 1013.25 hPa (the US Standard Atmosphere's
+// sea level): Peck & Reeder (1972) with 360 ppm CO₂, as Bodhaine et al. use it.
+double refractive_index_air(double wavelength_nm);
 // Optical depth of the whole column at sea level, 1013.25 hPa, 45° latitude
 // (Bodhaine's Eq. 30 with their g and mean molecular mass).
 double rayleigh_optical_depth_sea_level(double wavelength_nm);
@@ -52,6 +55,9 @@ struct AtmosphereMedium {
   Spectrum aerosol_extinction;   // at the site's ground
   Spectrum ozone_absorption;     // at the ozone layer's peak (25 km)
   double rayleigh_gamma;         // molecular anisotropy for the phase function, at 550 nm
+  // n − 1 where the Rayleigh density is 1 (sea level), at 550 nm; n − 1 follows the
+  // density (Gladstone–Dale). 0: the sunlight's rays are straight (refracted_ray.h).
+  double refractivity = 0;
 
   double earth_radius_m, site_elevation_m;
 

@@ -55,7 +55,7 @@ void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, doubl
   const double rho_r = medium_.rayleigh_density(h), rho_a = medium_.aerosol_density(h);
   const Spectrum extinction = medium_.extinction(rho_r, rho_a, medium_.ozone_density(h));
   const Spectrum segment = transmittance_of(extinction * static_cast<float>(dt));
-  const Spectrum sun = transmittance_.to_top(r_t, mu_sun_t);
+  const Spectrum sun = transmittance_.sun(r_t, mu_sun_t);
   // Multiply scattered light per unit σ_R and σ_A (equal for Hillaire's isotropic Ψ_ms).
   ScatteringOrdersTable::Source multiple{Spectrum(0.0f), Spectrum(0.0f)};
   if (orders_) {
@@ -78,8 +78,7 @@ void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, doubl
 void ScatteringIntegrator::add_ground(double r, double mu_sun, double nu, double length, ScatteredLight& light) const {
   const double rg = transmittance_.ground_radius();
   const double mu_sun_g = std::clamp((r * mu_sun + length * nu) / rg, -1.0, 1.0);
-  Spectrum irradiance =
-      mu_sun_g > 0 ? transmittance_.to_top(rg, mu_sun_g) * static_cast<float>(mu_sun_g) : Spectrum(0.0f);
+  Spectrum irradiance = mu_sun_g > 0 ? transmittance_.sun(rg, mu_sun_g) * static_cast<float>(mu_sun_g) : Spectrum(0.0f);
   if (ground_sky_) irradiance += ground_sky_->at(mu_sun_g);
   for (int k = 0; k < kSpectralBins; ++k)
     light.radiance[k] += light.transmittance[k] * irradiance[k] * static_cast<float>(ground_albedo_ / kPi);

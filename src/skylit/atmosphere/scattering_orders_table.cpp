@@ -237,7 +237,7 @@ struct ScatteringOrdersTable::Grid {
   static double mu_sun(int j) { return mu_sun_from_unit(static_cast<double>(j) / (kMuSunSize - 1)); }
 
   Bins sun_at(double r, double mu_sun) const {
-    const Spectrum t = transmittance.to_top(r, mu_sun);
+    const Spectrum t = transmittance.sun(r, mu_sun);
     Bins out;
     for (int b = 0; b < kBins; ++b) out[b] = t[spectral_bin(b)];
     return out;

@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "skylit/atmosphere/refracted_sun_table.h"
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/spectrum/spectral_math.h"
 
@@ -92,6 +93,11 @@ TransmittanceTable::TransmittanceTable(const AtmosphereMedium& medium, double gr
       table_.at(i, j) = medium.extinction(c.rayleigh, c.aerosol, c.ozone);
     }
   });
+  if (medium.refractivity > 0) refracted_ = std::make_shared<RefractedSunTable>(medium, ground_radius_m, top_radius_m);
+}
+
+Spectrum TransmittanceTable::sun(double r, double mu_sun) const {
+  return refracted_ ? refracted_->sunlight(r, mu_sun) : to_top(r, mu_sun);
 }
 
 Spectrum TransmittanceTable::to_top(double r, double mu) const {

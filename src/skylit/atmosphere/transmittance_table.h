@@ -7,6 +7,7 @@
 // rays that do get 0 (the Earth's shadow).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "skylit/atmosphere/optical_properties.h"
@@ -25,6 +26,8 @@ struct ColumnDensities {
 // the default sample count (tests/atmosphere/transmittance_test.cpp).
 ColumnDensities column_densities(const AtmosphereMedium& medium, double r, double mu, double length, int samples = 64);
 
+class RefractedSunTable;
+
 class TransmittanceTable {
  public:
   static constexpr int kMuSize = 256, kRSize = 128;
@@ -34,6 +37,10 @@ class TransmittanceTable {
   // To the top of the atmosphere from radius r along zenith cosine μ; 0 if the ray
   // meets the ground.
   Spectrum to_top(double r, double mu) const;
+  // The sun's light at radius r (per unit extraterrestrial irradiance normal to it) when
+  // its true zenith cosine there is μ_s: along the bent ray, with the beam's spreading,
+  // when the medium refracts (refracted_sun_table.h), else to_top(r, μ_s).
+  Spectrum sun(double r, double mu_sun) const;
 
   double ground_radius() const { return ground_radius_; }
   double top_radius() const { return top_radius_; }
@@ -42,6 +49,7 @@ class TransmittanceTable {
   double ground_radius_, top_radius_;
   double horizon_distance_;  // √(top² − ground²): from the ground to the top along the horizon
   SpectrumGrid2D table_;     // optical depth; x: μ, y: r
+  std::shared_ptr<const RefractedSunTable> refracted_;  // null: straight rays
 };
 
 }  // namespace skylit

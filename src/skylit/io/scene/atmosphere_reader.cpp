@@ -72,7 +72,7 @@ void place_sun(const JsonReader& root, const std::optional<SiteLocation>& site, 
 AtmosphereSettings read_atmosphere(const JsonReader& j) {
   j.allow_only({"model", "multiple_scattering", "air_density", "aerosol_type", "aod_550", "visibility_km",
                 "linke_turbidity", "angstrom_exponent", "single_scattering_albedo", "asymmetry", "aerosol_phase",
-                "aerosol_scale_height_m", "ozone_du", "ground_albedo"});
+                "aerosol_scale_height_m", "ozone_du", "ground_albedo", "refraction"});
   AtmosphereSettings a;
   if (auto m = j.optional("model"))
     a.model = m->one_of({"full", "paper"}) == "paper" ? AtmosphereModel::paper : AtmosphereModel::full;
@@ -104,6 +104,7 @@ AtmosphereSettings read_atmosphere(const JsonReader& j) {
                           : AerosolPhase::henyey_greenstein;
   if (auto o = j.optional("ozone_du")) a.ozone_column_du = o->number_in(0, 1000);
   if (auto g = j.optional("ground_albedo")) a.ground_albedo = g->number_in(0, 1);
+  if (auto r = j.optional("refraction")) a.refraction = r->boolean();
   return a;
 }
 
