@@ -68,8 +68,8 @@ TEST(RefractedSunTable, MatchesRaysTracedOneByOne) {
   // Twilight's cases: points 10–80 km up with the sun 1–8° below their horizon, where
   // the light grazed 5–40 km up; and a day case. Between the table's nodes, 3 % of the
   // sunlight or 1e-4 of the sun's (the depth interpolated between nodes). Open: at
-  // 80 km with the sun at −9°, 0.2° above the refracted shadow's edge, the table gives
-  // 1.12 times the ray traced here (docs/atmosphere.md, "Twilight").
+  // 80 km with the sun at −9° (light that grazed a few km up) the table gives 1.12
+  // times the ray traced here (docs/atmosphere.md, "Twilight").
   struct Case {
     double height_m, sun_elevation_deg;
   };
