@@ -137,7 +137,13 @@ AtmosphereMedium::AtmosphereMedium(const AtmosphereSettings& settings, const Spe
   rayleigh_gamma = depolarisation / (2.0 - depolarisation);
   // One index for every wavelength: across 400–700 nm n − 1 changes by ±1.5 %, and the
   // bending with it (docs/atmosphere.md, "Twilight").
-  if (settings.model == AtmosphereModel::full && settings.refraction) refractivity = refractive_index_air(550.0) - 1.0;
+  // Air thin enough that r·|dn/dr| nears 1 (an exponential of scale height under ~4 km,
+  // as tests use) would trap grazing rays, where Bouguer's rays have no lowest point:
+  // its rays stay straight.
+  const bool ducts = settings.air_density == AirDensity::exponential &&
+                     settings.earth_radius_m * 2.8e-4 / settings.rayleigh_scale_height_m > 0.5;
+  if (settings.model == AtmosphereModel::full && settings.refraction && !ducts)
+    refractivity = refractive_index_air(550.0) - 1.0;
 }
 
 double AtmosphereMedium::rayleigh_density(double altitude_m) const { return air_.relative_density(altitude_m); }
