@@ -44,6 +44,7 @@ TEST(AtmosphereTables, EveryChangeOfTheAirBuildsItsOwn) {
       {"earth radius", [](AtmosphereSettings& s) { s.earth_radius_m = 6360e3; }},
       {"top altitude", [](AtmosphereSettings& s) { s.top_altitude_m = 80e3; }},
       {"site elevation", [](AtmosphereSettings& s) { s.site_elevation_m = 1500; }},
+      {"refraction", [](AtmosphereSettings& s) { s.refraction = false; }},
   };
   const Atmosphere standard{AtmosphereSettings{}};
   for (const auto& [name, change] : changes) {

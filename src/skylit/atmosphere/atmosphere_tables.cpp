@@ -37,14 +37,24 @@ struct TablesKey {
   double ozone_column_du, ground_albedo;
   AirDensity air_density;
   double rayleigh_scale_height_m, earth_radius_m, top_altitude_m, site_elevation_m;
+  bool refraction;
   SpectralBands bands;
   bool operator==(const TablesKey&) const = default;
 };
 
 TablesKey key_of(const AtmosphereSettings& s, const SpectralBands& bands) {
-  return {s.model,       s.multiple_scattering,     s.aerosol,        s.ozone_column_du, s.ground_albedo,
-          s.air_density, s.rayleigh_scale_height_m, s.earth_radius_m, s.top_altitude_m,  s.site_elevation_m,
-          bands};
+  return {.model = s.model,
+          .multiple_scattering = s.multiple_scattering,
+          .aerosol = s.aerosol,
+          .ozone_column_du = s.ozone_column_du,
+          .ground_albedo = s.ground_albedo,
+          .air_density = s.air_density,
+          .rayleigh_scale_height_m = s.rayleigh_scale_height_m,
+          .earth_radius_m = s.earth_radius_m,
+          .top_altitude_m = s.top_altitude_m,
+          .site_elevation_m = s.site_elevation_m,
+          .refraction = s.refraction,
+          .bands = bands};
 }
 
 // A handful: a sweep over aerosol amounts or a test suite alternates between a few
