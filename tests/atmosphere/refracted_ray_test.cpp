@@ -126,7 +126,9 @@ TEST(RefractedRay, MatchesAnIntegrationOfTheRayEquation) {
     EXPECT_NEAR(fast.mu_true, slow.mu_true, 5e-3 * slow.bending_rad) << c.height_m;
     EXPECT_NEAR(fast.columns.rayleigh / slow.columns.rayleigh, 1.0, 5e-3) << c.height_m;
     EXPECT_NEAR(fast.columns.aerosol / slow.columns.aerosol, 1.0, 5e-3) << c.height_m;
-    if (slow.columns.ozone > 0) EXPECT_NEAR(fast.columns.ozone / slow.columns.ozone, 1.0, 5e-3) << c.height_m;
+    if (slow.columns.ozone > 0) {
+      EXPECT_NEAR(fast.columns.ozone / slow.columns.ozone, 1.0, 5e-3) << c.height_m;
+    }
   }
   // Below the grazing ray, the ground.
   EXPECT_TRUE(trace_refracted_ray(medium, kEarth + 30e3, -0.2, kEarth, kTop).hits_ground);
