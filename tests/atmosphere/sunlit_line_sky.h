@@ -29,8 +29,10 @@
 // every vertex from which the drawn line crosses sunlit air, which at −8° is most.
 //
 // Shared with the model, as for MonteCarloSky: the medium's coefficients and density
-// profiles, the phase functions, and TransmittanceTable::to_top for the sun (zero in the
-// geometric shadow, which is what bounds the sampled cells; they reach 5 km into it).
+// profiles, the phase functions, and TransmittanceTable::sun for the sun (bent by
+// refraction, as the model's is, so it reaches a little into the geometric shadow; the
+// sampled cells reach 20 km into it: with 5 km the first order at −8° missed 4–17 % of
+// the refracted light).
 #pragma once
 
 #include <algorithm>
@@ -161,7 +163,7 @@ class SunlitLineSky {
   static constexpr int kPieces = 16;  // of the line, each with its own majorant
   static constexpr int kCells = 16;   // of the sunlit part, for the sampling density
   static constexpr int kSamples = 8;  // stratified over the cells' density
-  static constexpr double kShadowMarginM = 5e3;
+  static constexpr double kShadowMarginM = 20e3;
   // The gathering lobe: Henyey–Greenstein about the horizon under the sun.
   static constexpr double kLobeG = 0.75;
   static constexpr Vec3 kSunAzimuth{1, 0, 0};
@@ -266,7 +268,7 @@ class SunlitLineSky {
                    double phase_r, double phase_a, const std::vector<std::pair<double, double>>& steps) const {
     const Vec3 x = p + w * t;
     const double r = length(x);
-    const float sun = atmosphere_.transmittance().to_top(r, dot(x, s) / r)[bin];
+    const float sun = atmosphere_.transmittance().sun(r, dot(x, s) / r)[bin];
     if (sun <= 0) return 0.0;
     const Density d = density(k, r - atmosphere_.medium().earth_radius_m);
     return transmittance_at(steps, t) * (d.rayleigh * phase_r + d.aerosol_scattering * phase_a) * sun;
@@ -282,7 +284,7 @@ class SunlitLineSky {
       const double cos_sun = dot(n, s);
       if (cos_sun > 0)
         sum += transmittance_at(steps, t_max) * albedo / kPi * cos_sun *
-               transmittance.to_top(transmittance.ground_radius(), cos_sun)[bin];
+               transmittance.sun(transmittance.ground_radius(), cos_sun)[bin];
     }
     const std::vector<std::pair<double, double>> parts =
         sunlit_parts(p, w, t_max, s, transmittance.ground_radius() - kShadowMarginM);
