@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <functional>
 
 #include <tbb/parallel_for.h>
@@ -99,29 +97,6 @@ TableCoordinates coordinates(double rg, double rt, double r, double mu, double m
           pole};
 }
 
-// e^x in single precision for the interpolated logarithms (Cephes' expf polynomial as
-// in exp_nonpositive, relative error below 2e-7), for x of either sign up to 88;
-// branch-free so that the 8 bins go through it together (libm's expf took a tenth of
-// the tables' time).
-inline float exp_of_log(float x) {
-  x = std::min(std::max(x, -87.0f), 88.0f);
-  const float t = x * 1.44269504088896341f;                    // x / ln 2
-  const int n = static_cast<int>(t + std::copysign(0.5f, t));  // nearest integer
-  const float fn = static_cast<float>(n);
-  const float r = x - fn * 0.693359375f + fn * 2.12194440e-4f;  // x − n ln 2 in two parts
-  float p = 1.9875691500e-4f;
-  p = p * r + 1.3981999507e-3f;
-  p = p * r + 8.3334519073e-3f;
-  p = p * r + 4.1665795894e-2f;
-  p = p * r + 1.6666665459e-1f;
-  p = p * r + 5.0000001201e-1f;
-  const float y = p * r * r + r + 1.0f;
-  const int32_t bits = (n + 127) << 23;  // 2^n
-  float scale;
-  std::memcpy(&scale, &bits, sizeof scale);
-  return y * scale;
-}
-
 // S at a table position by multilinear interpolation of log S on the grid.
 void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c, Bins& out_r, Bins& out_a) {
   Bins sum_r{}, sum_a{};
@@ -159,8 +134,8 @@ void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c
   }
   // Every bin through exp first and the floor after, so that both loops vectorise.
   for (int k = 0; k < kBins; ++k) {
-    out_r[k] = exp_of_log(sum_r[k]);
-    out_a[k] = exp_of_log(sum_a[k]);
+    out_r[k] = exp_fast(sum_r[k]);
+    out_a[k] = exp_fast(sum_a[k]);
   }
   for (int k = 0; k < kBins; ++k) {
     out_r[k] = sum_r[k] <= kLogFloor + 1 ? 0.0f : out_r[k];
