@@ -1,6 +1,7 @@
 #include "skylit/render/tile_sliver_values.h"
 
 #include <cmath>
+#include <ranges>
 
 #include "skylit/render/cache_corner_agreement.h"
 
@@ -11,12 +12,12 @@ const CachedSkyLight* TileSliverValues::find(double x, double y, const SurfacePo
   double best_distance = 0;
   // Newest first; entries come row by row, so the scan stops at the first one more than
   // the reach above the sample.
-  for (auto it = entries_.rbegin(); it != entries_.rend(); ++it) {
-    if (it->y < y - kReachPixels - 1) break;
-    const double d = std::hypot(it->x - x, it->y - y);
-    if (d > kReachPixels || !same_surface(it->point, point) || !within_reach(it->point, point)) continue;
+  for (const Entry& entry : std::ranges::reverse_view(entries_)) {
+    if (entry.y < y - kReachPixels - 1) break;
+    const double d = std::hypot(entry.x - x, entry.y - y);
+    if (d > kReachPixels || !same_surface(entry.point, point) || !within_reach(entry.point, point)) continue;
     if (!best || d < best_distance) {  // ties keep the newest: deterministic
-      best = &*it;
+      best = &entry;
       best_distance = d;
     }
   }
