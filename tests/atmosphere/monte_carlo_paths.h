@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "skylit/atmosphere/phase_functions.h"
@@ -40,6 +41,20 @@ inline double sample_henyey_greenstein(double g, double u) {
   if (std::abs(g) < 1e-3) return 1.0 - 2.0 * u;
   const double q = (1.0 - g * g) / (1.0 - g + 2.0 * g * u);
   return (1.0 + g * g - q * q) / (2.0 * g);
+}
+
+// The next collision of a free flight by delta tracking (Woodcock et al. 1965):
+// tentative collisions at the rate `majorant` (at least σ_t everywhere along the ray),
+// each real with probability σ_t(t)/majorant. The distance of the first real one, or
+// nothing if the flight passes t_max first.
+template <class ExtinctionAt>
+std::optional<double> next_collision(double t_max, double majorant, Random& random, const ExtinctionAt& extinction_at) {
+  double t = 0;
+  for (;;) {
+    t -= std::log(1.0 - random.uniform()) / majorant;
+    if (t >= t_max) return std::nullopt;
+    if (random.uniform() * majorant < extinction_at(t)) return t;
+  }
 }
 
 // One view: a direction (elevation, azimuth from the sun), or the horizontal plane

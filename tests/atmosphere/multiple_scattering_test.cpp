@@ -53,6 +53,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -195,24 +196,15 @@ class MonteCarloSky {
       const double r = length(p), mu = dot(p, w) / r;
       const bool ground = shell::hits_ground(r, mu, rg);
       const double t_max = ground ? shell::distance_to_ground(r, mu, rg) : shell::distance_to_outer_sphere(r, mu, rt);
-      // Delta tracking.
-      double t = 0, sigma_r = 0, sigma_a = 0, sigma_t = 0;
-      bool collided = false;
-      for (;;) {
-        t -= std::log(1.0 - random.uniform()) / majorant;
-        if (t >= t_max) break;
-        const double h = length(p + w * t) - m.earth_radius_m;
-        const double rho_a = m.aerosol_density(h);
-        sigma_r = beta_r * m.rayleigh_density(h);
-        sigma_a = beta_as * rho_a;
-        sigma_t = sigma_r + beta_ae * rho_a + beta_o * m.ozone_density(h);
-        if (random.uniform() * majorant < sigma_t) {
-          collided = true;
-          break;
-        }
-      }
-      if (collided) {
-        p = p + w * t;
+      auto altitude_at = [&](double t) { return length(p + w * t) - m.earth_radius_m; };
+      auto extinction_at = [&](double t) {
+        const double h = altitude_at(t);
+        return beta_r * m.rayleigh_density(h) + beta_ae * m.aerosol_density(h) + beta_o * m.ozone_density(h);
+      };
+      if (const std::optional<double> t = next_collision(t_max, majorant, random, extinction_at)) {
+        const double h = altitude_at(*t), sigma_t = extinction_at(*t);
+        const double sigma_r = beta_r * m.rayleigh_density(h), sigma_a = beta_as * m.aerosol_density(h);
+        p = p + w * *t;
         const double sigma_s = sigma_r + sigma_a;
         weight *= sigma_s / sigma_t;
         weight_iso *= sigma_s / sigma_t;

@@ -38,6 +38,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -91,20 +92,13 @@ class SunlitLineSky {
       const double r = length(p), mu = dot(p, w) / r;
       const bool ground = shell::hits_ground(r, mu, rg);
       const double t_max = ground ? shell::distance_to_ground(r, mu, rg) : shell::distance_to_outer_sphere(r, mu, rt);
-      double t = 0, sigma_r = 0, sigma_a = 0, sigma_t = 0;
-      bool collided = false;
-      for (;;) {
-        t -= std::log(1.0 - random.uniform()) / majorant;
-        if (t >= t_max) break;
-        const Density d = density(k, length(p + w * t) - m.earth_radius_m);
-        sigma_r = d.rayleigh;
-        sigma_a = d.aerosol_scattering;
-        sigma_t = d.extinction;
-        if (random.uniform() * majorant < sigma_t) {
-          collided = true;
-          break;
-        }
-      }
+      auto density_at = [&](double t) { return density(k, length(p + w * t) - m.earth_radius_m); };
+      const std::optional<double> collision =
+          next_collision(t_max, majorant, random, [&](double t) { return density_at(t).extinction; });
+      const bool collided = collision.has_value();
+      const double t = collision.value_or(t_max);
+      const Density d = collided ? density_at(t) : Density{};
+      const double sigma_r = d.rayleigh, sigma_a = d.aerosol_scattering, sigma_t = d.extinction;
       if (!collided && !ground) break;  // left the atmosphere
       const Vec3 w_in = w;
       const Vec3 n = collided ? Vec3{} : normalize(p + w * t_max);
