@@ -1,7 +1,6 @@
 #include "skylit/render/tile_sliver_values.h"
 
 #include <cmath>
-#include <ranges>
 
 #include "skylit/render/cache_corner_agreement.h"
 
@@ -11,8 +10,10 @@ const CachedSkyLight* TileSliverValues::find(double x, double y, const SurfacePo
   const Entry* best = nullptr;
   double best_distance = 0;
   // Newest first; entries come row by row, so the scan stops at the first one more than
-  // the reach above the sample.
-  for (const Entry& entry : std::ranges::reverse_view(entries_)) {
+  // the reach above the sample. An index, not std::ranges::reverse_view, which Clang 14
+  // (the sanitizer build) cannot compile with libstdc++ 12.
+  for (size_t i = entries_.size(); i-- > 0;) {
+    const Entry& entry = entries_[i];
     if (entry.y < y - kReachPixels - 1) break;
     const double d = std::hypot(entry.x - x, entry.y - y);
     if (d > kReachPixels || !same_surface(entry.point, point) || !within_reach(entry.point, point)) continue;
