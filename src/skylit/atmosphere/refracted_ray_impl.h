@@ -24,11 +24,18 @@ void add_leg(const Air& air, double earth_radius, double r_low, double r_high, d
              RefractedRay& ray) {
   if (r_high <= r_low) return;
   const double u_max = std::sqrt(r_high - r_low), du = u_max / samples;
+  // n·r − p rises from the leg's start at least as fast as its slope there times
+  // r − r_low = u² (n·r is convex where the density falls exponentially). A lowest point
+  // found only to Newton's tolerance can leave n·r − p a rounding below zero just above
+  // it, which on a leg micrometres long (a nearly horizontal ray) turned 1/√ into 1e150.
+  const AirSample start = air(r_low - earth_radius);
+  const double slope = start.n + r_low * start.dn_dr;  // d(n·r)/dr
   for (int k = 0; k < samples; ++k) {
     const double u = (k + 0.5) * du, r = r_low + u * u, dr = 2.0 * u * du;
     const AirSample a = air(r - earth_radius);
     const double nr = a.n * r;
-    const double root = std::sqrt(std::max((nr - p) * (nr + p), 1e-300));  // √(n²r² − p²)
+    const double rise = std::max(nr - p, slope * u * u);               // n·r − p
+    const double root = std::sqrt(std::max(rise * (nr + p), 1e-300));  // √(n²r² − p²)
     const double ds = nr * dr / root;
     ray.columns.rayleigh += a.rayleigh * ds;
     ray.columns.aerosol += a.aerosol * ds;
