@@ -17,6 +17,11 @@ struct AirSample {
   double dn_dr;                     // its gradient (m⁻¹, < 0)
 };
 
+// The medium's air at altitude h, the gradient by a central difference over ±1 m: the
+// US Standard Atmosphere's density is exponential within each 1 km row, so this is its
+// slope but within 1 m of a row's edge.
+AirSample air_sample(const AtmosphereMedium& medium, double h);
+
 // One leg from r_low up to r_high for the invariant p: r = r_low + u², midpoint rule in u,
 // so that the 1/√(n²r² − p²) of a lowest point (r_low = r_t) becomes finite.
 template <typename Air>

@@ -20,15 +20,8 @@ class AirOnAGrid {
  public:
   AirOnAGrid(const AtmosphereMedium& medium, double bottom_m, double top_m)
       : bottom_m_(bottom_m), samples_(static_cast<size_t>((top_m - bottom_m) / kStepM) + 2) {
-    constexpr double kSlopeStepM = 1.0;
-    for (size_t i = 0; i < samples_.size(); ++i) {
-      const double h = bottom_m + kStepM * static_cast<double>(i);
-      const double rho = medium.rayleigh_density(h);
-      const double slope =
-          (medium.rayleigh_density(h + kSlopeStepM) - medium.rayleigh_density(h - kSlopeStepM)) / (2 * kSlopeStepM);
-      samples_[i] = {rho, medium.aerosol_density(h), medium.ozone_density(h), 1.0 + medium.refractivity * rho,
-                     medium.refractivity * slope};
-    }
+    for (size_t i = 0; i < samples_.size(); ++i)
+      samples_[i] = refraction::air_sample(medium, bottom_m + kStepM * static_cast<double>(i));
   }
 
   refraction::AirSample operator()(double h) const {
