@@ -19,42 +19,61 @@ export UBSAN_OPTIONS="log_path=$logs/ubsan:print_stacktrace=1:halt_on_error=1"
 # The test program itself in two shards, not CTest's one process per test: the
 # atmosphere tables that many tests share are then built once per shard rather than
 # once per test, which under the sanitizers is most of the time.
-# Left out here (they run in scripts/test.sh): the accuracy checks that repeat one
-# code path over a dense quadrature or thousands of samples, and the sweeps that
-# render the same cell code many times. Under the sanitizers each took 50–170 s (a
-# quarter of this run, measured 2026-12-02 with gtest's JSON timings). Their code runs
-# here anyway, at fewer points: the renders, the path-integrator tests (reflection
-# sampling), the reference images (the specular band search, sky light) and the
-# remaining sweep test (sweep cells) go through it.
+# Left out here (they run in scripts/test.sh): the tests that repeat code other tests
+# run under the sanitizers too, over a dense quadrature, thousands of samples, many
+# renders or many airs. The sanitizers find a memory or undefined-behaviour error by
+# running its code once, not by running it often; each of these took 15–200 s here (an
+# atmosphere's tables alone take 22 s instrumented, 1.3 s in Release). Measured
+# 2026-12-03 with gtest's JSON timings (-O2): the whole suite 1880 s of CPU, 1070 s
+# wall in two shards; without these about 830 s of CPU. What still runs covers their
+# code at fewer points: the renders, the reference images of every example, the
+# extreme scenes, one sweep and one animation through the CLI, the other tests of the
+# shared tables, the path-integrator tests.
 heavy=(
-  SweepCommand.WritesEveryCombinationAndTheSheet
-  SweepCommand.Fig7ExampleSweepsAtATinySize
+  # dense quadratures and many samples of one code path
   SpecularSky.AdaptiveBandSearchMatchesADenseQuadrature
   SkyLight.CanyonFloorSeesTheSkyFractionOfTheClosedForm
+  SkyLight.UnobstructedIrradianceMatchesADenseQuadratureOfTheSky
+  SkyIrradiance.MatchesABruteForceIntegralOverTheSphere
   Renderer.WhitePlaneMatchesTheSpectrumCommandsIlluminances
-  PathFog.SlabUnderUniformSkyMatchesAddingDoubling
   SpectrumCommand.CsvHasEveryNanometreAndMatchesTheModel
   ReflectionSampling.MeanWeightIsTheDirectionalAlbedo
   ReflectionSampling.DirectionsFollowTheStatedDensity
-  SkyLight.UnobstructedIrradianceMatchesADenseQuadratureOfTheSky
-  SkyIrradiance.MatchesABruteForceIntegralOverTheSphere
-  MultipleScattering.MonteCarloFirstOrderMatchesSingleScattering
-  # the same Monte Carlo reference (about 25 s of CPU in Release, both estimators), which
-  # whichever of these runs first in a shard computes.
-  MultipleScattering.SunlitLineEstimatorAgreesWithTheCollisionEstimator
-  MultipleScattering.SunlitLineFirstOrderMatchesSingleScattering
-  MultipleScattering.ScatteringOrdersMatchTheSunlitLineEstimatorAtTwilight
-  # issue 20: some twenty small renders to compare merged shards with one process;
-  # the shards' file format (XyzFile) and the animation (AnimateCommand) run here.
-  SplitRuns.ShardsMergeIntoTheSameSweepAndAnimation
+  FogSkyLight.AdaptivePitchMatchesFineFixedSteps
+  WeatherConditions.ClearHoursOfTheSharedFileMatchTheModel
+  SkyLightCacheExamples.Fig7AtSmallSizesStaysNearTheExactSkyLight
+  # the atmosphere's Monte Carlo reference (test code; about 25 s of CPU in Release for
+  # each estimator), which whichever of these runs first in a shard computes
+  'MultipleScattering.*MonteCarlo*'
+  'MultipleScattering.*SunlitLine*'
+  MultipleScattering.OrdersFallGeometricallyAndConverge
+  # path-traced comparisons; their code runs here through the closed-form tests of the
+  # same features and PathIntegrator's
+  PathFog.SlabUnderUniformSkyMatchesAddingDoubling
   FogMultipleScattering.MatchesThePathTracedReferenceWhereTheFieldIsAzimuthallySymmetric
-  # path-traced comparisons of this session (fog's azimuthal terms, the reflected sun on
-  # Fig. 7): their code runs here through the closed-form tests of the same features.
   FogMultipleScattering.FollowsTheSunInAzimuthWithTheDropletPhaseFunction
   ReflectedSunFig7.AluminiumTowerAgainstThePathTracer
-  # thirteen airs' tables built to check the shared tables' key; the sharing itself
-  # (and its threads) runs here in the other AtmosphereTables tests.
+  CloudSlab.SkyLitMatchesPathTracedReference
+  # many renders of one scene, or renders in many airs
+  FogContrast.BlackTargetsFollowKoschmiedersLawInTheRenderedImage
+  HorizonLine.NoRowStandsOutWhereTheGroundPlaneMeetsTheSky
+  CloudRender.DistantCloudFadesIntoHazeThroughTheAirBeforeIt
+  PublishedValues.RayleighOnlyAtmosphereAttenuatesTheZenithSunByItsOpticalDepth
+  Cli.OutputDoesNotDependOnThreadCount
+  CliNumbers.NonFiniteAndOverflowingValuesAreRefusedByEveryNumericOption
+  # sweeps and animations (one of each runs here), shards, the browser
+  SweepCommand.WritesEveryCombinationAndTheSheet
+  SweepCommand.Fig7ExampleSweepsAtATinySize
+  SweepCommand.StatisticsOverHoursGatherIntoOneCsvAndAPlot
+  SweepCommand.StatisticsOverWeatherFileHoursLieInOneYear
+  AnimateCommand.FramesInOrderAtOneExposureWithViewerVideoAndStatistics
+  AnimateCommand.ViewerInChromiumShowsEachFrameWithItsLabel
+  ReportInBrowser.ImagesLoadAndReadOutShowsTheExrLuminance
+  SplitRuns.ShardsMergeIntoTheSameSweepAndAnimation
+  # thirteen and three airs' tables; the sharing itself runs here in the other
+  # AtmosphereTables tests
   AtmosphereTables.EveryChangeOfTheAirBuildsItsOwn
+  AtmosphereTables.ThreadsAskingForAFewAirsAtOnceEachGetTheirAirs
 )
 filter="-$(IFS=:; echo "${heavy[*]}")"
 
