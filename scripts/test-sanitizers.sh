@@ -22,10 +22,10 @@ export UBSAN_OPTIONS="log_path=$logs/ubsan:print_stacktrace=1:halt_on_error=1"
 # Left out here (they run in scripts/test.sh): the tests that repeat code other tests
 # run under the sanitizers too, over a dense quadrature, thousands of samples, many
 # renders or many airs. The sanitizers find a memory or undefined-behaviour error by
-# running its code once, not by running it often; each of these took 15–200 s here (an
-# atmosphere's tables alone take 22 s instrumented, 1.3 s in Release). Measured
-# 2026-12-03 with gtest's JSON timings (-O2): the whole suite 1880 s of CPU, 1070 s
-# wall in two shards; without these about 830 s of CPU. What still runs covers their
+# running its code once, not by running it often. With gtest's JSON timings: those
+# listed 2026-12-02 took 50–170 s each at -O1, those added 2026-12-03 15–200 s each at
+# -O2 (an atmosphere's tables alone take 22 s instrumented, 1.3 s in Release). The whole
+# suite at -O2 ran 1070 s wall in two shards; without these 527 s. What still runs covers their
 # code at fewer points: the renders, the reference images of every example, the
 # extreme scenes, one sweep and one animation through the CLI, the other tests of the
 # shared tables, the path-integrator tests.
