@@ -14,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "skylit/atmosphere/seen_sun.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/renderer.h"
 
@@ -37,7 +38,8 @@ void BM_AtmosphereTables(benchmark::State& state) {
   for (auto _ : state) {
     skylit::forget_shared_atmosphere_tables();  // a cold build each time, as for a new air
     const skylit::Atmosphere atmosphere(scene.atmosphere);
-    const skylit::SkyModel sky(atmosphere, to_sun, scene.camera.position.z);
+    const skylit::SkyModel sky(atmosphere, skylit::SunRefraction(atmosphere).true_direction(to_sun),
+                               scene.camera.position.z);
     benchmark::DoNotOptimize(&sky);
   }
 }

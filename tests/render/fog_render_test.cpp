@@ -76,8 +76,8 @@ TEST(FogRender, BeamsComeOnlyFromTheSunlitPartsOfARay) {
   scene.fog->density_at_ground = 0.3;
   scene.fog->multiple_scattering = true;
   const Atmosphere atmosphere(scene.atmosphere);
-  const Vec3 to_sun = direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
-  const SkyModel sky(atmosphere, to_sun, 1.6);
+  const SkyModel sky(atmosphere, direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg), 1.6);
+  const Vec3& to_sun = sky.to_sun();  // the sun as seen, where the fog's light comes from
   const std::vector<const TriangleMesh*> with_block{&scene.objects[0].mesh, &scene.objects[1].mesh};
   const std::vector<const TriangleMesh*> without{&scene.objects[0].mesh};
   const Vec3 origin{-80, 40, 2};  // in the block's shadow line: north-west of it, sun from the south-south-east

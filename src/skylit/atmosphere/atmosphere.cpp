@@ -6,7 +6,7 @@
 #include "skylit/atmosphere/cie_sky_view.h"
 #include "skylit/atmosphere/moon_light.h"
 #include "skylit/atmosphere/night_sky.h"
-#include "skylit/atmosphere/shell_geometry.h"
+#include "skylit/atmosphere/seen_sun.h"
 #include "skylit/atmosphere/sun_disc.h"
 #include "skylit/core/angles.h"
 #include "skylit/spectrum/spectral_math.h"
@@ -30,39 +30,28 @@ Atmosphere::Atmosphere(const AtmosphereSettings& settings, const SpectralBands& 
 Atmosphere::~Atmosphere() = default;
 
 Irradiance Atmosphere::direct_sun(double height_m, double sun_elevation_rad) const {
-  return extraterrestrial_ * Transmittance(tables_->transmittance.to_top(ground_radius() + std::max(0.0, height_m),
+  return extraterrestrial_ * Transmittance(tables_->transmittance.sun(ground_radius() + std::max(0.0, height_m),
+                                                                      std::sin(sun_elevation_rad)));
+}
+
+Irradiance Atmosphere::direct_sun_exact(double height_m, double sun_elevation_rad) const {
+  return extraterrestrial_ * Transmittance(SunRefraction(*this).sunlight(ground_radius() + std::max(0.0, height_m),
                                                                          std::sin(sun_elevation_rad)));
 }
 
-namespace {
-
-// The sun's beam through the medium from radius r, by quadrature of the column densities.
-Irradiance direct_sun_through(const AtmosphereMedium& medium, const Irradiance& extraterrestrial, double r,
-                              double sun_elevation_rad, double ground_radius, double top_radius) {
-  const double mu = std::sin(sun_elevation_rad);
-  if (shell::hits_ground(r, mu, ground_radius)) return Irradiance(0.0f);
-  const ColumnDensities c = column_densities(medium, r, mu, shell::distance_to_outer_sphere(r, mu, top_radius));
-  return extraterrestrial * Transmittance(transmittance_of(medium.extinction(c.rayleigh, c.aerosol, c.ozone)));
-}
-
-}  // namespace
-
-Irradiance Atmosphere::direct_sun_exact(double height_m, double sun_elevation_rad) const {
-  return direct_sun_through(tables_->medium, extraterrestrial_, ground_radius() + std::max(0.0, height_m),
-                            sun_elevation_rad, ground_radius(), tables_->transmittance.top_radius());
-}
-
-Irradiance direct_sun_at_ground(const AtmosphereSettings& settings, double sun_elevation_rad) {
+Irradiance direct_sun_at_ground(const AtmosphereSettings& settings, double seen_elevation_rad) {
   const SpectralBands bands = SpectralBands::render_bins();
   const double ground = settings.earth_radius_m + settings.site_elevation_m;
-  return direct_sun_through(AtmosphereMedium(settings, bands),
-                            Irradiance(extraterrestrial_irradiance(bands, settings.earth_sun_distance_au)), ground,
-                            sun_elevation_rad, ground, settings.earth_radius_m + settings.top_altitude_m);
+  const AtmosphereMedium medium(settings, bands);
+  const SunRefraction refraction(medium, ground, settings.earth_radius_m + settings.top_altitude_m);
+  const double mu_true = std::sin(refraction.true_elevation(seen_elevation_rad));
+  return Irradiance(extraterrestrial_irradiance(bands, settings.earth_sun_distance_au)) *
+         Transmittance(refraction.sunlight(ground, mu_true));
 }
 
-SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double observer_height_m)
+SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& true_to_sun, double observer_height_m)
     : atmosphere_(atmosphere),
-      to_sun_(normalize(to_sun)),
+      to_sun_(normalize(true_to_sun)),
       sun_elevation_(std::asin(std::clamp(to_sun_.z, -1.0, 1.0))),
       observer_radius_(atmosphere.ground_radius() +
                        std::clamp(observer_height_m, 0.0, 0.9 * atmosphere.settings().top_altitude_m)),
@@ -75,21 +64,29 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double obse
   // the camera and the scene only dims (it has no sunlight to scatter).
   const bool sun_shines = !cie || cie->direct_sun;
   const Spectrum sun = sun_shines ? atmosphere.extraterrestrial_irradiance().spectrum() : Spectrum(0.0f);
-  // Direct sunlight against height, with exact column densities toward the sun.
+  // Direct sunlight against height, with exact column densities along the sun's
+  // bent path, and its spreading.
+  const SunRefraction refraction(atmosphere);
+  to_sun_seen_ = refraction.seen_direction(to_sun_);
+  const auto through_air = [&](double height_m, bool spread) {
+    return Irradiance(sun * refraction.sunlight(ground + height_m, std::sin(sun_elevation_), spread));
+  };
   for (int k = 0; k < kDirectSunProfileSize; ++k) {
     const double u = static_cast<double>(k) / (kDirectSunProfileSize - 1);
-    direct_sun_profile_.push_back(
-        sun_shines ? atmosphere.direct_sun_exact(kDirectSunProfileTopM * u * u, sun_elevation_) : Irradiance(0.0f));
+    direct_sun_profile_.push_back(through_air(kDirectSunProfileTopM * u * u, true));
   }
-  sun_through_air_ = direct_sun(observer_radius_ - ground);
+  // The disc's radiance is dimmed along the path but not spread: the flattened disc's
+  // smaller solid angle takes the spreading.
+  sun_through_air_ = through_air(observer_radius_ - ground, false);
   if (cie) {
     const double ground_albedo = atmosphere.settings().ground_albedo;
-    const Irradiance sun_on_ground = direct_sun(0.0) * static_cast<float>(std::max(0.0, to_sun_.z));
+    // A CIE sky's luminance is measured about the sun as seen.
+    const Irradiance sun_on_ground = direct_sun(0.0) * static_cast<float>(std::max(0.0, to_sun_seen_.z));
     observer_view_ =
-        cie_sky_view(*cie, atmosphere.bands(), to_sun_, sun_on_ground, ground_albedo, observer_radius_, ground);
+        cie_sky_view(*cie, atmosphere.bands(), to_sun_seen_, sun_on_ground, ground_albedo, observer_radius_, ground);
     if (observer_radius_ - ground > kGroundLayerM)
       ground_view_ =
-          cie_sky_view(*cie, atmosphere.bands(), to_sun_, sun_on_ground, ground_albedo, ground + 1.0, ground);
+          cie_sky_view(*cie, atmosphere.bands(), to_sun_seen_, sun_on_ground, ground_albedo, ground + 1.0, ground);
   } else {
     observer_view_ =
         std::make_unique<SkyViewTable>(atmosphere.integrator(), sun, observer_radius_, ground, sun_elevation_);
@@ -134,10 +131,10 @@ Radiance SkyModel::sky_radiance_near_ground(const Vec3& direction) const {
 }
 
 Radiance SkyModel::sun_radiance(const Vec3& direction) const {
-  const double angle = std::acos(std::clamp(dot(normalize(direction), to_sun_), -1.0, 1.0));
+  const double angle = std::acos(std::clamp(dot(normalize(direction), to_sun_seen_), -1.0, 1.0));
   if (angle >= sun_angular_radius_) return Radiance(0.0f);
   if (const std::optional<MoonSettings>& moon = atmosphere_.settings().moon)
-    return Radiance(moon_disc_radiance(sun_through_air_.spectrum(), *moon, to_sun_, direction));
+    return Radiance(moon_disc_radiance(sun_through_air_.spectrum(), *moon, to_sun_seen_, direction));
   return Radiance(sun_disc_radiance(sun_through_air_.spectrum(), atmosphere_.bands(), sun_angular_radius_, angle));
 }
 

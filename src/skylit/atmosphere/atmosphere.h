@@ -33,9 +33,10 @@ class Atmosphere {
   double ground_radius() const { return tables_->transmittance.ground_radius(); }
   // W m⁻² nm⁻¹ at the top of the atmosphere, for the date's Earth–Sun distance.
   const Irradiance& extraterrestrial_irradiance() const { return extraterrestrial_; }
-  // Direct sunlight on a plane normal to the sun at `height_m` above the ground; 0 when
-  // the sun's centre is below the horizon there. From the transmittance table, and
-  // exactly (quadrature of the column densities toward the sun).
+  // Direct sunlight on a plane normal to the sun at `height_m` above the ground, for the
+  // sun's true elevation; 0 when the sun's centre is hidden there. From the
+  // transmittance table, and exactly (its ray traced through the air, bent when the air
+  // refracts, with the beam's spreading: seen_sun.h).
   Irradiance direct_sun(double height_m, double sun_elevation_rad) const;
   Irradiance direct_sun_exact(double height_m, double sun_elevation_rad) const;
 
@@ -46,16 +47,23 @@ class Atmosphere {
   Irradiance extraterrestrial_;
 };
 
-// Direct normal irradiance at the ground (render bins), exactly as direct_sun_exact but
-// without building the tables: for fitting the aerosol to a measured beam.
-Irradiance direct_sun_at_ground(const AtmosphereSettings& settings, double sun_elevation_rad);
+// Direct normal irradiance at the ground (render bins) for the sun seen at this
+// elevation, exactly as the scene's beam but without building the tables: for fitting
+// the aerosol to a measured beam.
+Irradiance direct_sun_at_ground(const AtmosphereSettings& settings, double seen_elevation_rad);
 
 class SkyModel {
  public:
-  SkyModel(const Atmosphere& atmosphere, const Vec3& to_sun, double observer_height_m);
+  // `true_to_sun`: the sun's true direction, outside the air, as the tables are indexed.
+  // A scene gives the sun as it is seen: SunRefraction(atmosphere).true_direction
+  // (seen_sun.h) turns that into this.
+  SkyModel(const Atmosphere& atmosphere, const Vec3& true_to_sun, double observer_height_m);
 
   const Atmosphere& atmosphere() const { return atmosphere_; }
-  const Vec3& to_sun() const { return to_sun_; }
+  // The direction the sun's light comes from in the scene: the sun as seen from the
+  // ground, lifted by the air's refraction (the same as the true one without it).
+  const Vec3& to_sun() const { return to_sun_seen_; }
+  const Vec3& true_to_sun() const { return to_sun_; }
 
   // Radiance of the sky (and of the ground far below the horizon) seen by the
   // observer, without the sun's disc.
@@ -63,7 +71,8 @@ class SkyModel {
   // The same for a point near the ground (where the scene's surfaces are), whatever the
   // observer's height: the light that reaches surfaces from the sky and the far ground.
   Radiance sky_radiance_near_ground(const Vec3& direction) const;
-  // The sun's disc as the observer sees it (limb-darkened, attenuated); 0 off the disc.
+  // The sun's disc as the observer sees it (limb-darkened, attenuated along its bent
+  // path; where to_sun() points, not flattened); 0 off the disc.
   // When the atmosphere's light is the moon (settings().moon), the moon's disc with its
   // phase, and `to_sun` is the direction toward the moon.
   Radiance sun_radiance(const Vec3& direction) const;
@@ -71,9 +80,9 @@ class SkyModel {
   MediumStretch aerial_perspective(const Vec3& direction, double distance_m) const;
   // Unobstructed sky and ground irradiance on a plane near the ground with this normal.
   Irradiance sky_irradiance(const Vec3& normal) const { return Irradiance(ground_sky_irradiance_->at(normal)); }
-  // The sun's direct normal irradiance at a height above the ground (computed exactly
-  // for the sun's direction at heights up to kDirectSunProfileTopM, not interpolated
-  // from the transmittance table).
+  // The sun's direct normal irradiance at a height above the ground, along its bent path
+  // and with its spreading (seen_sun.h): computed exactly for the sun's direction at
+  // heights up to kDirectSunProfileTopM, not interpolated from the transmittance table.
   Irradiance direct_sun(double height_m) const;
   // Diffuse irradiance on a horizontal plane at the observer.
   Irradiance diffuse_horizontal_at_observer() const;
@@ -83,8 +92,9 @@ class SkyModel {
   void add_night_sky(const Atmosphere& atmosphere);
 
   const Atmosphere& atmosphere_;
-  Vec3 to_sun_;
-  double sun_elevation_;
+  Vec3 to_sun_;           // true
+  Vec3 to_sun_seen_;      // seen from the ground
+  double sun_elevation_;  // true
   double observer_radius_;
   double sun_angular_radius_;
   static constexpr int kDirectSunProfileSize = 65;

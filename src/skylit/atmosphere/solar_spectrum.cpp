@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "skylit/atmosphere/atmosphere.h"
+#include "skylit/atmosphere/seen_sun.h"
 
 namespace skylit {
 
@@ -20,7 +21,9 @@ std::vector<SolarSpectrumSample> solar_spectrum(const AtmosphereSettings& settin
     const Atmosphere atmosphere(settings, bands);
     // Directly from the integrator rather than through a sky model's tables: only
     // these three quantities are wanted, at many wavelengths.
-    const double sun_elevation = std::asin(std::clamp(normalize(to_sun).z, -1.0, 1.0));
+    // `to_sun` is the sun as seen; the integrator's sun is the true one.
+    const double sun_elevation =
+        SunRefraction(atmosphere).true_elevation(std::asin(std::clamp(normalize(to_sun).z, -1.0, 1.0)));
     const double r = atmosphere.ground_radius() + observer_height_m, mu_sun = std::sin(sun_elevation);
     const Spectrum& e0 = atmosphere.extraterrestrial_irradiance().spectrum();
     const Spectrum direct = atmosphere.direct_sun_exact(observer_height_m, sun_elevation).spectrum();

@@ -17,7 +17,7 @@ struct SolarSpectrumSample {
 };
 
 // At every whole nm from first_nm to last_nm, for an observer `observer_height_m` above
-// the ground.
+// the ground and the sun seen in `to_sun` (seen_sun.h).
 std::vector<SolarSpectrumSample> solar_spectrum(const AtmosphereSettings& settings, const Vec3& to_sun,
                                                 double observer_height_m, int first_nm = 380, int last_nm = 780);
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "skylit/atmosphere/seen_sun.h"
 #include "skylit/core/angles.h"
 #include "skylit/render/obstacle_materials.h"
 #include "skylit/spectrum/rgb_spectrum_table.h"
@@ -15,9 +16,11 @@ PointMaterial::PointMaterial(const Material& material, const SurfacePoint& point
 PreparedScene::PreparedScene(const Scene& scene)
     : scene_(scene),
       pixel_angle_rad_(radians(scene.camera.vertical_fov_deg) / std::max(scene.render.height, 1)),
-      to_sun_(direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg)),
       atmosphere_(scene.atmosphere),
-      sky_(atmosphere_, to_sun_, scene.camera.position.z) {
+      sky_(atmosphere_,
+           SunRefraction(atmosphere_)
+               .true_direction(direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg)),
+           scene.camera.position.z) {
   for (const SceneObject& object : scene.objects) {
     cutouts_.push_back(surface_cutouts_for(object, scene.materials));
     tracer_.add_mesh(object.mesh, cutouts_.back().get());

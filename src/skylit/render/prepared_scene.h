@@ -40,7 +40,8 @@ class PreparedScene {
 
   const Scene& scene() const { return scene_; }
   const RayTracer& tracer() const { return tracer_; }
-  const Vec3& to_sun() const { return to_sun_; }
+  // Where the sun's light comes from: the scene's sun as seen (SkyModel::to_sun).
+  const Vec3& to_sun() const { return sky_.to_sun(); }
   const SkyModel& sky() const { return sky_; }
   const FogMedium* fog() const { return fog_.get(); }          // null without fog
   const CloudsInSky* clouds() const { return clouds_.get(); }  // null without clouds
@@ -91,7 +92,6 @@ class PreparedScene {
   // points at them, so that they outlive it.
   std::vector<std::unique_ptr<SurfaceCutouts>> cutouts_;
   RayTracer tracer_;  // mesh ids are the indices of scene_.objects
-  Vec3 to_sun_;
   Atmosphere atmosphere_;
   SkyModel sky_;
   std::unique_ptr<FogMedium> fog_;

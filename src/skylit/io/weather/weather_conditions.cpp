@@ -5,6 +5,7 @@
 #include <string>
 
 #include "skylit/atmosphere/atmosphere.h"
+#include "skylit/atmosphere/seen_sun.h"
 #include "skylit/core/formatted.h"
 #include "skylit/spectrum/cie.h"
 #include "skylit/sun/solar_position.h"
@@ -235,7 +236,7 @@ void check_weather_model(Scene& scene) {
   WeatherSummary& w = *scene.weather;
   const Vec3 to_sun = direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
   const Atmosphere atmosphere(scene.atmosphere);
-  const SkyModel sky(atmosphere, to_sun, 1.0);
+  const SkyModel sky(atmosphere, SunRefraction(atmosphere).true_direction(to_sun), 1.0);
   const double beam = illuminance(sky.direct_sun(0.0)) * w.clear_fraction;
   w.model_direct_normal_lux = beam;
   w.model_diffuse_horizontal_lux = illuminance(sky.sky_irradiance({0, 0, 1}));
