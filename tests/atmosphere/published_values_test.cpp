@@ -149,7 +149,7 @@ TEST(PublishedValues, TwilightIlluminanceOnTheHorizontalPlane) {
   // of the AMS Glossary of Meteorology (entries "civil twilight", "astronomical
   // twilight"): ~585–410 lx at sunset, ~3.5–2 lx at −6°, ~0.008 lx at −12°. Measured
   // with the scattering orders in the US Standard Atmosphere 1976 and refracted
-  // sunlight (docs/atmosphere.md): 911 lx at 0°, 570 lx at the apparent sunset
+  // sunlight (docs/atmosphere.md): 912 lx at 0°, 570 lx at the apparent sunset
   // (geometric −0.83°), 3.30 lx at −6°, 0.0060 lx at −12° (the night sky included); with
   // straight rays 896, 554, 2.94 and 0.0057 lx; in the exponential air of the paper's
   // Eq. (1) 6.1 and 0.0144 lx at −6° and −12°.
@@ -159,7 +159,8 @@ TEST(PublishedValues, TwilightIlluminanceOnTheHorizontalPlane) {
   // there: docs/atmosphere.md).
   const auto horizontal_lx = [](double sun_deg) {
     const SkyModel& sky = default_sky(sun_deg);
-    return illuminance(sky.direct_sun(0.0)) * std::max(0.0, std::sin(radians(sun_deg))) +
+    // The beam falls from where the sun is seen (at 0° true, 0.55° up).
+    return illuminance(sky.direct_sun(0.0)) * std::max(0.0, sky.to_sun().z) +
            illuminance(sky.diffuse_horizontal_at_observer());
   };
   const double at_sunset = horizontal_lx(-0.83), at_6 = horizontal_lx(-6.0), at_12 = horizontal_lx(-12.0);

@@ -65,8 +65,8 @@ Vec3 SunRefraction::seen_direction(const Vec3& true_to_sun) const {
   return with_elevation(true_to_sun, seen_elevation(elevation_of(true_to_sun)));
 }
 
-double SunRefraction::mu_true_of(double r, double mu_seen, bool& hits_ground, int samples) const {
-  const RefractedRay ray = trace_refracted_ray(medium_, r, mu_seen, ground_radius_, top_radius_, samples);
+double SunRefraction::mu_true_of(double r, double mu_seen, bool& hits_ground) const {
+  const RefractedRay ray = trace_refracted_ray(medium_, r, mu_seen, ground_radius_, top_radius_);
   hits_ground = ray.hits_ground;
   return ray.mu_true;
 }
@@ -95,7 +95,8 @@ SunRefraction::Beam SunRefraction::beam(double r, double mu_true) const {
   double f_lo = mu_true_of(r, lo, hits) - mu_true;
   // Even the lowest ray that reaches r comes from above the sun: r is in the Earth's
   // refracted shadow.
-  if (hits || f_lo > 0) return b;
+  if (hits || (f_lo > 0 && lo == mu_lowest)) return b;
+  f_lo = std::min(f_lo, 0.0);                     // a lift of a rounding below zero, at the zenith
   double f_hi = 1.0 - mu_true;                    // the zenith's ray is not bent
   const double guess = std::min(1.0, lo + 0.04);  // the lift never reaches 2.3°
   if (const double f = mu_true_of(r, guess, hits) - mu_true; f >= 0) {
@@ -121,11 +122,7 @@ SunRefraction::Beam SunRefraction::beam(double r, double mu_true) const {
       side = 1;
     }
   }
-  // The ray found, traced finer: near the horizon the default's 96 samples a leg leave
-  // the columns 0.3 % short (a beam of optical depth 12 then 4 % bright) and the
-  // spreading 2 % off; 512 come within 0.04 % and 0.1 % of 8192.
-  constexpr int kFineSamples = 512;
-  const RefractedRay ray = trace_refracted_ray(medium_, r, mu, ground_radius_, top_radius_, kFineSamples);
+  const RefractedRay ray = trace_refracted_ray(medium_, r, mu, ground_radius_, top_radius_);
   b.shines = !ray.hits_ground;
   if (!b.shines) return b;
   b.mu_seen = mu;
@@ -134,9 +131,7 @@ SunRefraction::Beam SunRefraction::beam(double r, double mu_true) const {
   constexpr double kStep = 1e-5;
   const double below = std::max(mu_lowest, mu - kStep), above = std::min(1.0, mu + kStep);
   bool hits_below = false, hits_above = false;
-  const double slope =
-      (mu_true_of(r, above, hits_above, kFineSamples) - mu_true_of(r, below, hits_below, kFineSamples)) /
-      (above - below);
+  const double slope = (mu_true_of(r, above, hits_above) - mu_true_of(r, below, hits_below)) / (above - below);
   // Étendue n²·dA·dΩ is conserved: the seen disc's solid angle is dμ_seen/dμ_true of
   // the unbent one's, and its radiance n² times (a vertical beam is not spread).
   if (!hits_below && slope > 0) b.spreading = n_here * n_here / slope;

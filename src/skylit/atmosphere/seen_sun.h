@@ -51,7 +51,7 @@ class SunRefraction {
   Spectrum sunlight(double r, double mu_true, bool spread = true) const;
 
  private:
-  double mu_true_of(double r, double mu_seen, bool& hits_ground, int samples = 96) const;
+  double mu_true_of(double r, double mu_seen, bool& hits_ground) const;
 
   const AtmosphereMedium& medium_;
   double ground_radius_, top_radius_;
