@@ -69,6 +69,7 @@ SkyModel::SkyModel(const Atmosphere& atmosphere, const Vec3& true_to_sun, double
   const SunRefraction refraction(atmosphere);
   to_sun_seen_ = refraction.seen_direction(to_sun_);
   const auto through_air = [&](double height_m, bool spread) {
+    if (!sun_shines) return Irradiance(0.0f);
     return Irradiance(sun * refraction.sunlight(ground + height_m, std::sin(sun_elevation_), spread));
   };
   for (int k = 0; k < kDirectSunProfileSize; ++k) {

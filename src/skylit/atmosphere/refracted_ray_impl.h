@@ -73,6 +73,15 @@ double add_leg(const Air& air, double earth_radius, double r_low, double r_from,
   return travel - (straight - (angle_from_lowest(r_high) - angle_from_lowest(r_from)));
 }
 
+// The apparent zenith cosine, at radius r, of the ray whose lowest point is the ground
+// (its n·r·sin z equal to the ground's n·r, Bouguer's invariant): rays arriving from
+// lower come up from the ground.
+template <typename Air>
+double grazing_mu(const Air& air, double earth_radius, double r, double ground_radius) {
+  const double s = air(ground_radius - earth_radius).n * ground_radius / (air(r - earth_radius).n * r);
+  return -std::sqrt(std::max(0.0, 1.0 - s * s));
+}
+
 // The radius where n(r)·r = p (Newton's method; n·r grows with r unless the air ducts
 // light, which needs dn/dr < −1/r, 25 times the standard gradient).
 template <typename Air>

@@ -51,15 +51,13 @@ RefractedSunTable::RefractedSunTable(const AtmosphereMedium& medium, double grou
       table_(kMuSize, kRSize) {
   const double earth = medium.earth_radius_m;
   const AirOnAGrid air(medium, ground_radius_m - earth, top_radius_m - earth);
-  const double ground_n_r = air(ground_radius_m - earth).n * ground_radius_m;
   tbb::parallel_for(0, kRSize, [&](int j) {
     const double rho = horizon_distance_ * j / (kRSize - 1);
     const double r = std::sqrt(rho * rho + ground_radius_m * ground_radius_m);
     // The apparent direction of the ray that grazes the ground (nudged up by 1e-9 so
     // that rounding does not put its lowest point below the ground), then directions
     // up to the zenith crowded toward it.
-    const double s = ground_n_r / (air(r - earth).n * r);
-    const double grazing = -std::sqrt(std::max(0.0, 1.0 - s * s)) * (1.0 - 1e-9);
+    const double grazing = refraction::grazing_mu(air, earth, r, ground_radius_m) * (1.0 - 1e-9);
     std::vector<double> mu_true(kRaysPerRow), log_spreading(kRaysPerRow), z_apparent(kRaysPerRow), z_true(kRaysPerRow);
     std::vector<ColumnDensities> columns(kRaysPerRow);
     for (int i = 0; i < kRaysPerRow; ++i) {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "skylit/atmosphere/atmosphere.h"
-#include "skylit/atmosphere/refracted_ray.h"
+#include "skylit/atmosphere/refracted_ray_impl.h"
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/core/angles.h"
 #include "skylit/spectrum/spectral_math.h"
@@ -35,8 +35,8 @@ double SunRefraction::true_elevation(double seen_elevation_rad) const {
 double SunRefraction::seen_elevation(double true_elevation_rad) const {
   if (!refracts_) return true_elevation_rad;
   if (true_elevation_rad >= -horizon_lift_rad_) {
-    const Beam b = beam(ground_radius_, std::sin(true_elevation_rad));
-    return b.shines ? std::asin(std::clamp(b.mu_seen, 0.0, 1.0)) : 0.0;
+    const std::optional<double> mu = mu_seen_at(ground_radius_, std::sin(true_elevation_rad));
+    return mu ? std::asin(std::clamp(*mu, 0.0, 1.0)) : 0.0;
   }
   // The inverse of true_elevation's linear fade below the horizon.
   if (true_elevation_rad >= -fade_rad_)
@@ -71,23 +71,13 @@ double SunRefraction::mu_true_of(double r, double mu_seen, bool& hits_ground) co
   return ray.mu_true;
 }
 
-SunRefraction::Beam SunRefraction::beam(double r, double mu_true) const {
-  r = std::clamp(r, ground_radius_, top_radius_);
-  Beam b;
-  if (!refracts_) {
-    b.shines = !shell::hits_ground(r, mu_true, ground_radius_);
-    b.mu_seen = mu_true;
-    if (b.shines)
-      b.columns = column_densities(medium_, r, mu_true, shell::distance_to_outer_sphere(r, mu_true, top_radius_));
-    return b;
-  }
-  // The lowest seen direction at r: the ray whose lowest point is the ground, where
-  // n·r·sin z equals the ground's n·r (Bouguer's invariant).
-  const double n_ground =
-      1.0 + medium_.refractivity * medium_.rayleigh_density(ground_radius_ - medium_.earth_radius_m);
-  const double n_here = 1.0 + medium_.refractivity * medium_.rayleigh_density(r - medium_.earth_radius_m);
-  const double sin_z = std::min(1.0, n_ground * ground_radius_ / (n_here * r));
-  const double mu_lowest = -std::sqrt(1.0 - sin_z * sin_z) + 1e-9;
+double SunRefraction::lowest_mu(double r) const {
+  const auto air = [this](double h) { return refraction::air_sample(medium_, h); };
+  return refraction::grazing_mu(air, medium_.earth_radius_m, r, ground_radius_) + 1e-9;
+}
+
+std::optional<double> SunRefraction::mu_seen_at(double r, double mu_true) const {
+  const double mu_lowest = lowest_mu(r);
   bool hits = false;
   // Refraction only lifts the seen sun: μ_seen ≥ μ_true. Regula falsi (Illinois) on
   // μ_true(μ_seen) − μ_true, which is increasing, between the two.
@@ -95,7 +85,7 @@ SunRefraction::Beam SunRefraction::beam(double r, double mu_true) const {
   double f_lo = mu_true_of(r, lo, hits) - mu_true;
   // Even the lowest ray that reaches r comes from above the sun: r is in the Earth's
   // refracted shadow.
-  if (hits || (f_lo > 0 && lo == mu_lowest)) return b;
+  if (hits || (f_lo > 0 && lo == mu_lowest)) return std::nullopt;
   f_lo = std::min(f_lo, 0.0);                     // a lift of a rounding below zero, at the zenith
   double f_hi = 1.0 - mu_true;                    // the zenith's ray is not bent
   const double guess = std::min(1.0, lo + 0.04);  // the lift never reaches 2.3°
@@ -122,6 +112,22 @@ SunRefraction::Beam SunRefraction::beam(double r, double mu_true) const {
       side = 1;
     }
   }
+  return mu;
+}
+
+SunRefraction::Beam SunRefraction::beam(double r, double mu_true) const {
+  r = std::clamp(r, ground_radius_, top_radius_);
+  Beam b;
+  if (!refracts_) {
+    b.shines = !shell::hits_ground(r, mu_true, ground_radius_);
+    b.mu_seen = mu_true;
+    if (b.shines)
+      b.columns = column_densities(medium_, r, mu_true, shell::distance_to_outer_sphere(r, mu_true, top_radius_));
+    return b;
+  }
+  const std::optional<double> solved = mu_seen_at(r, mu_true);
+  if (!solved) return b;
+  const double mu = *solved;
   const RefractedRay ray = trace_refracted_ray(medium_, r, mu, ground_radius_, top_radius_);
   b.shines = !ray.hits_ground;
   if (!b.shines) return b;
@@ -129,11 +135,12 @@ SunRefraction::Beam SunRefraction::beam(double r, double mu_true) const {
   b.columns = ray.columns;
   // dμ_true/dμ_seen by a difference, one-sided next to the grazing ray.
   constexpr double kStep = 1e-5;
-  const double below = std::max(mu_lowest, mu - kStep), above = std::min(1.0, mu + kStep);
+  const double below = std::max(lowest_mu(r), mu - kStep), above = std::min(1.0, mu + kStep);
   bool hits_below = false, hits_above = false;
   const double slope = (mu_true_of(r, above, hits_above) - mu_true_of(r, below, hits_below)) / (above - below);
   // Étendue n²·dA·dΩ is conserved: the seen disc's solid angle is dμ_seen/dμ_true of
   // the unbent one's, and its radiance n² times (a vertical beam is not spread).
+  const double n_here = refraction::air_sample(medium_, r - medium_.earth_radius_m).n;
   if (!hits_below && slope > 0) b.spreading = n_here * n_here / slope;
   return b;
 }

@@ -13,6 +13,8 @@
 // true one, as in the almanacs).
 #pragma once
 
+#include <optional>
+
 #include "skylit/atmosphere/transmittance_table.h"
 #include "skylit/core/vec3.h"
 
@@ -52,6 +54,11 @@ class SunRefraction {
 
  private:
   double mu_true_of(double r, double mu_seen, bool& hits_ground) const;
+  // The lowest seen zenith cosine at r whose ray does not come up from the ground.
+  double lowest_mu(double r) const;
+  // The seen zenith cosine at r of the sun whose true one is mu_true; empty where r lies
+  // in the Earth's refracted shadow.
+  std::optional<double> mu_seen_at(double r, double mu_true) const;
 
   const AtmosphereMedium& medium_;
   double ground_radius_, top_radius_;
