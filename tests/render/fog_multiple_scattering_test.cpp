@@ -14,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "skylit/geometry/primitives.h"
 #include "skylit/render/path_integrator.h"
 #include "skylit/render/renderer.h"
 #include "skylit/spectrum/cie.h"
@@ -114,6 +115,85 @@ TEST(FogMultipleScattering, CountsTheSunsSingleScatteringOnceWithASharpPeak) {
   // scattering by it the fast method read 1.23 of the reference; with the sun's single
   // scattering in the beams alone, 1.08 (standard error 0.5 % with 4000 paths).
   compare(1.0, 60, 0.99, {30}, {150}, 4000);
+}
+
+// A street in the fog: a wall 20 m high facing the sun (at azimuth 180°) across a block
+// 6 m high, a 15 m building on the sun's side, all grey 0.3 like the ground and the
+// field's ground below the layer.
+Scene fog_street(double optical_depth, double sun_altitude_deg, double asymmetry) {
+  Scene scene = fog_scene(optical_depth, sun_altitude_deg, asymmetry);
+  scene.atmosphere.ground_albedo = 0.3;
+  scene.materials.push_back({"grey", DiffuseMaterial{Spectrum(0.3f)}});
+  scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 20000), 0});
+  scene.objects.push_back({"wall", make_box({-30, 40, 0}, {30, 60, 20}), 0});
+  scene.objects.push_back({"block", make_box({-30, 25, 0}, {30, 32, 6}), 0});
+  scene.objects.push_back({"south", make_box({-30, -40, 0}, {30, -20, 15}), 0});
+  return scene;
+}
+
+// A surface seen from 0.3 m in front of it, so that its own light is what is measured.
+struct SurfaceView {
+  const char* surface;
+  Vec3 from, toward;
+};
+
+// The surfaces' luminance from both methods, printed with their ratio; those of the first
+// `asserted` views within 10 % plus three standard errors of the reference.
+void compare_surfaces(const Scene& street, const std::vector<SurfaceView>& views, size_t asserted, int paths) {
+  for (size_t i = 0; i < views.size(); ++i) {
+    const SurfaceView& view = views[i];
+    Scene scene = street;
+    scene.camera = Camera{view.from, view.from + view.toward, {0, 0, 1}, 50.0};
+    const Renderer fast(scene);
+    const PathIntegrator path(fast.prepared());
+    const Ray ray{view.from, normalize(view.toward)};
+    const double expected = luminance(fast.radiance(ray));
+    const Estimate reference = path_luminance(path, ray, paths, 23);
+    std::printf("[FogMS] %s: fast %.1f path %.1f ± %.1f cd/m2, ratio %.3f ± %.3f\n", view.surface, expected,
+                reference.mean, reference.standard_error, expected / reference.mean,
+                expected * reference.standard_error / (reference.mean * reference.mean));
+    if (i < asserted)
+      EXPECT_NEAR(expected, reference.mean, 0.1 * reference.mean + 3 * reference.standard_error) << view.surface;
+  }
+}
+
+const std::vector<SurfaceView> kStreetViews{
+    {"open ground, 300 m from the buildings", {300, 0, 0.3}, {0, 0.5, -1}},
+    {"sunlit wall at 15 m", {0, 39.7, 15}, {0, 1, 0}},
+    {"sunlit wall at 8 m, facing the block", {0, 39.7, 8}, {0, 1, 0}},
+    {"the block's top", {0, 28, 6.3}, {0, 0.2, -1}},
+    {"the block's sunlit face", {0, 24.7, 3}, {0, 1, 0}},
+    {"ground in a building's shadow", {0, 0, 0.3}, {0, 0.5, -1}},
+    {"ground in the 8 m gap", {0, 36, 0.3}, {0, 0.3, -1}},
+    {"shaded wall at 5 m, toward the sun", {0, -19.7, 5}, {0, -1, 0}},
+    {"shaded wall at 12 m, toward the sun", {0, -19.7, 12}, {0, -1, 0}},
+    {"the wall's shaded back at 10 m", {0, 60.3, 10}, {0, -1, 0}},
+};
+
+TEST(FogMultipleScattering, LightsSurfacesInTheFogWithTheFogsOwnLight) {
+  // Surfaces in fog_street inside a Henyey–Greenstein fog (g = 0.85) of optical depth 3
+  // (100 m deep), sun 30°: the direct sun is down to e^−5 in the layer, so what lights
+  // them is the fog's own light (media/fog_surface_light.h). The paper's sky light
+  // scaled by J(z)/J read 0.17–0.26 of the reference here. Measured with 8000 paths
+  // (standard errors 6–7 %): open ground 300 m from the buildings 0.98, the sunlit wall
+  // at 15 m 1.06 and at 8 m (facing the block) 1.19, the block's top 1.05. Within 10 %
+  // plus three standard errors. The other views of kStreetViews are not checked here
+  // (docs/fog.md): near the buildings in the shade the fast method reads 1.1–1.3 in this
+  // fog and up to 2 in thicker ones, since the buildings darken the fog around them,
+  // which the horizontally uniform field cannot know. SKYLIT_FOG_MS_FULL=1 prints them
+  // all for several fogs.
+  const std::vector<SurfaceView> open_and_sunlit(kStreetViews.begin(), kStreetViews.begin() + 4);
+  compare_surfaces(fog_street(3, 30, 0.85), open_and_sunlit, open_and_sunlit.size(), 8000);
+}
+
+TEST(FogMultipleScattering, SurfacesFullGrid) {
+  // docs/fog.md's table: every view of kStreetViews for Henyey–Greenstein fogs (g = 0.85)
+  // of optical depth 1, 3 and 10, an isotropic and a droplet fog of 3, sun 30°.
+  if (!std::getenv("SKYLIT_FOG_MS_FULL")) GTEST_SKIP() << "set SKYLIT_FOG_MS_FULL=1 for the full grid";
+  for (const auto& [tau, g] : {std::pair{1.0, 0.85}, {3.0, 0.85}, {10.0, 0.85}, {3.0, 0.0}, {3.0, 1.0}}) {
+    std::printf("[FogMS] surfaces, τ %.0f, g %.2f (1: droplets)\n", tau, g);
+    compare_surfaces(fog_street(tau, 30, g), kStreetViews, 0, 8000);
+  }
 }
 
 // A list of numbers from an environment variable ("1,3,10"), or `fallback` without it.

@@ -403,9 +403,28 @@ FogDiffuseField::LevelWeight FogDiffuseField::level_at(double z) const {
 }
 
 FogDiffuseField::AzimuthTerms FogDiffuseField::azimuth_terms(double relative_azimuth) {
+  // cos(mφ) = 2 cos φ·cos((m−1)φ) − cos((m−2)φ): one cosine per call (the sky-light
+  // integrals ask for these once per direction).
   AzimuthTerms c{};
-  for (int m = 0; m < kModes; ++m) c[static_cast<size_t>(m)] = static_cast<float>(std::cos(m * relative_azimuth));
+  const double c1 = std::cos(relative_azimuth);
+  double previous = 1.0, current = c1;
+  c[0] = 1.0f;
+  c[1] = static_cast<float>(c1);
+  for (size_t m = 2; m < c.size(); ++m) {
+    const double next = 2 * c1 * current - previous;
+    previous = current;
+    current = next;
+    c[m] = static_cast<float>(next);
+  }
   return c;
+}
+
+FogDiffuseField::DirectionWeight FogDiffuseField::direction_at(double up) const {
+  const size_t directions = direction_.size();
+  up = std::clamp(up, direction_.front(), direction_.back());
+  size_t d = static_cast<size_t>(std::upper_bound(direction_.begin(), direction_.end(), up) - direction_.begin());
+  d = std::clamp<size_t>(d, 1, directions - 1) - 1;
+  return {d, static_cast<float>((up - direction_[d]) / (direction_[d + 1] - direction_[d]))};
 }
 
 void FogDiffuseField::lookup_terms(const std::vector<Spectrum>& table, double z, double up,
@@ -414,10 +433,7 @@ void FogDiffuseField::lookup_terms(const std::vector<Spectrum>& table, double z,
   if (std::isnan(z) || std::isnan(up)) return;
   const LevelWeight level = level_at(z);
   const size_t k = level.below, directions = direction_.size();
-  up = std::clamp(up, direction_.front(), direction_.back());
-  size_t d = static_cast<size_t>(std::upper_bound(direction_.begin(), direction_.end(), up) - direction_.begin());
-  d = std::clamp<size_t>(d, 1, directions - 1) - 1;
-  const float fd = static_cast<float>((up - direction_[d]) / (direction_[d + 1] - direction_[d]));
+  const auto [d, fd] = direction_at(up);
   const std::array<std::pair<size_t, float>, 4> corners{{{k * directions + d, (1 - fd) * (1 - level.above)},
                                                          {k * directions + d + 1, fd * (1 - level.above)},
                                                          {(k + 1) * directions + d, (1 - fd) * level.above},
@@ -426,6 +442,15 @@ void FogDiffuseField::lookup_terms(const std::vector<Spectrum>& table, double z,
     const Spectrum* t = &table[cell * kModes];
     for (int m = 0; m < kModes; ++m) terms[static_cast<size_t>(m)] += t[m] * weight;
   }
+}
+
+void FogDiffuseField::radiance_terms_at_level(size_t level, double up, std::array<Spectrum, kModes>& terms) const {
+  terms.fill(Spectrum(0.0f));
+  if (level >= column_.size() || std::isnan(up)) return;
+  const auto [d, fd] = direction_at(up);
+  const Spectrum* lower = &radiance_[(level * direction_.size() + d) * kModes];
+  const Spectrum* upper = lower + kModes;
+  for (int m = 0; m < kModes; ++m) terms[static_cast<size_t>(m)] = lower[m] * (1 - fd) + upper[m] * fd;
 }
 
 Spectrum FogDiffuseField::lookup(const std::vector<Spectrum>& table, double z, double up,

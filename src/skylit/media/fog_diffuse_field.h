@@ -81,13 +81,25 @@ class FogDiffuseField {
   // A bound on the largest value `scattered` takes (Σ_m |S_m|), per bin.
   const std::array<double, kSpectralBins>& largest() const { return largest_; }
 
- private:
-  // The level at or above z (in column from the top) and the weight of the next one.
+  // The tables' levels (by column from the top) and where altitude z falls between them:
+  // the level at or above z and the weight of the next one down.
   struct LevelWeight {
     size_t below;
     float above;
   };
   LevelWeight level_at(double z_m) const;
+  size_t level_count() const { return column_.size(); }
+  // The diffuse radiance's Fourier terms R_m at one level toward the direction of travel
+  // with upward cosine `up`, unclamped: radiance = max(0, Σ_m cos(mφ)·R_m).
+  void radiance_terms_at_level(size_t level, double up, std::array<Spectrum, kModes>& terms) const;
+
+ private:
+  // The output direction at or below `up` and the weight of the next one.
+  struct DirectionWeight {
+    size_t below;
+    float above;
+  };
+  DirectionWeight direction_at(double up) const;
   // The table's terms interpolated in altitude and direction.
   void lookup_terms(const std::vector<Spectrum>& table, double z_m, double up,
                     std::array<Spectrum, kModes>& terms) const;

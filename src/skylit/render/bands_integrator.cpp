@@ -11,11 +11,13 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
     : scene_(scene),
       sky_(scene.sky()),
       to_sun_(scene.to_sun()),
+      fog_light_(scene.fog() ? scene.fog()->surface_light() : nullptr),
       obstacle_materials_(obstacle_materials(scene.scene().materials)) {
   const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_radiance(ray, hit); };
-  sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle);
+  sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle,
+                                          fibonacci_sphere(SkyLight::kDefaultDirections), fog_light_);
   one_pixel_sky_light_ =
-      std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kOnePixelDirections));
+      std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kOnePixelDirections), fog_light_);
   reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
                                                   [this](const Vec3& position, const Vec3& normal) {
                                                     return sun_reaching(SurfacePoint{position, normal, 0, 0});
@@ -62,6 +64,11 @@ Transmittance BandsIntegrator::sky_share(double z) const {
   return scene_.fog() ? scene_.fog()->sky_light_share(z) * clouds : clouds;
 }
 
+Transmittance BandsIntegrator::diffuse_share(double z) const {
+  if (fog_light_ && fog_light_->covers(z)) return scene_.clouds() ? scene_.clouds()->sky_share() : Transmittance(1.0f);
+  return sky_share(z);
+}
+
 Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
   if (dot(point.normal, to_sun_) <= 0) return Irradiance(0.0f);
   const Irradiance sun = sky_.direct_sun(point.position.z);
@@ -78,8 +85,11 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
 
 Radiance BandsIntegrator::lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer,
                                                        const Material& material) const {
-  const Irradiance irradiance = sky_.sky_irradiance(point.normal) * sky_share(point.position.z) +
-                                sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
+  const Irradiance sky = fog_light_ && fog_light_->covers(point.position.z)
+                             ? Irradiance(fog_light_->irradiance(point.position, point.normal))
+                             : sky_.sky_irradiance(point.normal);
+  const Irradiance irradiance =
+      sky * diffuse_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
   return lambertian_radiance(diffuse_albedo(material, dot(point.normal, to_viewer)), irradiance);
@@ -101,7 +111,13 @@ Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& 
     return radiance +
            fresnel * lambertian_obstacle_radiance(seen, -mirrored.direction, obstacle_materials_[seen.material]);
   }
-  return radiance + fresnel * sky_.sky_radiance_near_ground(mirrored.direction) * sky_share(point.position.z);
+  return radiance + fresnel * sky_seen_from(point.position, mirrored.direction);
+}
+
+Radiance BandsIntegrator::sky_seen_from(const Vec3& point, const Vec3& direction) const {
+  if (fog_light_ && fog_light_->covers(point.z))
+    return Radiance(fog_light_->incoming(point.z, direction)) * diffuse_share(point.z);
+  return sky_.sky_radiance_near_ground(direction) * sky_share(point.z);
 }
 
 CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& sky_light, const SurfacePoint& point,
@@ -128,7 +144,7 @@ Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direct
 }
 
 Irradiance BandsIntegrator::irradiance(const SurfacePoint& point, const CachedSkyLight& sky_light) const {
-  Irradiance e = sky_light.diffuse_irradiance * sky_share(point.position.z) +
+  Irradiance e = sky_light.diffuse_irradiance * diffuse_share(point.position.z) +
                  sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_)) + reflected_sun(point, sky_light);
   if (const SceneLamps* lamps = scene_.lamps()) e += lamps->irradiance_on(point);
   return e;
@@ -139,8 +155,8 @@ Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const
   const Material& material = point_material.get();
   const Vec3 to_viewer = -ray.direction;
   const Irradiance sun = sun_reaching(point);
-  // Sky light, dimmed by any fog above the point.
-  const Transmittance share = sky_share(point.position.z);
+  // Sky light, dimmed by any fog above the point (unless the fog's own light is in it).
+  const Transmittance share = diffuse_share(point.position.z);
   // Lambertian part: sky and sun irradiance, and the sun reflected by facades.
   const Irradiance irradiance = sky_light.diffuse_irradiance * share +
                                 sun * static_cast<float>(dot(point.normal, to_sun_)) + reflected_sun(point, sky_light);

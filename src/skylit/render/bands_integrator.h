@@ -132,6 +132,14 @@ class BandsIntegrator {
   // The sky light's share that gets through the clouds and the fog to altitude z (1
   // without either).
   Transmittance sky_share(double z) const;
+  // The same for the sky light the sky-light integrals give (diffuse and glossy): without
+  // the fog's share where the fog's multiple scattering lights the point
+  // (SkyLight::lights_in_fog).
+  Transmittance diffuse_share(double z) const;
+  // The sky's light arriving at `point` from `direction` where nothing hides it: dimmed
+  // by the fog's share, or the fog's own light where its multiple scattering lights the
+  // point; and by the clouds.
+  Radiance sky_seen_from(const Vec3& point, const Vec3& direction) const;
   // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
   // or the sky and the sun.
   Radiance mirrored(const SurfacePoint& point, const Vec3& direction) const;
@@ -152,6 +160,7 @@ class BandsIntegrator {
   const PreparedScene& scene_;
   const SkyModel& sky_;
   Vec3 to_sun_;
+  const FogSurfaceLight* fog_light_;  // with the fog's multiple scattering; else null
   std::unique_ptr<SkyLight> sky_light_;
   std::unique_ptr<SkyLight> one_pixel_sky_light_;  // kOnePixelDirections
   std::unique_ptr<ReflectedSun> reflected_sun_;

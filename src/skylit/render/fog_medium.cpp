@@ -31,6 +31,7 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       camera_(camera),
       row_length_(kElevationRows),
       row_depth_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))) {
+  if (sky_light_.diffuse_field()) surface_light_ = std::make_unique<FogSurfaceLight>(sky_light_);
   // The multiple-scattering source has azimuthal terms: the table keeps each one.
   std::array<Spectrum, FogSkyLight::kMaxTerms> probe;
   terms_ = sky_light_.in_scattered_terms(camera_, Vec3{1, 0, 0}, 0.0, 0.0, probe.data());

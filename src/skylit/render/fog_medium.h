@@ -13,6 +13,7 @@
 #include "skylit/geometry/sun_shadow_volumes.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/fog_sky_light.h"
+#include "skylit/media/fog_surface_light.h"
 #include "skylit/spectrum/medium_stretch.h"
 
 namespace skylit {
@@ -51,6 +52,10 @@ class FogMedium {
   // The share of the sky light that still reaches altitude z through the fog, per bin
   // (J(z) over J without fog).
   Transmittance sky_light_share(double z) const;
+  // With multiple scattering, the light that reaches surfaces inside the layer by
+  // direction (what lights them in place of the sky times sky_light_share); null in the
+  // paper's mode.
+  const FogSurfaceLight* surface_light() const { return surface_light_.get(); }
 
   const FogLayer& layer() const { return layer_; }
   // The factor on the optical depth toward the sun of the beams (FogSkyLight).
@@ -62,6 +67,7 @@ class FogMedium {
   Spectrum sun_above_fog_;  // the sun's direct normal irradiance at the layer's top
   SunShadowVolumes shadows_;
   FogSkyLight sky_light_;
+  std::unique_ptr<FogSurfaceLight> surface_light_;  // refers to sky_light_
 
   // The sky light scattered toward the camera along rays of elevation row i, up to
   // distance slice k: slices at length_i·(k/K)², length_i where the ray leaves the layer,

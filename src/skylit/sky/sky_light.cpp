@@ -10,9 +10,18 @@
 namespace skylit {
 
 SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
-                   std::vector<SkyElement> elements)
-    : sky_(sky), tracer_(tracer), obstacle_radiance_(std::move(obstacle_radiance)), elements_(std::move(elements)) {
+                   std::vector<SkyElement> elements, const FogSurfaceLight* fog)
+    : sky_(sky),
+      tracer_(tracer),
+      obstacle_radiance_(std::move(obstacle_radiance)),
+      elements_(std::move(elements)),
+      fog_(fog) {
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
+  if (fog_) {
+    std::vector<Vec3> directions;
+    for (const SkyElement& e : elements_) directions.push_back(e.direction);
+    fog_elements_ = std::make_unique<FogSurfaceLight::Directions>(*fog_, directions);
+  }
   // Bands of equal height with about 2 × 16 elements per band for each band, so that a
   // packet of 16 rays spans about as much in height as in azimuth; within a band by
   // azimuth.
@@ -65,15 +74,27 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   // (the sky above, the far ground below: a step in radiance), from 4 × 4 points
   // across it: a single point there would count all of the element as sky or as ground,
   // and a wall seen head-on reflects exactly that part of the dome.
+  // In a fog that lights the point, the fog's light from each direction stands for the
+  // sky's, and an obstacle is seen through the fog in front of it.
+  const bool in_fog = lights_in_fog(point.z);
+  auto sky_toward = [&](const Vec3& direction) {
+    return in_fog ? Radiance(fog_->incoming(point.z, direction)) : sky_.sky_radiance_near_ground(direction);
+  };
+  auto obstacle_seen = [&](const Ray& ray, const Hit& hit) {
+    const Radiance light = obstacle_radiance_(ray, hit);
+    if (!in_fog) return light;
+    const Radiance fog = sky_toward(ray.direction);
+    return fog + (light - fog) * Transmittance(fog_->transmittance(point, ray.direction, hit.t));
+  };
   auto sky_over = [&](double alpha, double delta, const Vec3& centre) {
-    if (std::abs(centre.z) > 0.75 * width) return sky_.sky_radiance_near_ground(centre);
+    if (std::abs(centre.z) > 0.75 * width) return sky_toward(centre);
     Radiance mean;
     double total = 0;
     for (int u = 0; u < 4; ++u)
       for (int w = 0; w < 4; ++w) {
         const double sub_alpha = alpha + (u - 1.5) * width / 4, sub_delta = delta + (w - 1.5) * width / 4;
         const double weight = std::sin(sub_alpha);
-        mean += sky_.sky_radiance_near_ground(direction_at(sub_alpha, sub_delta)) * static_cast<float>(weight);
+        mean += sky_toward(direction_at(sub_alpha, sub_delta)) * static_cast<float>(weight);
         total += weight;
       }
     return mean * static_cast<float>(1.0 / total);
@@ -134,7 +155,7 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   tracer_.intersect(rays, hits);
   std::vector<std::optional<Radiance>> obstacle(found.size());  // the obstacle's light, if hidden
   for (size_t i = 0; i < found.size(); ++i)
-    if (hits[i]) obstacle[i] = obstacle_radiance_(rays[i], *hits[i]);
+    if (hits[i]) obstacle[i] = obstacle_seen(rays[i], *hits[i]);
   std::vector<bool> edge(found.size(), false);
   edge_rays.clear();
   for (size_t i = 0; i < found.size(); ++i) {
@@ -157,7 +178,7 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
       Radiance mixed;
       for (int sub = 0; sub < 9; ++sub, ++next_edge_ray) {
         const std::optional<Hit>& hit = edge_hits[next_edge_ray];
-        mixed += hit ? obstacle_radiance_(edge_rays[next_edge_ray], *hit) : e.sky;
+        mixed += hit ? obstacle_seen(edge_rays[next_edge_ray], *hit) : e.sky;
       }
       incoming_light = mixed * (1.0f / 9.0f);
     }
@@ -167,8 +188,13 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
 }
 
 Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) const {
-  // Per bin: the hidden elements' radiance × cos dω changes the irradiance.
-  Spectrum irradiance = sky_.sky_irradiance(normal).spectrum();
+  // Per bin: the hidden elements' radiance × cos dω changes the irradiance. In a fog
+  // that lights the point, the unobstructed light is the fog field's, and what a hidden
+  // element changes is seen through the fog in front of its obstacle.
+  const bool in_fog = lights_in_fog(point.z);
+  Spectrum irradiance = in_fog ? fog_->irradiance(point, normal) : sky_.sky_irradiance(normal).spectrum();
+  const FogSurfaceLight::Directions::At fog_level =
+      in_fog ? fog_elements_->at(point.z) : FogSurfaceLight::Directions::At{};
   const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
   // The rays toward the elements above the surface's horizon, traced together in packet
@@ -195,8 +221,15 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
     // Hidden: the element's sky leaves, the obstacle's light comes in its place.
     const float weight = static_cast<float>(cosine * e.solid_angle);
     const Radiance obstacle = obstacle_radiance_(ray, *hit);
-    for (int k = 0; k < kSpectralBins; ++k)
-      irradiance[k] = std::max(0.0f, irradiance[k] + weight * (obstacle[k] - element_radiance_[i][k]));
+    if (in_fog) {
+      const Spectrum hidden = fog_elements_->incoming(fog_level, i);
+      const Spectrum through = fog_->transmittance(point, e.direction, hit->t);
+      for (int k = 0; k < kSpectralBins; ++k)
+        irradiance[k] = std::max(0.0f, irradiance[k] + weight * through[k] * (obstacle[k] - hidden[k]));
+    } else {
+      for (int k = 0; k < kSpectralBins; ++k)
+        irradiance[k] = std::max(0.0f, irradiance[k] + weight * (obstacle[k] - element_radiance_[i][k]));
+    }
   }
   return Irradiance(irradiance);
 }

@@ -13,11 +13,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/material/material.h"
+#include "skylit/media/fog_surface_light.h"
 #include "skylit/sky/band_sources.h"
 
 namespace skylit {
@@ -41,12 +43,21 @@ class SkyLight {
   // quadrature (tests/sky/specular_sky_test.cpp, docs/sky-light.md).
   static constexpr double kSpecularElementPerRoughness = 0.5;
 
+  // `fog`, when given (a fog layer with multiple scattering), lights the points it
+  // covers instead of the sky: the diffuse irradiance there is the fog field's, each
+  // hidden direction seen through the fog (media/fog_surface_light.h); it is referred
+  // to, not copied.
   SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
-           std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections));
+           std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections),
+           const FogSurfaceLight* fog = nullptr);
 
   // Irradiance (W m⁻² nm⁻¹) on a surface at `point` with unit `normal` (facing the side
-  // being lit), from the sky, the far ground, and the obstacles that hide them.
+  // being lit), from the sky, the far ground, and the obstacles that hide them; inside a
+  // fog given to the constructor, from the fog's light and the obstacles seen through it.
   Irradiance diffuse_irradiance(const Vec3& point, const Vec3& normal) const;
+  // Whether diffuse_irradiance at altitude z already holds what the fog above takes and
+  // adds (so the caller must not dim it by the fog's share of the sky light).
+  bool lights_in_fog(double z_m) const { return fog_ && fog_->covers(z_m); }
 
   // Radiance (W m⁻² sr⁻¹ nm⁻¹) that a glossy surface reflects toward `to_viewer` from the
   // sky and the obstacles that hide it, by the paper's adaptive search (§4.2): from the
@@ -77,6 +88,8 @@ class SkyLight {
 
   std::vector<SkyElement> elements_;
   std::vector<Radiance> element_radiance_;
+  const FogSurfaceLight* fog_;
+  std::unique_ptr<FogSurfaceLight::Directions> fog_elements_;  // with `fog_`: its light from each element
   // The elements in an order that keeps neighbouring directions together (bands of
   // height, by azimuth within each), so that the rays of one point go to the tracer in
   // coherent packets.
