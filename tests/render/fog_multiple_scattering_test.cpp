@@ -152,8 +152,9 @@ void compare_surfaces(const Scene& street, const std::vector<SurfaceView>& views
     std::printf("[FogMS] %s: fast %.1f path %.1f ± %.1f cd/m2, ratio %.3f ± %.3f\n", view.surface, expected,
                 reference.mean, reference.standard_error, expected / reference.mean,
                 expected * reference.standard_error / (reference.mean * reference.mean));
-    if (i < asserted)
+    if (i < asserted) {
       EXPECT_NEAR(expected, reference.mean, 0.1 * reference.mean + 3 * reference.standard_error) << view.surface;
+    }
   }
 }
 
@@ -184,6 +185,39 @@ TEST(FogMultipleScattering, LightsSurfacesInTheFogWithTheFogsOwnLight) {
   // all for several fogs.
   const std::vector<SurfaceView> open_and_sunlit(kStreetViews.begin(), kStreetViews.begin() + 4);
   compare_surfaces(fog_street(3, 30, 0.85), open_and_sunlit, open_and_sunlit.size(), 8000);
+}
+
+TEST(FogMultipleScattering, SurfacesSeenThroughTheFogKeepTheLightScatteredStraightOn) {
+  // A white wall (0.8) 40, 80 and 160 m away, 400 m wide and 60 m high, seen through a
+  // Henyey–Greenstein fog of g = 0.99 (δ-M puts f = 0.85 of its scattering in the forward
+  // spike) of optical depth 3 over its 100 m: 1.2, 2.4 and 4.8 along the view. The sun 3°
+  // below the horizon, so that the reference converges (a sunlit fog this sharp needs
+  // far more paths). Light scattered straight on still comes from the wall: seen through
+  // the fog's full depth it read 0.89 and 0.90 of the reference at 40 and 80 m; with the
+  // spike's gain (FogMedium::Along::forward_gain) 0.96, 0.99 and 0.96 (8000 paths,
+  // standard errors 1.6 %). Within 5 % plus three standard errors.
+  // Not asserted, and why (docs/fog.md, "Surfaces seen through the fog"): the fog in
+  // front of the wall glows as the open layer does, which is right only where the wall
+  // is about as bright as the layer's light from its side; a grey (0.3) wall here reads
+  // 1.25–1.62, a black one 10–13 times the reference.
+  Scene scene = fog_scene(3, -3, 0.99);
+  scene.atmosphere.ground_albedo = 0.3;
+  scene.materials.push_back({"grey", DiffuseMaterial{Spectrum(0.3f)}});
+  scene.materials.push_back({"white", DiffuseMaterial{Spectrum(0.8f)}});
+  scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 20000), 0});
+  for (double distance : {40.0, 80.0, 160.0}) {
+    Scene view = scene;
+    view.objects.push_back({"wall", make_box({-200, distance, 0}, {200, distance + 10, 60}), 1});
+    const Renderer fast(view);
+    const PathIntegrator path(fast.prepared());
+    const Ray ray{view.camera.position, normalize(Vec3{0, 1, 0.05})};
+    const double expected = luminance(fast.radiance(ray));
+    const Estimate reference = path_luminance(path, ray, 8000, 29);
+    std::printf("[FogMS] white wall %.0f m away: fast %.2f path %.2f ± %.2f cd/m2, ratio %.3f ± %.3f\n", distance,
+                expected, reference.mean, reference.standard_error, expected / reference.mean,
+                expected * reference.standard_error / (reference.mean * reference.mean));
+    EXPECT_NEAR(expected, reference.mean, 0.05 * reference.mean + 3 * reference.standard_error) << distance << " m";
+  }
 }
 
 TEST(FogMultipleScattering, SurfacesFullGrid) {

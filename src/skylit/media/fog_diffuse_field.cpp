@@ -206,6 +206,7 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
 
   scattered_.assign(static_cast<size_t>(levels) * directions * kModes, Spectrum(0.0f));
   radiance_.assign(scattered_.size(), Spectrum(0.0f));
+  without_sun_.assign(scattered_.size(), Spectrum(0.0f));
   downward_.assign(static_cast<size_t>(levels), Spectrum(0.0f));
   const double ground = std::clamp(lighting.ground_albedo, 0.0, 1.0) / kPi;
 
@@ -379,6 +380,8 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
                 f_ * diffuse_only[static_cast<size_t>(k)] + (1 - f_) * body[static_cast<size_t>(k)];
             radiance_[at][b] = static_cast<float>(radiance);
             scattered_[at][b] = static_cast<float>(m == 0 ? std::max(0.0, scattered) : scattered);
+            const double unlit = diffuse_only[static_cast<size_t>(k)];
+            without_sun_[at][b] = static_cast<float>(m == 0 ? std::max(0.0, unlit) : unlit);
           }
         }
       }
@@ -472,6 +475,9 @@ Spectrum FogDiffuseField::scattered(double z, double up, double relative_azimuth
 }
 Spectrum FogDiffuseField::radiance(double z, double up, double relative_azimuth) const {
   return lookup(radiance_, z, up, azimuth_terms(relative_azimuth));
+}
+Spectrum FogDiffuseField::radiance_without_sun(double z, double up, double relative_azimuth) const {
+  return lookup(without_sun_, z, up, azimuth_terms(relative_azimuth));
 }
 
 Spectrum FogDiffuseField::downward_irradiance(double z) const {

@@ -76,6 +76,9 @@ class FogDiffuseField {
   void scattered_terms(double z_m, double up, std::array<Spectrum, kModes>& terms) const;
   // The diffuse radiance itself toward the same direction (for tests).
   Spectrum radiance(double z_m, double up, double relative_azimuth) const;
+  // The same without the sun's single scattering (which the beams carry): the radiance D
+  // whose forward spike `scattered` holds, f·D.
+  Spectrum radiance_without_sun(double z_m, double up, double relative_azimuth) const;
   // The diffuse irradiance on a horizontal plane facing up (downward flux) at z.
   Spectrum downward_irradiance(double z_m) const;
   // A bound on the largest value `scattered` takes (Σ_m |S_m|), per bin.
@@ -107,10 +110,10 @@ class FogDiffuseField {
 
   FogLayer layer_;
   double omega_, f_;
-  std::vector<double> column_;                  // column from the top (m) at each level, increasing
-  std::vector<double> direction_;               // output directions' upward cosines, increasing
-  std::vector<Spectrum> scattered_, radiance_;  // [level][direction][term]
-  std::vector<Spectrum> downward_;              // [level]
+  std::vector<double> column_;                                // column from the top (m) at each level, increasing
+  std::vector<double> direction_;                             // output directions' upward cosines, increasing
+  std::vector<Spectrum> scattered_, radiance_, without_sun_;  // [level][direction][term]
+  std::vector<Spectrum> downward_;                            // [level]
   std::array<double, kSpectralBins> largest_{};
 };
 

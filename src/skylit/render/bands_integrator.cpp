@@ -38,6 +38,8 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
     const FogMedium::Along along = fog->along(ray, distance);
     path.fog_beyond = along.beyond;
     path.fog_whole = along.near.transmittance * along.beyond;
+    path.fog_forward_gain = path.to_sky ? along.forward_gain : along.forward_gain * path.near.transmittance;
+    path.fog_open_radiance = along.open_radiance;
     if (along.seen_distance > along.entry_distance) {
       // The air cut where the ray enters the fog and where the fog hides the rest; each
       // later stretch is what the longer one from the camera adds beyond the shorter.

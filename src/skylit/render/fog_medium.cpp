@@ -144,6 +144,12 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   } else {
     out.near.transmittance = Transmittance(layer_.transmittance(column));
   }
+  if (surface_light_ && std::isfinite(distance)) {
+    const double scaled = sky_light_.sun_depth_scale() * column;
+    out.forward_gain = Transmittance(layer_.transmittance(scaled) - layer_.transmittance(column));
+    out.open_radiance = Radiance(sky_light_.diffuse_field()->radiance_without_sun(
+        ray.origin.z + ray.direction.z * distance, -ray.direction.z, sky_light_.relative_azimuth(ray.direction)));
+  }
   Spectrum in_scattered(0.0f);
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
   if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {

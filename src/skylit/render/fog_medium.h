@@ -38,6 +38,15 @@ class FogMedium {
     MediumStretch near;
     Transmittance beyond{1.0f};
     double entry_distance = 0, seen_distance = 0;
+    // With multiple scattering, for a ray that ends on a surface: δ-M's forward spike.
+    // `near.in_scattered` holds the spike of the open layer's diffuse radiance D (f·D in
+    // the source); the light a unit of scattering sends straight on is the surface's own
+    // where the ray ends on one. Exactly, the camera then sees (L − D(end))·forward_gain
+    // more of a surface leaving L, forward_gain = e^(−(1 − ωf)t) − e^(−t) over the fog's
+    // optical depth t and D(end) = open_radiance, the field at the surface toward the camera
+    // (docs/fog.md, "Surfaces seen through the fog").
+    Transmittance forward_gain{0.0f};
+    Radiance open_radiance{0.0f};
     MediumStretch whole() const { return {near.transmittance * beyond, near.in_scattered}; }
   };
   static constexpr double kSeenDepth = 10.0;

@@ -23,6 +23,11 @@ struct ViewPath {
   MediumStretch air_beyond;
   Transmittance fog_beyond{1.0f};
   Transmittance fog_whole{1.0f};  // the fog's own transmittance along the whole ray
+  // Surfaces in a multiply scattering fog: its forward spike's gain on the surface's
+  // light and the open layer's radiance it stands for (FogMedium::Along), the air's
+  // transmittance in the gain.
+  Transmittance fog_forward_gain{0.0f};
+  Radiance fog_open_radiance{0.0f};
   MediumStretch clouds;
   // Sky rays: the air between the camera and the first cloud they enter.
   MediumStretch air_to_clouds;
@@ -31,7 +36,13 @@ struct ViewPath {
   // the sky's and the sun's). Clouds are farthest from the camera; the fog lies near the
   // ground, in the air.
   Radiance seen_from_camera(const Radiance& leaving) const {
-    if (!to_sky) return near.seen_through(air_beyond.seen_through(clouds.seen_through(leaving)) * fog_beyond);
+    if (!to_sky) {
+      const Radiance seen = near.seen_through(air_beyond.seen_through(clouds.seen_through(leaving)) * fog_beyond);
+      if (fog_forward_gain.is_black()) return seen;
+      Spectrum with_spike = (seen + (leaving - fog_open_radiance) * fog_forward_gain).spectrum();
+      for (int k = 0; k < kSpectralBins; ++k) with_spike[k] = std::max(0.0f, with_spike[k]);
+      return Radiance(with_spike);
+    }
     // The sky's radiance S holds the air along the whole ray: S = A + T·S_beyond, with
     // A and T the air's in-scatter and transmittance up to the clouds. The clouds
     // replace what lies beyond them and are seen through that air:
