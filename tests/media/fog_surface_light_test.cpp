@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "fog_slab.h"
 #include "skylit/atmosphere/seen_sun.h"
 #include "skylit/core/angles.h"
 #include "skylit/media/fog_surface_light.h"
@@ -39,12 +40,7 @@ struct FoggySky {
     return a;
   }
   static FogSettings fog(double optical_depth, FogPhase phase) {
-    FogSettings f;
-    f.density_at_ground = 1.0;
-    f.unit_density_extinction_per_m = optical_depth / kTop;
-    f.scale_height_m = std::numeric_limits<double>::infinity();
-    f.bottom_altitude_m = 0;
-    f.top_altitude_m = kTop;
+    FogSettings f = testing::uniform_fog_slab(optical_depth, kTop);
     f.phase = phase;
     f.multiple_scattering = true;
     return f;

@@ -14,6 +14,7 @@
 #include <limits>
 #include <vector>
 
+#include "../media/fog_slab.h"
 #include "skylit/geometry/primitives.h"
 #include "skylit/render/path_integrator.h"
 #include "skylit/render/renderer.h"
@@ -30,12 +31,7 @@ Scene fog_scene(double optical_depth, double sun_altitude_deg, double asymmetry)
   scene.camera = Camera{{0, 0, 1.6}, {0, 100, 1.6}, {0, 0, 1}, 50.0};
   scene.sun = Sun{sun_altitude_deg, 180};
   scene.atmosphere.ground_albedo = 0.0;
-  FogSettings fog;
-  fog.density_at_ground = 1.0;
-  fog.unit_density_extinction_per_m = optical_depth / kTop;
-  fog.scale_height_m = std::numeric_limits<double>::infinity();
-  fog.bottom_altitude_m = 0;
-  fog.top_altitude_m = kTop;
+  FogSettings fog = testing::uniform_fog_slab(optical_depth, kTop);
   if (asymmetry < 1) {
     fog.phase = FogPhase::henyey_greenstein;
     fog.asymmetry = asymmetry;

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "../media/adding_doubling.h"
+#include "../media/fog_slab.h"
 #include "skylit/atmosphere/phase_functions.h"
 #include "skylit/geometry/primitives.h"
 #include "skylit/render/renderer.h"
@@ -20,12 +21,7 @@ constexpr double kTop = 100, kAsymmetry = 0.7;
 Scene slab_scene(double optical_depth) {
   Scene scene;
   scene.camera = Camera{{0, 0, -1}, {0, 1, 0}, {0, 0, 1}, 50.0};
-  FogSettings fog;
-  fog.density_at_ground = 1.0;
-  fog.unit_density_extinction_per_m = optical_depth / kTop;
-  fog.scale_height_m = std::numeric_limits<double>::infinity();
-  fog.bottom_altitude_m = 0;
-  fog.top_altitude_m = kTop;
+  FogSettings fog = testing::uniform_fog_slab(optical_depth, kTop);
   fog.phase = FogPhase::henyey_greenstein;
   fog.asymmetry = kAsymmetry;
   scene.fog = fog;
