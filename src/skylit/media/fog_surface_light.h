@@ -5,24 +5,25 @@
 // The paper lights a surface in the fog by the sky's band sources times the share of the
 // sky light J(z) that reaches its altitude. With multiple scattering that share drops
 // the light the fog scatters toward the surface, and surfaces in thick fog read a fifth
-// of the path-traced reference (docs/fog.md). Here:
+// to a half of the path-traced reference (docs/fog.md). Here:
 //
 // - The unobstructed irradiance on a plane of any orientation at altitude z is
 //   E(n) = ∫ L(ω) max(0, n·ω) dω with L the field's radiance arriving from ω (the
 //   attenuated sky, the fog's scattered light and, from below, the light of the
 //   Lambertian ground at the layer's bottom). L is a Fourier series in azimuth about the
-//   sunbeam, L = Σ_m cos(mφ)·R_m(μ), and the clamped cosine is even in the azimuth
+//   sunbeam, L = Σ_m cos(mφ)·R_m(−μ) for light arriving from upward cosine μ (R_m is
+//   indexed by the direction of travel), and the clamped cosine is even in the azimuth
 //   difference, so E(n) = Σ_m cos(mφ_n)·E_m(z, e_n) with
-//   E_m(e_n) = ∫ R_m(μ) K_m(e_n, μ) dμ and K_m = ∫ max(0, a cos ψ + b) cos mψ dψ in
+//   E_m(e_n) = ∫ R_m(−μ) K_m(e_n, μ) dμ and K_m = ∫ max(0, a cos ψ + b) cos mψ dψ in
 //   closed form (a = cos e_n·√(1 − μ²), b = sin e_n·μ). E_m is tabulated over the
 //   field's levels and 25 normal elevations; the μ integral is the midpoint rule over
 //   256 elevations of the field's table (interpolated linearly between its directions).
-// - A direction hidden by an obstacle d metres away takes away the field's radiance
-//   from it and brings the obstacle's light through the fog between:
-//   ΔE = cos·dω·T(d)·(L_obstacle − L(ω)), where the fog in front of the obstacle is
-//   taken to glow as the field does along that direction (exact where the field does
-//   not change over d). T uses δ-M's scaled depth, as the field does (light scattered
-//   into the forward spike stays on its way).
+// - A direction hidden by an obstacle d metres away changes the light from it by
+//   ΔE = cos·dω·T(d)·(L_obstacle − L'(ω)), L' the field's radiance toward the point at the
+//   obstacle's altitude: the fog in front of the obstacle is taken to glow as the open
+//   field does along that direction (δ-M's formal solution then gives exactly this).
+//   T uses δ-M's scaled depth, as the field does (light scattered into the forward spike
+//   stays on its way).
 //
 // What it leaves out, and why: the field is that of a horizontally uniform layer, so the
 // fog between buildings is lit as if nothing shaded it (the fog's glow in a street

@@ -38,7 +38,7 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
     const FogMedium::Along along = fog->along(ray, distance);
     path.fog_beyond = along.beyond;
     path.fog_whole = along.near.transmittance * along.beyond;
-    path.fog_forward_gain = path.to_sky ? along.forward_gain : along.forward_gain * path.near.transmittance;
+    path.fog_forward_gain = along.forward_gain * path.near.transmittance;  // 0 for the sky
     path.fog_open_radiance = along.open_radiance;
     if (along.seen_distance > along.entry_distance) {
       // The air cut where the ray enters the fog and where the fog hides the rest; each
@@ -142,6 +142,11 @@ Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direct
     const SurfacePoint seen = scene_.surface_point(ray, *hit);
     return obstacle_radiance(ray, seen, scene_.material_at(seen).get());
   }
+  // In a fog whose multiple scattering lights the point, the fog's light and the sun
+  // through it (the paper's mode mirrors the clear sky).
+  if (fog_light_ && fog_light_->covers(point.position.z))
+    return sky_seen_from(point.position, direction) +
+           sky_.sun_radiance(direction) * scene_.fog()->sun_transmittance(point.position);
   return sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction);
 }
 

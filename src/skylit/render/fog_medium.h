@@ -25,6 +25,9 @@ class FogMedium {
   // in it depends only on altitude), so it is tabulated once for the camera.
   FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes, const SkyModel& sky,
             const Vec3& camera);
+  // The surface light refers to the sky light held here: not copied, not moved.
+  FogMedium(const FogMedium&) = delete;
+  FogMedium& operator=(const FogMedium&) = delete;
 
   // What the fog does along `ray` (unit direction) from its origin to `distance` (may be
   // infinite: the sky), in two parts for the air that shares the layer (view_path.h):

@@ -39,7 +39,8 @@ struct ViewPath {
     if (!to_sky) {
       const Radiance seen = near.seen_through(air_beyond.seen_through(clouds.seen_through(leaving)) * fog_beyond);
       if (fog_forward_gain.is_black()) return seen;
-      Spectrum with_spike = (seen + (leaving - fog_open_radiance) * fog_forward_gain).spectrum();
+      Spectrum with_spike =
+          (seen + (leaving - fog_open_radiance) * (fog_forward_gain * clouds.transmittance)).spectrum();
       for (int k = 0; k < kSpectralBins; ++k) with_spike[k] = std::max(0.0f, with_spike[k]);
       return Radiance(with_spike);
     }

@@ -80,11 +80,14 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   auto sky_toward = [&](const Vec3& direction) {
     return in_fog ? Radiance(fog_->incoming(point.z, direction)) : sky_.sky_radiance_near_ground(direction);
   };
+  // Seen through the fog (δ-M): the fog's light here, plus the difference between the
+  // obstacle's light and the fog's light at the obstacle, dimmed by the fog between.
   auto obstacle_seen = [&](const Ray& ray, const Hit& hit) {
     const Radiance light = obstacle_radiance_(ray, hit);
     if (!in_fog) return light;
-    const Radiance fog = sky_toward(ray.direction);
-    return fog + (light - fog) * Transmittance(fog_->transmittance(point, ray.direction, hit.t));
+    const Radiance there(fog_->incoming(point.z + ray.direction.z * hit.t, ray.direction));
+    return sky_toward(ray.direction) +
+           (light - there) * Transmittance(fog_->transmittance(point, ray.direction, hit.t));
   };
   auto sky_over = [&](double alpha, double delta, const Vec3& centre) {
     if (std::abs(centre.z) > 0.75 * width) return sky_toward(centre);
@@ -193,8 +196,6 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
   // element changes is seen through the fog in front of its obstacle.
   const bool in_fog = lights_in_fog(point.z);
   Spectrum irradiance = in_fog ? fog_->irradiance(point, normal) : sky_.sky_irradiance(normal).spectrum();
-  const FogSurfaceLight::Directions::At fog_level =
-      in_fog ? fog_elements_->at(point.z) : FogSurfaceLight::Directions::At{};
   const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
   // The rays toward the elements above the surface's horizon, traced together in packet
@@ -222,7 +223,9 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
     const float weight = static_cast<float>(cosine * e.solid_angle);
     const Radiance obstacle = obstacle_radiance_(ray, *hit);
     if (in_fog) {
-      const Spectrum hidden = fog_elements_->incoming(fog_level, i);
+      // The field's light from the element leaves; the obstacle's light, less the field's
+      // at the obstacle, comes through the fog between (δ-M, docs/fog.md).
+      const Spectrum hidden = fog_elements_->incoming(fog_elements_->at(point.z + e.direction.z * hit->t), i);
       const Spectrum through = fog_->transmittance(point, e.direction, hit->t);
       for (int k = 0; k < kSpectralBins; ++k)
         irradiance[k] = std::max(0.0f, irradiance[k] + weight * through[k] * (obstacle[k] - hidden[k]));
