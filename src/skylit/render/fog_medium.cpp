@@ -145,10 +145,13 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
     out.near.transmittance = Transmittance(layer_.transmittance(column));
   }
   if (surface_light_ && std::isfinite(distance)) {
-    const double scaled = sky_light_.sun_depth_scale() * column;
-    out.forward_gain = Transmittance(layer_.transmittance(scaled) - layer_.transmittance(column));
-    out.open_radiance = Radiance(sky_light_.diffuse_field()->radiance_without_sun(
-        ray.origin.z + ray.direction.z * distance, -ray.direction.z, sky_light_.relative_azimuth(ray.direction)));
+    const Transmittance gain(layer_.transmittance(sky_light_.sun_depth_scale() * column) -
+                             layer_.transmittance(column));
+    if (gain.max_value() > 1e-4) {  // below, nothing visible changes: no look-up of the field
+      out.forward_gain = gain;
+      out.open_radiance = Radiance(sky_light_.diffuse_field()->radiance_without_sun(
+          ray.origin.z + ray.direction.z * distance, -ray.direction.z, sky_light_.relative_azimuth(ray.direction)));
+    }
   }
   Spectrum in_scattered(0.0f);
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
