@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "../media/fog_slab.h"
@@ -133,24 +135,31 @@ struct SurfaceView {
   Vec3 from, toward;
 };
 
-// The surfaces' luminance from both methods, printed with their ratio; those of the first
-// `asserted` views within 10 % plus three standard errors of the reference.
+// The luminance along `ray` from both methods, printed with their ratio; with a
+// `relative_tolerance`, the fast one within it plus three standard errors of the reference.
+void compare_along(const Scene& scene, const Ray& ray, const std::string& label, int paths, uint64_t seed,
+                   std::optional<double> relative_tolerance) {
+  const Renderer fast(scene);
+  const PathIntegrator path(fast.prepared());
+  const double expected = luminance(fast.radiance(ray));
+  const Estimate reference = path_luminance(path, ray, paths, seed);
+  std::printf("[FogMS] %s: fast %.2f path %.2f ± %.2f cd/m2, ratio %.3f ± %.3f\n", label.c_str(), expected,
+              reference.mean, reference.standard_error, expected / reference.mean,
+              expected * reference.standard_error / (reference.mean * reference.mean));
+  if (relative_tolerance) {
+    EXPECT_NEAR(expected, reference.mean, *relative_tolerance * reference.mean + 3 * reference.standard_error) << label;
+  }
+}
+
+// The surfaces seen from their views; those of the first `asserted` views within 10 %
+// plus three standard errors of the reference.
 void compare_surfaces(const Scene& street, const std::vector<SurfaceView>& views, size_t asserted, int paths) {
   for (size_t i = 0; i < views.size(); ++i) {
     const SurfaceView& view = views[i];
     Scene scene = street;
     scene.camera = Camera{view.from, view.from + view.toward, {0, 0, 1}, 50.0};
-    const Renderer fast(scene);
-    const PathIntegrator path(fast.prepared());
-    const Ray ray{view.from, normalize(view.toward)};
-    const double expected = luminance(fast.radiance(ray));
-    const Estimate reference = path_luminance(path, ray, paths, 23);
-    std::printf("[FogMS] %s: fast %.1f path %.1f ± %.1f cd/m2, ratio %.3f ± %.3f\n", view.surface, expected,
-                reference.mean, reference.standard_error, expected / reference.mean,
-                expected * reference.standard_error / (reference.mean * reference.mean));
-    if (i < asserted) {
-      EXPECT_NEAR(expected, reference.mean, 0.1 * reference.mean + 3 * reference.standard_error) << view.surface;
-    }
+    compare_along(scene, Ray{view.from, normalize(view.toward)}, view.surface, paths, 23,
+                  i < asserted ? std::optional<double>(0.1) : std::nullopt);
   }
 }
 
@@ -204,15 +213,8 @@ TEST(FogMultipleScattering, SurfacesSeenThroughTheFogKeepTheLightScatteredStraig
   for (double distance : {40.0, 80.0, 160.0}) {
     Scene view = scene;
     view.objects.push_back({"wall", make_box({-200, distance, 0}, {200, distance + 10, 60}), 1});
-    const Renderer fast(view);
-    const PathIntegrator path(fast.prepared());
-    const Ray ray{view.camera.position, normalize(Vec3{0, 1, 0.05})};
-    const double expected = luminance(fast.radiance(ray));
-    const Estimate reference = path_luminance(path, ray, 8000, 29);
-    std::printf("[FogMS] white wall %.0f m away: fast %.2f path %.2f ± %.2f cd/m2, ratio %.3f ± %.3f\n", distance,
-                expected, reference.mean, reference.standard_error, expected / reference.mean,
-                expected * reference.standard_error / (reference.mean * reference.mean));
-    EXPECT_NEAR(expected, reference.mean, 0.05 * reference.mean + 3 * reference.standard_error) << distance << " m";
+    compare_along(view, Ray{view.camera.position, normalize(Vec3{0, 1, 0.05})},
+                  "white wall " + std::to_string(static_cast<int>(distance)) + " m away", 8000, 29, 0.05);
   }
 }
 

@@ -430,30 +430,28 @@ FogDiffuseField::DirectionWeight FogDiffuseField::direction_at(double up) const 
   return {d, static_cast<float>((up - direction_[d]) / (direction_[d + 1] - direction_[d]))};
 }
 
+void FogDiffuseField::add_terms(const std::vector<Spectrum>& table, size_t level, DirectionWeight direction,
+                                float weight, std::array<Spectrum, kModes>& terms) const {
+  const Spectrum* lower = &table[(level * direction_.size() + direction.below) * kModes];
+  const Spectrum* upper = lower + kModes;
+  const float w_lower = weight * (1 - direction.above), w_upper = weight * direction.above;
+  for (int m = 0; m < kModes; ++m) terms[static_cast<size_t>(m)] += lower[m] * w_lower + upper[m] * w_upper;
+}
+
 void FogDiffuseField::lookup_terms(const std::vector<Spectrum>& table, double z, double up,
                                    std::array<Spectrum, kModes>& terms) const {
   terms.fill(Spectrum(0.0f));
   if (std::isnan(z) || std::isnan(up)) return;
   const LevelWeight level = level_at(z);
-  const size_t k = level.below, directions = direction_.size();
-  const auto [d, fd] = direction_at(up);
-  const std::array<std::pair<size_t, float>, 4> corners{{{k * directions + d, (1 - fd) * (1 - level.above)},
-                                                         {k * directions + d + 1, fd * (1 - level.above)},
-                                                         {(k + 1) * directions + d, (1 - fd) * level.above},
-                                                         {(k + 1) * directions + d + 1, fd * level.above}}};
-  for (const auto& [cell, weight] : corners) {
-    const Spectrum* t = &table[cell * kModes];
-    for (int m = 0; m < kModes; ++m) terms[static_cast<size_t>(m)] += t[m] * weight;
-  }
+  const DirectionWeight direction = direction_at(up);
+  add_terms(table, level.below, direction, 1 - level.above, terms);
+  add_terms(table, level.below + 1, direction, level.above, terms);
 }
 
 void FogDiffuseField::radiance_terms_at_level(size_t level, double up, std::array<Spectrum, kModes>& terms) const {
   terms.fill(Spectrum(0.0f));
   if (level >= column_.size() || std::isnan(up)) return;
-  const auto [d, fd] = direction_at(up);
-  const Spectrum* lower = &radiance_[(level * direction_.size() + d) * kModes];
-  const Spectrum* upper = lower + kModes;
-  for (int m = 0; m < kModes; ++m) terms[static_cast<size_t>(m)] = lower[m] * (1 - fd) + upper[m] * fd;
+  add_terms(radiance_, level, direction_at(up), 1.0f, terms);
 }
 
 Spectrum FogDiffuseField::lookup(const std::vector<Spectrum>& table, double z, double up,

@@ -74,7 +74,7 @@ class FogDiffuseField {
   Spectrum scattered(double z_m, double up, double relative_azimuth) const;
   // Its Fourier terms S_m(z, up), unclamped: scattered = max(0, Σ_m cos(mφ)·S_m).
   void scattered_terms(double z_m, double up, std::array<Spectrum, kModes>& terms) const;
-  // The diffuse radiance itself toward the same direction (for tests).
+  // The diffuse radiance itself toward the same direction.
   Spectrum radiance(double z_m, double up, double relative_azimuth) const;
   // The same without the sun's single scattering (which the beams carry): the radiance D
   // whose forward spike `scattered` holds, f·D.
@@ -103,6 +103,9 @@ class FogDiffuseField {
     float above;
   };
   DirectionWeight direction_at(double up) const;
+  // Adds `weight` times one level's terms, interpolated between two directions.
+  void add_terms(const std::vector<Spectrum>& table, size_t level, DirectionWeight direction, float weight,
+                 std::array<Spectrum, kModes>& terms) const;
   // The table's terms interpolated in altitude and direction.
   void lookup_terms(const std::vector<Spectrum>& table, double z_m, double up,
                     std::array<Spectrum, kModes>& terms) const;

@@ -38,8 +38,6 @@ std::array<double, kModes> clamped_cosine_terms(double a, double b) {
 
 FogSurfaceLight::FogSurfaceLight(const FogSkyLight& sky_light)
     : sky_light_(sky_light), field_(*sky_light.diffuse_field()), depth_scale_(sky_light.sun_depth_scale()) {
-  const auto& sigma = sky_light.layer().unit_density_extinction_bins();
-  grey_ = std::all_of(sigma.begin(), sigma.end(), [&](double s) { return s == sigma[0]; });
   // The kernel at each normal elevation and incident elevation, with the quadrature's
   // weight dμ = cos e·de folded in. The incident light arrives from elevation e and so
   // travels with upward cosine −sin e.
@@ -104,21 +102,13 @@ Spectrum FogSurfaceLight::incoming_at_level(size_t level, const Vec3& from,
 }
 
 Spectrum FogSurfaceLight::incoming(double z, const Vec3& from) const {
-  const FogDiffuseField::LevelWeight level = field_.level_at(z);
-  const FogDiffuseField::AzimuthTerms cosines = FogDiffuseField::azimuth_terms(sky_light_.relative_azimuth(from));
-  return incoming_at_level(level.below, from, cosines) * (1 - level.above) +
-         incoming_at_level(level.below + 1, from, cosines) * level.above;
+  // Arriving from `from` is travelling toward −from: the field's radiance that way.
+  return field_.radiance(z, -from.z, sky_light_.relative_azimuth(from));
 }
 
 Spectrum FogSurfaceLight::transmittance(const Vec3& point, const Vec3& direction, double distance) const {
   const FogLayer& layer = sky_light_.layer();
-  const double column = depth_scale_ * layer.column(point.z, direction.z, 0.0, distance);
-  const auto& sigma = layer.unit_density_extinction_bins();
-  if (grey_) return Spectrum(static_cast<float>(std::exp(-std::min(column * sigma[0], 800.0))));
-  Spectrum t;
-  for (int b = 0; b < kSpectralBins; ++b)
-    t[b] = static_cast<float>(std::exp(-std::min(column * sigma[static_cast<size_t>(b)], 800.0)));
-  return t;
+  return layer.transmittance(depth_scale_ * layer.column(point.z, direction.z, 0.0, distance));
 }
 
 FogSurfaceLight::Directions::Directions(const FogSurfaceLight& light, const std::vector<Vec3>& directions)

@@ -94,7 +94,6 @@ class FogSurfaceLight {
   const FogSkyLight& sky_light_;
   const FogDiffuseField& field_;
   double depth_scale_;
-  bool grey_;                         // the same extinction in every bin (b = 0): one exponential per transmittance
   std::vector<Spectrum> irradiance_;  // [level][normal elevation][term]
 };
 

@@ -61,14 +61,16 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
   return path;
 }
 
+Transmittance BandsIntegrator::clouds_share() const {
+  return scene_.clouds() ? scene_.clouds()->sky_share() : Transmittance(1.0f);
+}
+
 Transmittance BandsIntegrator::sky_share(double z) const {
-  const Transmittance clouds = scene_.clouds() ? scene_.clouds()->sky_share() : Transmittance(1.0f);
-  return scene_.fog() ? scene_.fog()->sky_light_share(z) * clouds : clouds;
+  return scene_.fog() ? scene_.fog()->sky_light_share(z) * clouds_share() : clouds_share();
 }
 
 Transmittance BandsIntegrator::diffuse_share(double z) const {
-  if (fog_light_ && fog_light_->covers(z)) return scene_.clouds() ? scene_.clouds()->sky_share() : Transmittance(1.0f);
-  return sky_share(z);
+  return sky_light_->lights_in_fog(z) ? clouds_share() : sky_share(z);
 }
 
 Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
@@ -87,7 +89,7 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
 
 Radiance BandsIntegrator::lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer,
                                                        const Material& material) const {
-  const Irradiance sky = fog_light_ && fog_light_->covers(point.position.z)
+  const Irradiance sky = sky_light_->lights_in_fog(point.position.z)
                              ? Irradiance(fog_light_->irradiance(point.position, point.normal))
                              : sky_.sky_irradiance(point.normal);
   const Irradiance irradiance =
@@ -117,8 +119,7 @@ Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& 
 }
 
 Radiance BandsIntegrator::sky_seen_from(const Vec3& point, const Vec3& direction) const {
-  if (fog_light_ && fog_light_->covers(point.z))
-    return Radiance(fog_light_->incoming(point.z, direction)) * diffuse_share(point.z);
+  if (sky_light_->lights_in_fog(point.z)) return Radiance(fog_light_->incoming(point.z, direction)) * clouds_share();
   return sky_.sky_radiance_near_ground(direction) * sky_share(point.z);
 }
 
@@ -144,7 +145,7 @@ Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direct
   }
   // In a fog whose multiple scattering lights the point, the fog's light and the sun
   // through it (the paper's mode mirrors the clear sky).
-  if (fog_light_ && fog_light_->covers(point.position.z))
+  if (sky_light_->lights_in_fog(point.position.z))
     return sky_seen_from(point.position, direction) +
            sky_.sun_radiance(direction) * scene_.fog()->sun_transmittance(point.position);
   return sky_.sky_radiance_near_ground(direction) + sky_.sun_radiance(direction);

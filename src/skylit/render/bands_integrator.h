@@ -132,6 +132,8 @@ class BandsIntegrator {
   // The sky light's share that gets through the clouds and the fog to altitude z (1
   // without either).
   Transmittance sky_share(double z) const;
+  // The clouds' part of it.
+  Transmittance clouds_share() const;
   // The same for the sky light the sky-light integrals give (diffuse and glossy): without
   // the fog's share where the fog's multiple scattering lights the point
   // (SkyLight::lights_in_fog).

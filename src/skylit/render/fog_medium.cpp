@@ -145,8 +145,8 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
     out.near.transmittance = Transmittance(layer_.transmittance(column));
   }
   if (surface_light_ && std::isfinite(distance)) {
-    const Transmittance gain(layer_.transmittance(sky_light_.sun_depth_scale() * column) -
-                             layer_.transmittance(column));
+    const Transmittance through = out.near.transmittance * out.beyond;  // the fog's alone, so far
+    const Transmittance gain = Transmittance(layer_.transmittance(sky_light_.sun_depth_scale() * column)) - through;
     if (gain.max_value() > 1e-4) {  // below, nothing visible changes: no look-up of the field
       out.forward_gain = gain;
       out.open_radiance = Radiance(sky_light_.diffuse_field()->radiance_without_sun(
