@@ -137,5 +137,26 @@ TEST(SkyLight, ObstaclesSendBackTheirLight) {
   EXPECT_LT(unlit, 0.03 * illuminance(f.sky.sky_irradiance(north)));
 }
 
+TEST(SkyLight, ObstaclesLitAsThePointCloseTheBouncesByTheGeometricSeries) {
+  // On a canyon's floor the hidden part of the cosine-weighted hemisphere is 1 − F (F the
+  // sky view factor). Obstacles of albedo ρ with no light of their own, lit as the point
+  // is: E = E_seen + ρ·(1 − F)·E, so E = E_seen / (1 − ρ(1 − F)) exactly, per bin.
+  Fixture f;
+  add_canyon(f.tracer, 20, 30, 4000, false);
+  const SkyLight seen_only(f.sky, f.tracer, black_obstacle);
+  for (const float rho : {0.3f, 0.8f}) {
+    const SkyLight closed(f.sky, f.tracer, black_obstacle, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr,
+                          [rho](const Ray&, const Hit&) { return Reflectance(rho); });
+    const Vec3 point{0, 0, 0}, up{0, 0, 1};
+    const double hidden = 1 - seen_only.sky_view_factor(point, up);
+    EXPECT_GT(hidden, 0.5);  // the closure matters here
+    const Irradiance e_seen = seen_only.diffuse_irradiance(point, up);
+    const Irradiance e = closed.diffuse_irradiance(point, up);
+    for (int k = 0; k < kSpectralBins; ++k)
+      EXPECT_NEAR(e.spectrum()[k], e_seen.spectrum()[k] / (1 - rho * hidden), 1e-4 * e.spectrum()[k])
+          << rho << " " << k;
+  }
+}
+
 }  // namespace
 }  // namespace skylit

@@ -13,11 +13,40 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       to_sun_(scene.to_sun()),
       fog_light_(scene.fog() ? scene.fog()->surface_light() : nullptr),
       obstacle_materials_(obstacle_materials(scene.scene().materials)) {
-  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_radiance(ray, hit); };
+  // Obstacles of level i are lit by the integrals of level i; the surfaces seen look up level 0.
+  const bool own_sky = scene.scene().render.obstacles_own_sky;
+  const int levels = own_sky ? static_cast<int>(kObstacleLevelDirections.size()) : 0;
+  std::vector<int> lookup_directions{SkyLight::kDefaultDirections};
+  // Obstacles without a patch of their own (past the last level, or too small) take the
+  // sky light of the point that sees them (SkyLight's lit_as_the_point).
+  const auto lit_as_the_point = [this, own_sky](int level) -> ObstacleAlbedo {
+    if (!own_sky) return nullptr;
+    return [this, level](const Ray& ray, const Hit& hit) {
+      if (obstacle_sky_->has_patch(level, hit)) return Reflectance(0.0f);
+      const SurfacePoint point = scene_.untextured_point(ray, hit);
+      return diffuse_albedo(obstacle_materials_[point.material], dot(point.normal, -ray.direction));
+    };
+  };
+  for (int level = 0; level < levels; ++level) {
+    const ObstacleRadiance next_level = [this, level](const Ray& ray, const Hit& hit) {
+      return element_obstacle_radiance(ray, hit, level + 1);
+    };
+    obstacle_sky_lights_.push_back(std::make_unique<SkyLight>(
+        sky_, scene.tracer(), next_level, fibonacci_sphere(kObstacleLevelDirections[static_cast<size_t>(level)]),
+        fog_light_, lit_as_the_point(level + 1)));
+    lookup_directions.push_back(kObstacleLevelDirections[static_cast<size_t>(level)]);
+  }
+  lookup_directions.pop_back();
+  obstacle_sky_ = std::make_unique<ObstacleSkyLight>(
+      scene.scene(), lookup_directions, [this](int level, const Vec3& point, const Vec3& normal) {
+        return obstacle_sky_lights_[static_cast<size_t>(level)]->diffuse_irradiance(point, normal);
+      });
+  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_radiance(ray, hit, 0); };
+  const ObstacleAlbedo closure = lit_as_the_point(0);
   sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle,
-                                          fibonacci_sphere(SkyLight::kDefaultDirections), fog_light_);
-  one_pixel_sky_light_ =
-      std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kOnePixelDirections), fog_light_);
+                                          fibonacci_sphere(SkyLight::kDefaultDirections), fog_light_, closure);
+  one_pixel_sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle,
+                                                    fibonacci_sphere(kOnePixelDirections), fog_light_, closure);
   reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
                                                   [this](const Vec3& position, const Vec3& normal) {
                                                     return sun_reaching(SurfacePoint{position, normal, 0, 0});
@@ -87,33 +116,42 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
   return reaching;
 }
 
-Radiance BandsIntegrator::lambertian_obstacle_radiance(const SurfacePoint& point, const Vec3& to_viewer,
-                                                       const Material& material) const {
-  const Irradiance sky = sky_light_->lights_in_fog(point.position.z)
-                             ? Irradiance(fog_light_->irradiance(point.position, point.normal))
-                             : sky_.sky_irradiance(point.normal);
+Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const Hit& hit, const SurfacePoint& point,
+                                                       const Material& material, int level,
+                                                       bool seen_by_integral) const {
+  seen_by_integral = seen_by_integral && scene_.scene().render.obstacles_own_sky;
+  // Without a patch of its own, the integral that sees this obstacle lights it as itself;
+  // what a mirror shows is lit by the open sky instead.
+  const Irradiance sky =
+      obstacle_sky_->at(level, ray, hit).value_or(seen_by_integral ? Irradiance(0.0f) : open_sky_irradiance(point));
   const Irradiance irradiance =
       sky * diffuse_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
-  return lambertian_radiance(diffuse_albedo(material, dot(point.normal, to_viewer)), irradiance);
+  return lambertian_radiance(diffuse_albedo(material, dot(point.normal, -ray.direction)), irradiance);
 }
 
-Radiance BandsIntegrator::element_obstacle_radiance(const Ray& ray, const Hit& hit) const {
+Irradiance BandsIntegrator::open_sky_irradiance(const SurfacePoint& point) const {
+  return sky_light_->lights_in_fog(point.position.z) ? Irradiance(fog_light_->irradiance(point.position, point.normal))
+                                                     : sky_.sky_irradiance(point.normal);
+}
+
+Radiance BandsIntegrator::element_obstacle_radiance(const Ray& ray, const Hit& hit, int level) const {
   const SurfacePoint point = scene_.untextured_point(ray, hit);
-  return obstacle_radiance(ray, point, obstacle_materials_[point.material]);
+  return obstacle_radiance(ray, hit, point, obstacle_materials_[point.material], level, true);
 }
 
-Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& body) const {
+Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit, const SurfacePoint& point,
+                                            const Material& body, int level, bool seen_by_integral) const {
   const Vec3 to_viewer = -ray.direction;
-  Radiance radiance = lambertian_obstacle_radiance(point, to_viewer, body);
+  Radiance radiance = lambertian_obstacle_radiance(ray, hit, point, body, level, seen_by_integral);
   const Reflectance fresnel = specular_fresnel(scene_.material(point.material), dot(point.normal, to_viewer));
   if (fresnel.is_black()) return radiance;
   const Ray mirrored{offset_from_surface(point.position, point.normal), mirror_direction(point.normal, to_viewer)};
   if (const std::optional<Hit> next = scene_.tracer().intersect(mirrored)) {
     const SurfacePoint seen = scene_.untextured_point(mirrored, *next);
-    return radiance +
-           fresnel * lambertian_obstacle_radiance(seen, -mirrored.direction, obstacle_materials_[seen.material]);
+    return radiance + fresnel * lambertian_obstacle_radiance(mirrored, *next, seen, obstacle_materials_[seen.material],
+                                                             level, false);
   }
   return radiance + fresnel * sky_seen_from(point.position, mirrored.direction);
 }
@@ -141,7 +179,7 @@ Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direct
   if (const std::optional<Hit> hit = scene_.tracer().intersect(ray)) {
     // Seen in the mirror by the camera: with its textures.
     const SurfacePoint seen = scene_.surface_point(ray, *hit);
-    return obstacle_radiance(ray, seen, scene_.material_at(seen).get());
+    return obstacle_radiance(ray, *hit, seen, scene_.material_at(seen).get(), 0, false);
   }
   // In a fog whose multiple scattering lights the point, the fog's light and the sun
   // through it (the paper's mode mirrors the clear sky).

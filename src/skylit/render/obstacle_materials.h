@@ -1,4 +1,4 @@
-// The materials that obstacles show to the sky light's one bounce (bands_integrator.h):
+// The materials that obstacles show to the sky light's bounces (bands_integrator.h):
 // a ray toward the sky stands for a whole sky element (about 6° wide with 1024
 // directions, 13° with 256), which spans far more than a texture's detail at the
 // distances between buildings. A textured material is therefore seen by its texture's

@@ -1,7 +1,8 @@
 // The spectral Monte Carlo reference (`path`, DESIGN.md): the same prepared scene as
 // the fast method, with every bounce of light between surfaces, so that what the fast
-// method approximates (one bounce of sky light, obstacles lit by the unobstructed sky,
-// no light reflected by glossy facades onto others) can be measured against it
+// method approximates (one bounce of sky light, obstacles lit by the open sky, or with
+// `render.obstacle_light` "own_sky" a few bounces closed by a geometric series; the fog's
+// light as a layer's) can be measured against it
 // (docs/validation.md).
 //
 // A path carries all spectral bins at once (the materials and the air are what make

@@ -87,6 +87,10 @@ struct RenderSettings {
   FalseColourSettings false_colour{};  // for *.falsecolor.png outputs
   bool exr_layers = false;             // .exr: add object, distance and normal layers
   bool human_display = false;          // .png: as a person would see it (io/image/human_display.h)
+  // bands: obstacles in the sky light lit by the sky they see themselves, with the
+  // bounces between them (render/obstacle_sky_light.h), or by the open sky (the paper's
+  // one bounce, the default while a detailed model's frame costs ten times more).
+  bool obstacles_own_sky = false;
 };
 
 // Where a mesh object came from and what loading did to it (`skylit info`).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "skylit/material/reflection.h"
 #include "skylit/spectrum/cie.h"
@@ -10,10 +11,11 @@
 namespace skylit {
 
 SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
-                   std::vector<SkyElement> elements, const FogSurfaceLight* fog)
+                   std::vector<SkyElement> elements, const FogSurfaceLight* fog, ObstacleAlbedo lit_as_the_point)
     : sky_(sky),
       tracer_(tracer),
       obstacle_radiance_(std::move(obstacle_radiance)),
+      lit_as_the_point_(std::move(lit_as_the_point)),
       elements_(std::move(elements)),
       fog_(fog) {
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
@@ -203,10 +205,28 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
   const std::vector<SkyElement>& elements = elements_;
   // The rays toward the elements above the surface's horizon, traced together in packet
   // order; then each element's change in the elements' own order (the sum is clamped
-  // at every step, so its order is kept).
-  thread_local std::vector<Ray> rays;
-  thread_local std::vector<std::optional<Hit>> hits;
-  thread_local std::vector<int32_t> ray_of_element;
+  // at every step, so its order is kept). The buffers are kept per thread, one set for
+  // each depth of nesting: an obstacle's light may itself come from a diffuse integral
+  // (render/obstacle_sky_light.h).
+  struct Buffers {
+    std::vector<Ray> rays;
+    std::vector<std::optional<Hit>> hits;
+    std::vector<int32_t> ray_of_element;
+  };
+  thread_local std::vector<std::unique_ptr<Buffers>> buffers_by_depth;
+  thread_local size_t depth = 0;
+  if (buffers_by_depth.size() <= depth) buffers_by_depth.push_back(std::make_unique<Buffers>());
+  Buffers& buffers = *buffers_by_depth[depth];
+  struct Nesting {
+    size_t& depth;
+    explicit Nesting(size_t& d) : depth(++d) {}
+    ~Nesting() { --depth; }
+    Nesting(const Nesting&) = delete;
+    Nesting& operator=(const Nesting&) = delete;
+  } nesting(depth);
+  std::vector<Ray>& rays = buffers.rays;
+  std::vector<std::optional<Hit>>& hits = buffers.hits;
+  std::vector<int32_t>& ray_of_element = buffers.ray_of_element;
   rays.clear();
   ray_of_element.assign(elements.size(), -1);
   for (const uint32_t i : packet_order_) {
@@ -215,6 +235,7 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
     rays.push_back(Ray{origin, elements[i].direction});
   }
   tracer_.intersect(rays, hits);
+  Spectrum reflected_back(0.0f);  // Σ_hidden w·T·ρ/π, with lit_as_the_point_
   for (size_t i = 0; i < elements.size(); ++i) {
     const SkyElement& e = elements[i];
     if (ray_of_element[i] < 0) continue;
@@ -225,18 +246,27 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
     // Hidden: the element's sky leaves, the obstacle's light comes in its place.
     const float weight = static_cast<float>(cosine * e.solid_angle);
     const Radiance obstacle = obstacle_radiance_(ray, *hit);
+    const Spectrum albedo = lit_as_the_point_ ? lit_as_the_point_(ray, *hit).spectrum() : Spectrum(0.0f);
     if (in_fog) {
       // The field's light from the element leaves; the obstacle's light, less the field's
       // at the obstacle, comes through the fog between (δ-M, docs/fog.md).
       const Spectrum hidden = fog_elements_->incoming(fog_elements_->at(point.z + e.direction.z * hit->t), i);
       const Spectrum through = fog_->transmittance(point, e.direction, hit->t);
-      for (int k = 0; k < kSpectralBins; ++k)
+      for (int k = 0; k < kSpectralBins; ++k) {
         irradiance[k] = std::max(0.0f, irradiance[k] + weight * through[k] * (obstacle[k] - hidden[k]));
+        reflected_back[k] += weight * through[k] * albedo[k] * static_cast<float>(1.0 / kPi);
+      }
     } else {
-      for (int k = 0; k < kSpectralBins; ++k)
+      for (int k = 0; k < kSpectralBins; ++k) {
         irradiance[k] = std::max(0.0f, irradiance[k] + weight * (obstacle[k] - element_radiance_[i][k]));
+        reflected_back[k] += weight * albedo[k] * static_cast<float>(1.0 / kPi);
+      }
     }
   }
+  // Σ w·ρ/π ≤ ρ times the hidden share of the hemisphere, below 1 for any albedo below 1;
+  // the bound keeps a white room's geometric series finite.
+  if (lit_as_the_point_)
+    for (int k = 0; k < kSpectralBins; ++k) irradiance[k] /= 1.0f - std::min(0.99f, reflected_back[k]);
   return Irradiance(irradiance);
 }
 

@@ -1,7 +1,7 @@
 // Sky light on the scene's surfaces with the sky hidden by other objects (§4 of the
 // paper): the diffuse irradiance that the sky dome's band sources give a point, where
 // elements hidden by obstacles (other buildings, the ground) are replaced by the light
-// those obstacles send back (one bounce).
+// those obstacles send back (what lights them is the caller's: render/obstacle_sky_light.h).
 //
 // The unobstructed irradiance comes from the sky model's table over orientations (the
 // paper's look-up table for diffuse reflection); what obstacles change is found by
@@ -26,6 +26,8 @@ namespace skylit {
 
 // Radiance (W m⁻² sr⁻¹ nm⁻¹) that the obstacle hit by `ray` sends back along it.
 using ObstacleRadiance = std::function<Radiance(const Ray& ray, const Hit& hit)>;
+// The Lambertian albedo toward the ray's origin of the obstacle hit by `ray`.
+using ObstacleAlbedo = std::function<Reflectance(const Ray& ray, const Hit& hit)>;
 
 class SkyLight {
  public:
@@ -47,9 +49,16 @@ class SkyLight {
   // covers instead of the sky: the diffuse irradiance there is the fog field's, each
   // hidden direction seen through the fog (media/fog_surface_light.h); it is referred
   // to, not copied.
+  //
+  // `lit_as_the_point`, when given, closes the bounces between obstacles: the obstacles'
+  // radiance from `obstacle_radiance` then leaves out their sky light, and each is taken
+  // to receive the same sky irradiance E as the point itself, so that
+  //   E = (E_seen + Σ_hidden w·L_obstacle) / (1 − Σ_hidden w·ρ_obstacle/π),
+  // w = cos·dω, per wavelength bin: exact where everything around sees the same sky
+  // (a white furnace), and in a street the opposite wall at the same height does, about.
   SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
            std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections),
-           const FogSurfaceLight* fog = nullptr);
+           const FogSurfaceLight* fog = nullptr, ObstacleAlbedo lit_as_the_point = nullptr);
 
   // Irradiance (W m⁻² nm⁻¹) on a surface at `point` with unit `normal` (facing the side
   // being lit), from the sky, the far ground, and the obstacles that hide them; inside a
@@ -83,6 +92,7 @@ class SkyLight {
   const SkyModel& sky_;
   const RayTracer& tracer_;
   ObstacleRadiance obstacle_radiance_;
+  ObstacleAlbedo lit_as_the_point_;  // may be empty
   // The light arriving from an element's direction: the sky's, or the obstacle's.
   Radiance incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const;
 

@@ -93,7 +93,7 @@ void frame_camera(const JsonReader& j, Scene& scene) {
 
 RenderSettings read_render(const JsonReader& j) {
   j.allow_only({"width", "height", "exposure_ev", "samples_per_axis", "integrator", "samples_per_pixel", "seed",
-                "cloud_light", "false_colour", "exr_layers", "display"});
+                "cloud_light", "false_colour", "exr_layers", "display", "obstacle_light"});
   RenderSettings render;
   if (auto w = j.optional("width")) render.width = w->integer_in(1, 16384);
   if (auto h = j.optional("height")) render.height = h->integer_in(1, 16384);
@@ -115,6 +115,7 @@ RenderSettings read_render(const JsonReader& j) {
   if (auto f = j.optional("false_colour")) render.false_colour = read_false_colour(*f);
   if (auto l = j.optional("exr_layers")) render.exr_layers = l->boolean();
   if (auto d = j.optional("display")) render.human_display = d->one_of({"photographic", "human"}) == "human";
+  if (auto o = j.optional("obstacle_light")) render.obstacles_own_sky = o->one_of({"open_sky", "own_sky"}) == "own_sky";
   return render;
 }
 

@@ -1,0 +1,94 @@
+// The sky light on the obstacles that a surface's sky-light integral meets (issue 14,
+// item 1). Where a building hides part of a point's sky, the building's own light
+// comes instead (sky/sky_light.h); that light was the obstacle lit by the whole
+// unobstructed sky, which credits a facade across a narrow street with the sky it
+// cannot see (+17–20 % on a wall facing an 8 m gap against the path tracer). Here each
+// obstacle point is lit by its own occluded sky instead, itself computed by a sky-light
+// integral whose obstacles are looked up one level further on; the last level's
+// integral lights its obstacles as itself (sky/sky_light.h, lit_as_the_point), which
+// sums the remaining bounces as a geometric series.
+//
+// An integral's element stands for a patch of the obstacle as wide as the element
+// seen at the hit's distance, and the sky light changes slowly along a surface, so the
+// value is kept per patch and shared by every ray that meets it: a square of a power of
+// two metres (at least kMinPatchM, about the element's width at the hit's distance) in
+// the plane of the triangle met, on the side met, evaluated at the patch's centre
+// (clamped into the triangle). It depends on the patch alone, not on which ray met it
+// first, so the image is the same whatever the threads and their order.
+//
+// A triangle smaller than a quarter of its patch (a window frame, a reveal, a facet of a
+// detailed model seen from afar) has none: it is one of many small parts, and a patch
+// for each would cost a quadrature per part; the integral that meets it lights it as
+// itself, as past the last level (sky/sky_light.h, lit_as_the_point).
+//
+// The sun is not in it: each obstacle point's sunlight keeps its own shadow ray.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include <tbb/concurrent_unordered_map.h>
+
+#include "skylit/geometry/ray_tracer.h"
+#include "skylit/scene/scene.h"
+#include "skylit/spectrum/radiometry.h"
+
+namespace skylit {
+
+class ObstacleSkyLight {
+ public:
+  // The diffuse sky irradiance (W m⁻² nm⁻¹) at `point` on a surface facing `normal`,
+  // from the sky-light integral of `level`, whose obstacles are lit through level + 1.
+  using Integral = std::function<Irradiance(int level, const Vec3& point, const Vec3& normal)>;
+
+  // `lookup_directions[level]`: the number of directions of the integrals that look up
+  // that level (the patch is about as wide as one of their elements); `integral` computes
+  // a patch's value. Holds a reference to `scene`.
+  ObstacleSkyLight(const Scene& scene, const std::vector<int>& lookup_directions, Integral integral);
+
+  int levels() const { return static_cast<int>(patch_per_distance_.size()); }
+
+  // The sky irradiance on the obstacle that `ray` meets at `hit`, on the side facing the
+  // ray's origin, from `level`'s integral; none past the last level or on a triangle
+  // too small for a patch of its own.
+  std::optional<Irradiance> at(int level, const Ray& ray, const Hit& hit) const;
+  // Whether at() gives a value (without computing it).
+  bool has_patch(int level, const Hit& hit) const { return level < levels() && patch_exponent(level, hit); }
+
+  // The smallest patch's side, m: finer than the sky light on a facade changes near its
+  // foot, where a street's floor and walls meet.
+  static constexpr double kMinPatchM = 0.5;
+  // A triangle has patches of its own if its area is at least this many patches'.
+  static constexpr double kMinAreaInPatches = 0.25;
+
+  // How many patches have been computed, at each level (for tests and benchmarks).
+  std::vector<size_t> patch_counts() const;
+
+ private:
+  struct PatchKey {
+    uint32_t mesh, triangle;
+    int32_t a, b;     // the patch's square in the triangle's plane
+    int8_t exponent;  // its side is 2^exponent m
+    bool back;        // met on the side the geometric normal points away from
+    bool operator==(const PatchKey&) const = default;
+  };
+  struct PatchKeyHash {
+    size_t operator()(const PatchKey& key) const;
+  };
+
+  // The patch's side, 2^exponent m, for a hit at level; none on a triangle too small.
+  std::optional<int> patch_exponent(int level, const Hit& hit) const;
+
+  const Scene& scene_;
+  std::vector<double> patch_per_distance_;  // per level: an element's width, radians
+  Integral integral_;
+  mutable std::vector<tbb::concurrent_unordered_map<PatchKey, Irradiance, PatchKeyHash>> patches_;
+};
+
+// The point of triangle (v0, v1, v2) nearest to `p` (Ericson, Real-Time Collision
+// Detection, 2005, §5.1.5).
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& v0, const Vec3& v1, const Vec3& v2);
+
+}  // namespace skylit

@@ -1,0 +1,103 @@
+// Light in a street canyon (issue 14, item 1): the shaded wall of an east–west street
+// between two long blocks of grey Lambertian walls, at five heights, from the fast
+// method against the path-traced reference (render/path_integrator.h), which carries
+// every bounce between the walls, the street and the sky. The fast method's obstacles
+// are lit by the sky they see themselves (render/obstacle_sky_light.h); lit by the
+// whole unobstructed sky, a facade across a narrow street was credited with sky it
+// cannot see.
+//
+// `render.obstacle_light = "own_sky"` (not yet the default, docs/sky-light.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "../test_support.h"
+#include "skylit/geometry/primitives.h"
+#include "skylit/io/scene/scene_loader.h"
+#include "skylit/render/path_integrator.h"
+#include "skylit/render/renderer.h"
+#include "skylit/spectrum/cie.h"
+
+namespace skylit {
+namespace {
+
+constexpr double kWidth = 12;        // the street, wall to wall, m
+constexpr double kHalfLength = 150;  // each block runs 300 m along x
+
+// The sun in the south at 30°: the blocks' north faces (the south block's, across the
+// street from the sunlit one) are in shade.
+Scene canyon(double height_over_width) {
+  const double h = height_over_width * kWidth, half = kWidth / 2;
+  Scene scene;
+  scene.camera = Camera{{0, 0, 1.6}, {0, 100, 1.6}, {0, 0, 1}, 50.0};
+  scene.sun = Sun{30, 180};
+  scene.render.obstacles_own_sky = true;
+  scene.atmosphere.ground_albedo = 0.3;
+  scene.materials.push_back({"grey", DiffuseMaterial{Spectrum(0.3f)}});
+  scene.objects.push_back({"ground", make_ground_plane({0, 0, 0}, 20000), 0});
+  scene.objects.push_back({"south block", make_box({-kHalfLength, -half - 20, 0}, {kHalfLength, -half, h}), 0});
+  scene.objects.push_back({"north block", make_box({-kHalfLength, half, 0}, {kHalfLength, half + 20, h}), 0});
+  return scene;
+}
+
+struct Estimate {
+  double mean, standard_error;
+};
+
+Estimate path_luminance(const PathIntegrator& path, const Ray& ray, int paths, uint64_t seed) {
+  double sum = 0, squares = 0;
+  for (int k = 0; k < paths; ++k) {
+    CounterRandom random(seed, 0, static_cast<uint64_t>(k));
+    const double v = luminance(path.sample(ray, random));
+    sum += v;
+    squares += v * v;
+  }
+  const double mean = sum / paths;
+  return {mean, std::sqrt(std::max(0.0, squares / paths - mean * mean) / (paths - 1))};
+}
+
+// The shaded wall at 10, 30, 50, 70 and 90 % of its height, each seen straight on from
+// 0.3 m: the fast method within `tolerance` plus three standard errors of the reference.
+// Returns the worst |ratio − 1|.
+double compare_shaded_wall(double height_over_width, int paths, double tolerance) {
+  const Scene scene = canyon(height_over_width);
+  const Renderer fast(scene);
+  const PathIntegrator path(fast.prepared());
+  const double h = height_over_width * kWidth;
+  double worst = 0;
+  for (double share : {0.1, 0.3, 0.5, 0.7, 0.9}) {
+    const Vec3 on_wall{0, -kWidth / 2, share * h};
+    const Ray ray{on_wall + Vec3{0, 0.3, 0}, {0, -1, 0}};
+    const double expected = luminance(fast.radiance(ray));
+    const Estimate reference = path_luminance(path, ray, paths, 23);
+    const double ratio = expected / reference.mean;
+    worst = std::max(worst, std::abs(ratio - 1));
+    std::printf("[Canyon] h/w %.0f, %2.0f %% up: fast %8.2f path %8.2f ± %5.2f cd/m2, ratio %.3f\n", height_over_width,
+                100 * share, expected, reference.mean, reference.standard_error, ratio);
+    EXPECT_NEAR(expected, reference.mean, tolerance * reference.mean + 3 * reference.standard_error)
+        << "h/w " << height_over_width << ", " << share << " of the height";
+  }
+  return worst;
+}
+
+TEST(CanyonLight, ShadedWallAgainstThePathTracer) {
+  // 16,000 paths a point: standard errors 0.7 % at the top to 3.7 % at the foot of the
+  // deepest canyon, where the wall is 56 cd/m² against 1,000 at its top. 3 % is the
+  // issue's bound. About 2 s.
+  for (double h_over_w : {1.0, 2.0, 4.0}) compare_shaded_wall(h_over_w, 16000, 0.03);
+}
+
+TEST(CanyonLight, TheSceneChoosesWhatLightsTheObstacles) {
+  testing::TempDir dir;
+  const auto scene_file = dir.write("scene.json", testing::small_scene_json());
+  EXPECT_FALSE(load_scene(scene_file).render.obstacles_own_sky);
+  EXPECT_TRUE(load_scene(scene_file, {"render.obstacle_light=own_sky"}).render.obstacles_own_sky);
+  EXPECT_FALSE(load_scene(scene_file, {"render.obstacle_light=open_sky"}).render.obstacles_own_sky);
+  const std::string error = testing::input_error_of([&] { load_scene(scene_file, {"render.obstacle_light=closed"}); });
+  EXPECT_NE(error.find("render.obstacle_light"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace skylit
