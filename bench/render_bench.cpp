@@ -82,12 +82,14 @@ void BM_Frame1280x720(benchmark::State& state) {
 BENCHMARK(BM_Frame1280x720)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The paper's Fig. 7 at 1280×720: tile walls (arg 0) and aluminium walls (arg 1), the
-// sun at 17°.
+// sun at 17°; arg 2: tile walls with the obstacles lit by their own sky
+// (render.obstacle_light = own_sky, render/obstacle_sky_light.h).
 void BM_Fig7Frame(benchmark::State& state) {
-  const char* walls = state.range(0) == 0 ? "materials.walls=tile" : "materials.walls=aluminium";
-  frames_of(state, skylit::load_scene(kFig7, {walls, "sun.altitude_deg=17"}));
+  const char* walls = state.range(0) == 1 ? "materials.walls=aluminium" : "materials.walls=tile";
+  const char* obstacles = state.range(0) == 2 ? "render.obstacle_light=own_sky" : "render.obstacle_light=open_sky";
+  frames_of(state, skylit::load_scene(kFig7, {walls, "sun.altitude_deg=17", obstacles}));
 }
-BENCHMARK(BM_Fig7Frame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Fig7Frame)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The paper's Fig. 8a (fog, arg 0) and 8c (beams, arg 1) at 1280×720.
 void BM_Fig8Frame(benchmark::State& state) {
@@ -198,11 +200,14 @@ void BM_LoadMillionTriangleModel(benchmark::State& state) {
 }
 BENCHMARK(BM_LoadMillionTriangleModel)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// One clear-day 1280×720 frame of it on 2 threads, the BVH built beforehand.
+// One clear-day 1280×720 frame of it on 2 threads, the BVH built beforehand; arg 1 with
+// the obstacles lit by their own sky (render.obstacle_light = own_sky).
 void BM_MillionTriangleFrame(benchmark::State& state) {
-  frames_of(state, skylit::load_scene(million_triangle_scene()));
+  frames_of(state, skylit::load_scene(
+                       million_triangle_scene(),
+                       {state.range(0) == 1 ? "render.obstacle_light=own_sky" : "render.obstacle_light=open_sky"}));
 }
-BENCHMARK(BM_MillionTriangleFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_MillionTriangleFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
