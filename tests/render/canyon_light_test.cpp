@@ -14,6 +14,7 @@
 #include <string>
 
 #include "../test_support.h"
+#include "path_luminance.h"
 #include "skylit/geometry/primitives.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/path_integrator.h"
@@ -42,21 +43,8 @@ Scene canyon(double height_over_width) {
   return scene;
 }
 
-struct Estimate {
-  double mean, standard_error;
-};
-
-Estimate path_luminance(const PathIntegrator& path, const Ray& ray, int paths, uint64_t seed) {
-  double sum = 0, squares = 0;
-  for (int k = 0; k < paths; ++k) {
-    CounterRandom random(seed, 0, static_cast<uint64_t>(k));
-    const double v = luminance(path.sample(ray, random));
-    sum += v;
-    squares += v * v;
-  }
-  const double mean = sum / paths;
-  return {mean, std::sqrt(std::max(0.0, squares / paths - mean * mean) / (paths - 1))};
-}
+using testing::Estimate;
+using testing::path_luminance;
 
 // The shaded wall at 10, 30, 50, 70 and 90 % of its height, each seen straight on from
 // 0.3 m: the fast method within `tolerance` plus three standard errors of the reference.

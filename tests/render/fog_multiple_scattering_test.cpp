@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../media/fog_slab.h"
+#include "path_luminance.h"
 #include "skylit/geometry/primitives.h"
 #include "skylit/render/path_integrator.h"
 #include "skylit/render/renderer.h"
@@ -43,21 +44,8 @@ Scene fog_scene(double optical_depth, double sun_altitude_deg, double asymmetry)
   return scene;
 }
 
-struct Estimate {
-  double mean, standard_error;
-};
-
-Estimate path_luminance(const PathIntegrator& path, const Ray& ray, int paths, uint64_t seed) {
-  double sum = 0, squares = 0;
-  for (int k = 0; k < paths; ++k) {
-    CounterRandom random(seed, 0, static_cast<uint64_t>(k));
-    const double v = luminance(path.sample(ray, random));
-    sum += v;
-    squares += v * v;
-  }
-  const double mean = sum / paths;
-  return {mean, std::sqrt(std::max(0.0, squares / paths - mean * mean) / (paths - 1))};
-}
+using testing::Estimate;
+using testing::path_luminance;
 
 // The fog's luminance from both methods at the given elevations and view azimuths;
 // the fast one within 10 % plus three standard errors of the reference. Returns the
