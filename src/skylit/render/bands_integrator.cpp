@@ -122,10 +122,10 @@ Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const Hit
   seen_by_integral = seen_by_integral && scene_.scene().render.obstacles_own_sky;
   // Without a patch of its own, the integral that sees this obstacle lights it as itself;
   // what a mirror shows is lit by the open sky instead.
-  const Irradiance sky =
-      obstacle_sky_->at(level, ray, hit).value_or(seen_by_integral ? Irradiance(0.0f) : open_sky_irradiance(point));
+  std::optional<Irradiance> sky = obstacle_sky_->at(level, ray, hit);
+  if (!sky) sky = seen_by_integral ? Irradiance(0.0f) : open_sky_irradiance(point);
   const Irradiance irradiance =
-      sky * diffuse_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
+      *sky * diffuse_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
   return lambertian_radiance(diffuse_albedo(material, dot(point.normal, -ray.direction)), irradiance);
