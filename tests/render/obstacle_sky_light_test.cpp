@@ -112,6 +112,19 @@ TEST(ObstacleSkyLight, PatchesGrowWithTheDistanceAsTheElements) {
   EXPECT_EQ(g.patches.patch_counts(), (std::vector<size_t>{1, 1}));
 }
 
+TEST(ObstacleSkyLight, NoPatchIsFinerThanWhatTheImageResolvesWhereTheRayStarts) {
+  // Seen from 2 m, but from a point where the image resolves only 10 m: a 16 m patch, so
+  // points 10 m apart share it.
+  Ground g;
+  auto seen = [&](double x, double y) {
+    const Ray ray{{x, y, 2}, {0, 0, -1}};
+    return g.patches.at(0, ray, *g.tracer.intersect(ray), 10.0).value();
+  };
+  const Irradiance a = seen(0, -1), b = seen(10, -1.5);
+  EXPECT_EQ(g.calls.load(), 1);
+  EXPECT_EQ(a.spectrum()[0], b.spectrum()[0]);
+}
+
 TEST(ObstacleSkyLight, APatchOverATrianglesEdgeIsEvaluatedInsideIt) {
   // A patch of 64 m at the plane's corner hangs over its edge; its value's point is the
   // nearest point of the triangle to the square's centre, within the plane.

@@ -22,7 +22,7 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   const auto lit_as_the_point = [this, own_sky](int level) -> ObstacleAlbedo {
     if (!own_sky) return nullptr;
     return [this, level](const Ray& ray, const Hit& hit) {
-      if (obstacle_sky_->has_patch(level, hit)) return Reflectance(0.0f);
+      if (obstacle_sky_->has_patch(level, hit, resolved_m(ray.origin))) return Reflectance(0.0f);
       const SurfacePoint point = scene_.untextured_point(ray, hit);
       return diffuse_albedo(obstacle_materials_[point.material], dot(point.normal, -ray.direction));
     };
@@ -122,7 +122,7 @@ Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const Hit
   seen_by_integral = seen_by_integral && scene_.scene().render.obstacles_own_sky;
   // Without a patch of its own, the integral that sees this obstacle lights it as itself;
   // what a mirror shows is lit by the open sky instead.
-  std::optional<Irradiance> sky = obstacle_sky_->at(level, ray, hit);
+  std::optional<Irradiance> sky = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin));
   if (!sky) sky = seen_by_integral ? Irradiance(0.0f) : open_sky_irradiance(point);
   const Irradiance irradiance =
       *sky * diffuse_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));

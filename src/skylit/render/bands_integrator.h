@@ -176,6 +176,12 @@ class BandsIntegrator {
   Radiance element_obstacle_radiance(const Ray& ray, const Hit& hit, int level) const;
   Radiance lambertian_obstacle_radiance(const Ray& ray, const Hit& hit, const SurfacePoint& point,
                                         const Material& material, int level, bool seen_by_integral) const;
+  // The size of what the image resolves at `point`: the cache's finest spacing (4 pixels)
+  // at its distance from the camera, m. No obstacle patch need be finer for a sky-light
+  // integral there, whose result is interpolated over that much.
+  double resolved_m(const Vec3& point) const {
+    return 4 * scene_.pixel_angle_rad() * length(point - scene_.scene().camera.position);
+  }
   // The sky's (or a multiply scattering fog's) irradiance on a surface where nothing hides it.
   Irradiance open_sky_irradiance(const SurfacePoint& point) const;
 

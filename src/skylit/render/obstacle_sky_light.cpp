@@ -50,9 +50,9 @@ size_t ObstacleSkyLight::PatchKeyHash::operator()(const PatchKey& key) const {
   return static_cast<size_t>(h ^ (h >> 29));
 }
 
-std::optional<int> ObstacleSkyLight::patch_exponent(int level, const Hit& hit) const {
+std::optional<int> ObstacleSkyLight::patch_exponent(int level, const Hit& hit, double min_side_m) const {
   // About an element's width at the hit's distance.
-  const double width = std::max(kMinPatchM, patch_per_distance_[static_cast<size_t>(level)] * hit.t);
+  const double width = std::max({kMinPatchM, min_side_m, patch_per_distance_[static_cast<size_t>(level)] * hit.t});
   const int exponent = std::clamp(static_cast<int>(std::ceil(std::log2(width))), -8, 40);
   const TriangleMesh& mesh = scene_.objects[hit.mesh_id].mesh;
   const auto& corners = mesh.triangles[hit.triangle];
@@ -63,9 +63,9 @@ std::optional<int> ObstacleSkyLight::patch_exponent(int level, const Hit& hit) c
   return exponent;
 }
 
-std::optional<Irradiance> ObstacleSkyLight::at(int level, const Ray& ray, const Hit& hit) const {
+std::optional<Irradiance> ObstacleSkyLight::at(int level, const Ray& ray, const Hit& hit, double min_side_m) const {
   if (level >= levels()) return std::nullopt;
-  const std::optional<int> found_exponent = patch_exponent(level, hit);
+  const std::optional<int> found_exponent = patch_exponent(level, hit, min_side_m);
   if (!found_exponent) return std::nullopt;
   const int exponent = *found_exponent;
   const TriangleMesh& mesh = scene_.objects[hit.mesh_id].mesh;

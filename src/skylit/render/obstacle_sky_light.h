@@ -11,7 +11,8 @@
 // An integral's element stands for a patch of the obstacle as wide as the element
 // seen at the hit's distance, and the sky light changes slowly along a surface, so the
 // value is kept per patch and shared by every ray that meets it: a square of a power of
-// two metres (at least kMinPatchM, about the element's width at the hit's distance) in
+// two metres (at least kMinPatchM, about the element's width at the hit's distance, and
+// no finer than what the image resolves where the looking integral sits) in
 // the plane of the triangle met, on the side met, evaluated at the patch's centre
 // (clamped into the triangle). It depends on the patch alone, not on which ray met it
 // first, so the image is the same whatever the threads and their order.
@@ -53,9 +54,13 @@ class ObstacleSkyLight {
   // The sky irradiance on the obstacle that `ray` meets at `hit`, on the side facing the
   // ray's origin, from `level`'s integral; none past the last level or on a triangle
   // too small for a patch of its own.
-  std::optional<Irradiance> at(int level, const Ray& ray, const Hit& hit) const;
+  // `min_side_m`: no patch smaller than this (what the image resolves where the ray
+  // starts).
+  std::optional<Irradiance> at(int level, const Ray& ray, const Hit& hit, double min_side_m = 0) const;
   // Whether at() gives a value (without computing it).
-  bool has_patch(int level, const Hit& hit) const { return level < levels() && patch_exponent(level, hit); }
+  bool has_patch(int level, const Hit& hit, double min_side_m = 0) const {
+    return level < levels() && patch_exponent(level, hit, min_side_m);
+  }
 
   // The smallest patch's side, m: finer than the sky light on a facade changes near its
   // foot, where a street's floor and walls meet.
@@ -79,7 +84,7 @@ class ObstacleSkyLight {
   };
 
   // The patch's side, 2^exponent m, for a hit at level; none on a triangle too small.
-  std::optional<int> patch_exponent(int level, const Hit& hit) const;
+  std::optional<int> patch_exponent(int level, const Hit& hit, double min_side_m) const;
 
   const Scene& scene_;
   std::vector<double> patch_per_distance_;  // per level: an element's width, radians

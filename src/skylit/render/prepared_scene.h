@@ -39,6 +39,8 @@ class PreparedScene {
   PreparedScene(Scene&&) = delete;
 
   const Scene& scene() const { return scene_; }
+  // The angle a camera pixel spans, radians (as the textures' filter takes it).
+  double pixel_angle_rad() const { return pixel_angle_rad_; }
   const RayTracer& tracer() const { return tracer_; }
   // Where the sun's light comes from: the scene's sun as seen (SkyModel::to_sun).
   const Vec3& to_sun() const { return sky_.to_sun(); }
