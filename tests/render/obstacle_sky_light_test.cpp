@@ -142,7 +142,7 @@ TEST(ObstacleSkyLight, SmallTrianglesAndThePastTheLastLevelHaveNoPatch) {
   // not from 20 m (a 4 m patch).
   Ground g;
   const Ray far{{0, -1, 400}, {0, 0, -1}};
-  EXPECT_TRUE(g.patches.has_patch(0, *g.tracer.intersect(far)));
+  EXPECT_TRUE(g.patches.at(0, far, *g.tracer.intersect(far)).has_value());
   EXPECT_FALSE(g.patches.at(2, far, *g.tracer.intersect(far)).has_value());  // two levels
   Scene scene = Ground::make_scene();
   scene.objects[0].mesh = make_box({0, 0, 0}, {1, 0.5, 0.5});
@@ -157,7 +157,6 @@ TEST(ObstacleSkyLight, SmallTrianglesAndThePastTheLastLevelHaveNoPatch) {
   const Ray near{{0.5, 0.25, 1.5}, {0, 0, -1}}, distant{{0.5, 0.25, 20.5}, {0, 0, -1}};
   EXPECT_TRUE(small.at(0, near, *tracer.intersect(near)).has_value());
   EXPECT_FALSE(small.at(0, distant, *tracer.intersect(distant)).has_value());
-  EXPECT_FALSE(small.has_patch(0, *tracer.intersect(distant)));
   EXPECT_EQ(calls, 1);
 }
 

@@ -145,8 +145,8 @@ TEST(SkyLight, ObstaclesLitAsThePointCloseTheBouncesByTheGeometricSeries) {
   add_canyon(f.tracer, 20, 30, 4000, false);
   const SkyLight seen_only(f.sky, f.tracer, black_obstacle);
   for (const float rho : {0.3f, 0.8f}) {
-    const SkyLight closed(f.sky, f.tracer, black_obstacle, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr,
-                          [rho](const Ray&, const Hit&) { return Reflectance(rho); });
+    const SkyLight closed(f.sky, f.tracer,
+                          [rho](const Ray&, const Hit&) { return ObstacleLight(Radiance(0.0f), Reflectance(rho)); });
     const Vec3 point{0, 0, 0}, up{0, 0, 1};
     const double hidden = 1 - seen_only.sky_view_factor(point, up);
     EXPECT_GT(hidden, 0.5);  // the closure matters here

@@ -17,23 +17,13 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   const bool own_sky = scene.scene().render.obstacles_own_sky;
   const int levels = own_sky ? static_cast<int>(kObstacleLevelDirections.size()) : 0;
   std::vector<int> lookup_directions{SkyLight::kDefaultDirections};
-  // Obstacles without a patch of their own (past the last level, or too small) take the
-  // sky light of the point that sees them (SkyLight's lit_as_the_point).
-  const auto lit_as_the_point = [this, own_sky](int level) -> ObstacleAlbedo {
-    if (!own_sky) return nullptr;
-    return [this, level](const Ray& ray, const Hit& hit) {
-      if (obstacle_sky_->has_patch(level, hit, resolved_m(ray.origin))) return Reflectance(0.0f);
-      const SurfacePoint point = scene_.untextured_point(ray, hit);
-      return diffuse_albedo(obstacle_materials_[point.material], dot(point.normal, -ray.direction));
-    };
-  };
   for (int level = 0; level < levels; ++level) {
     const ObstacleRadiance next_level = [this, level](const Ray& ray, const Hit& hit) {
-      return element_obstacle_radiance(ray, hit, level + 1);
+      return element_obstacle_light(ray, hit, level + 1);
     };
-    obstacle_sky_lights_.push_back(std::make_unique<SkyLight>(
-        sky_, scene.tracer(), next_level, fibonacci_sphere(kObstacleLevelDirections[static_cast<size_t>(level)]),
-        fog_light_, lit_as_the_point(level + 1)));
+    obstacle_sky_lights_.push_back(
+        std::make_unique<SkyLight>(sky_, scene.tracer(), next_level,
+                                   fibonacci_sphere(kObstacleLevelDirections[static_cast<size_t>(level)]), fog_light_));
     lookup_directions.push_back(kObstacleLevelDirections[static_cast<size_t>(level)]);
   }
   lookup_directions.pop_back();
@@ -41,12 +31,11 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       scene.scene(), lookup_directions, [this](int level, const Vec3& point, const Vec3& normal) {
         return obstacle_sky_lights_[static_cast<size_t>(level)]->diffuse_irradiance(point, normal);
       });
-  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_radiance(ray, hit, 0); };
-  const ObstacleAlbedo closure = lit_as_the_point(0);
+  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_light(ray, hit, 0); };
   sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle,
-                                          fibonacci_sphere(SkyLight::kDefaultDirections), fog_light_, closure);
-  one_pixel_sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle,
-                                                    fibonacci_sphere(kOnePixelDirections), fog_light_, closure);
+                                          fibonacci_sphere(SkyLight::kDefaultDirections), fog_light_);
+  one_pixel_sky_light_ =
+      std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kOnePixelDirections), fog_light_);
   reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
                                                   [this](const Vec3& position, const Vec3& normal) {
                                                     return sun_reaching(SurfacePoint{position, normal, 0, 0});
@@ -116,16 +105,10 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
   return reaching;
 }
 
-Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const Hit& hit, const SurfacePoint& point,
-                                                       const Material& material, int level,
-                                                       bool seen_by_integral) const {
-  seen_by_integral = seen_by_integral && scene_.scene().render.obstacles_own_sky;
-  // Without a patch of its own, the integral that sees this obstacle lights it as itself;
-  // what a mirror shows is lit by the open sky instead.
-  std::optional<Irradiance> sky = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin));
-  if (!sky) sky = seen_by_integral ? Irradiance(0.0f) : open_sky_irradiance(point);
+Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const SurfacePoint& point,
+                                                       const Material& material, const Irradiance& sky) const {
   const Irradiance irradiance =
-      *sky * diffuse_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
+      sky * diffuse_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
   return lambertian_radiance(diffuse_albedo(material, dot(point.normal, -ray.direction)), irradiance);
@@ -136,22 +119,36 @@ Irradiance BandsIntegrator::open_sky_irradiance(const SurfacePoint& point) const
                                                      : sky_.sky_irradiance(point.normal);
 }
 
-Radiance BandsIntegrator::element_obstacle_radiance(const Ray& ray, const Hit& hit, int level) const {
-  const SurfacePoint point = scene_.untextured_point(ray, hit);
-  return obstacle_radiance(ray, hit, point, obstacle_materials_[point.material], level, true);
+Irradiance BandsIntegrator::obstacle_sky(const Ray& ray, const Hit& hit, const SurfacePoint& point, int level) const {
+  if (const std::optional<Irradiance> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin))) return *own;
+  return open_sky_irradiance(point);
 }
 
-Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const Hit& hit, const SurfacePoint& point,
-                                            const Material& body, int level, bool seen_by_integral) const {
+ObstacleLight BandsIntegrator::element_obstacle_light(const Ray& ray, const Hit& hit, int level) const {
+  const SurfacePoint point = scene_.untextured_point(ray, hit);
+  const Material& body = obstacle_materials_[point.material];
+  if (scene_.scene().render.obstacles_own_sky) {
+    // Without a patch of its own (past the last level, or too small), the integral that
+    // meets the obstacle lights it as itself (SkyLight::diffuse_irradiance).
+    if (const std::optional<Irradiance> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin)))
+      return obstacle_radiance(ray, point, body, *own, level);
+    return {obstacle_radiance(ray, point, body, Irradiance(0.0f), level),
+            diffuse_albedo(body, dot(point.normal, -ray.direction))};
+  }
+  return obstacle_radiance(ray, point, body, open_sky_irradiance(point), level);
+}
+
+Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& body,
+                                            const Irradiance& sky, int level) const {
   const Vec3 to_viewer = -ray.direction;
-  Radiance radiance = lambertian_obstacle_radiance(ray, hit, point, body, level, seen_by_integral);
+  Radiance radiance = lambertian_obstacle_radiance(ray, point, body, sky);
   const Reflectance fresnel = specular_fresnel(scene_.material(point.material), dot(point.normal, to_viewer));
   if (fresnel.is_black()) return radiance;
   const Ray mirrored{offset_from_surface(point.position, point.normal), mirror_direction(point.normal, to_viewer)};
   if (const std::optional<Hit> next = scene_.tracer().intersect(mirrored)) {
     const SurfacePoint seen = scene_.untextured_point(mirrored, *next);
-    return radiance + fresnel * lambertian_obstacle_radiance(mirrored, *next, seen, obstacle_materials_[seen.material],
-                                                             level, false);
+    return radiance + fresnel * lambertian_obstacle_radiance(mirrored, seen, obstacle_materials_[seen.material],
+                                                             obstacle_sky(mirrored, *next, seen, level));
   }
   return radiance + fresnel * sky_seen_from(point.position, mirrored.direction);
 }
@@ -179,7 +176,7 @@ Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direct
   if (const std::optional<Hit> hit = scene_.tracer().intersect(ray)) {
     // Seen in the mirror by the camera: with its textures.
     const SurfacePoint seen = scene_.surface_point(ray, *hit);
-    return obstacle_radiance(ray, *hit, seen, scene_.material_at(seen).get(), 0, false);
+    return obstacle_radiance(ray, seen, scene_.material_at(seen).get(), obstacle_sky(ray, *hit, seen, 0), 0);
   }
   // In a fog whose multiple scattering lights the point, the fog's light and the sun
   // through it (the paper's mode mirrors the clear sky).

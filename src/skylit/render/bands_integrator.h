@@ -109,11 +109,10 @@ class BandsIntegrator {
   // that light the obstacles a point's sky light meets (render/obstacle_sky_light.h),
   // the first for the obstacles of the
   // surfaces seen, the next for theirs; the last level's obstacles are lit as the point
-  // that sees them (SkyLight's lit_as_the_point). Each level is one more bounce of light
+  // that sees them (ObstacleLight::lit_as_the_point). Each level is one more bounce of light
   // between buildings; two and the closure put a canyon's shaded wall within 3 % of the
   // path tracer for height/width 1–4 (tests/render/canyon_light_test.cpp).
   static constexpr std::array<int, 2> kObstacleLevelDirections{256, 128};
-  const ObstacleSkyLight& obstacle_sky_light() const { return *obstacle_sky_; }
 
   // The sunlight that glass and metal facades reflect onto the surface at `point`
   // (W m⁻² nm⁻¹, on the side its normal faces): the rough facades' from `cached`
@@ -157,25 +156,25 @@ class BandsIntegrator {
   // What a mirror (window glass) shows in its mirror direction: an obstacle's light,
   // or the sky and the sun.
   Radiance mirrored(const SurfacePoint& point, const Vec3& direction) const;
-  // The light a hit obstacle sends back along `ray`, for the sky light's bounce: its
-  // Lambertian part, lit by the sun and by the open sky, or with "own_sky" by the sky it
-  // sees itself (the obstacle sky light's `level`; past its last level none: the
-  // integral that sees it adds it as its own); and for glass and
-  // metal, the sky or the Lambertian obstacle it mirrors (its Fresnel reflectance times
-  // the light from the mirror direction: a glossy lobe's blur is left out, the sky being
-  // smooth; the sun it reflects is ReflectedSun's).
-  // `body` is the material of the obstacle's Lambertian part (textured or not); what it
-  // mirrors is seen by its materials' means.
-  // `seen_by_integral`: `ray` is a sky-light integral's, which lights the obstacle as
-  // itself where it has no patch of its own (SkyLight's lit_as_the_point); otherwise
-  // (what a mirror shows) such an obstacle is lit by the open sky.
-  Radiance obstacle_radiance(const Ray& ray, const Hit& hit, const SurfacePoint& point, const Material& body, int level,
-                             bool seen_by_integral) const;
-  // The same for a ray that stands for a sky element: textures by their means
-  // (render/obstacle_materials.h).
-  Radiance element_obstacle_radiance(const Ray& ray, const Hit& hit, int level) const;
-  Radiance lambertian_obstacle_radiance(const Ray& ray, const Hit& hit, const SurfacePoint& point,
-                                        const Material& material, int level, bool seen_by_integral) const;
+  // The light a hit obstacle sends back along `ray`: its Lambertian part, lit by the
+  // sun and by `sky`; and for glass and metal, the sky or the Lambertian obstacle it
+  // mirrors (its Fresnel reflectance times the light from the mirror direction: a glossy
+  // lobe's blur is left out, the sky being smooth; the sun it reflects is
+  // ReflectedSun's), the latter lit by obstacle_sky at `level`. `body` is the material of
+  // the obstacle's Lambertian part (textured or not); what it mirrors is seen by its
+  // materials' means.
+  Radiance obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& body, const Irradiance& sky,
+                             int level) const;
+  // The same for a ray of a sky-light integral, which stands for a sky element: textures
+  // by their means (render/obstacle_materials.h); its sky light the open sky's, or with
+  // "own_sky" the obstacle sky light's `level`, or where that has none the integral's own
+  // (ObstacleLight::lit_as_the_point).
+  ObstacleLight element_obstacle_light(const Ray& ray, const Hit& hit, int level) const;
+  Radiance lambertian_obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& material,
+                                        const Irradiance& sky) const;
+  // The sky light on an obstacle seen other than by an integral (in a mirror): the
+  // obstacle sky light's `level` where it has a patch, else the open sky's.
+  Irradiance obstacle_sky(const Ray& ray, const Hit& hit, const SurfacePoint& point, int level) const;
   // The size of what the image resolves at `point`: the cache's finest spacing (4 pixels)
   // at its distance from the camera, m. No obstacle patch need be finer for a sky-light
   // integral there, whose result is interpolated over that much.

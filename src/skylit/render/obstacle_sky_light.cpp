@@ -50,30 +50,17 @@ size_t ObstacleSkyLight::PatchKeyHash::operator()(const PatchKey& key) const {
   return static_cast<size_t>(h ^ (h >> 29));
 }
 
-std::optional<int> ObstacleSkyLight::patch_exponent(int level, const Hit& hit, double min_side_m) const {
-  // About an element's width at the hit's distance.
-  const double width = std::max({kMinPatchM, min_side_m, patch_per_distance_[static_cast<size_t>(level)] * hit.t});
-  const int exponent = std::clamp(static_cast<int>(std::ceil(std::log2(width))), -8, 40);
-  const TriangleMesh& mesh = scene_.objects[hit.mesh_id].mesh;
-  const auto& corners = mesh.triangles[hit.triangle];
-  const Vec3 &v0 = mesh.vertices[corners[0]], &v1 = mesh.vertices[corners[1]], &v2 = mesh.vertices[corners[2]];
-  const double area = 0.5 * length(cross(v1 - v0, v2 - v0));
-  const double side = std::ldexp(1.0, exponent);
-  if (area < kMinAreaInPatches * side * side) return std::nullopt;
-  return exponent;
-}
-
 std::optional<Irradiance> ObstacleSkyLight::at(int level, const Ray& ray, const Hit& hit, double min_side_m) const {
   if (level >= levels()) return std::nullopt;
-  const std::optional<int> found_exponent = patch_exponent(level, hit, min_side_m);
-  if (!found_exponent) return std::nullopt;
-  const int exponent = *found_exponent;
+  // The patch: a square of 2^exponent m, about an element's width at the hit's distance,
+  // in the triangle's own frame (e1 along its first edge); none on a triangle too small.
+  const double width = std::max({kMinPatchM, min_side_m, patch_per_distance_[static_cast<size_t>(level)] * hit.t});
+  const int exponent = std::clamp(static_cast<int>(std::ceil(std::log2(width))), -8, 40);
+  const double side = std::ldexp(1.0, exponent);
   const TriangleMesh& mesh = scene_.objects[hit.mesh_id].mesh;
   const auto& corners = mesh.triangles[hit.triangle];
   const Vec3 &v0 = mesh.vertices[corners[0]], &v1 = mesh.vertices[corners[1]], &v2 = mesh.vertices[corners[2]];
-  // The patch: a square of 2^exponent m in the triangle's own frame (e1 along its first
-  // edge).
-  const double side = std::ldexp(1.0, exponent);
+  if (0.5 * length(cross(v1 - v0, v2 - v0)) < kMinAreaInPatches * side * side) return std::nullopt;
   const Vec3 e1 = normalize(v1 - v0);
   const Vec3 e2 = cross(hit.geometric_normal, e1);
   const Vec3 offset = ray.origin + hit.t * ray.direction - v0;

@@ -5,7 +5,7 @@
 // cannot see (+17–20 % on a wall facing an 8 m gap against the path tracer). Here each
 // obstacle point is lit by its own occluded sky instead, itself computed by a sky-light
 // integral whose obstacles are looked up one level further on; the last level's
-// integral lights its obstacles as itself (sky/sky_light.h, lit_as_the_point), which
+// integral lights its obstacles as itself (sky/sky_light.h, ObstacleLight::lit_as_the_point), which
 // sums the remaining bounces as a geometric series.
 //
 // An integral's element stands for a patch of the obstacle as wide as the element
@@ -20,7 +20,7 @@
 // A triangle smaller than a quarter of its patch (a window frame, a reveal, a facet of a
 // detailed model seen from afar) has none: it is one of many small parts, and a patch
 // for each would cost a quadrature per part; the integral that meets it lights it as
-// itself, as past the last level (sky/sky_light.h, lit_as_the_point).
+// itself, as past the last level (sky/sky_light.h, ObstacleLight::lit_as_the_point).
 //
 // The sun is not in it: each obstacle point's sunlight keeps its own shadow ray.
 #pragma once
@@ -57,10 +57,6 @@ class ObstacleSkyLight {
   // `min_side_m`: no patch smaller than this (what the image resolves where the ray
   // starts).
   std::optional<Irradiance> at(int level, const Ray& ray, const Hit& hit, double min_side_m = 0) const;
-  // Whether at() gives a value (without computing it).
-  bool has_patch(int level, const Hit& hit, double min_side_m = 0) const {
-    return level < levels() && patch_exponent(level, hit, min_side_m);
-  }
 
   // The smallest patch's side, m: finer than the sky light on a facade changes near its
   // foot, where a street's floor and walls meet.
@@ -82,9 +78,6 @@ class ObstacleSkyLight {
   struct PatchKeyHash {
     size_t operator()(const PatchKey& key) const;
   };
-
-  // The patch's side, 2^exponent m, for a hit at level; none on a triangle too small.
-  std::optional<int> patch_exponent(int level, const Hit& hit, double min_side_m) const;
 
   const Scene& scene_;
   std::vector<double> patch_per_distance_;  // per level: an element's width, radians

@@ -11,11 +11,10 @@
 namespace skylit {
 
 SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
-                   std::vector<SkyElement> elements, const FogSurfaceLight* fog, ObstacleAlbedo lit_as_the_point)
+                   std::vector<SkyElement> elements, const FogSurfaceLight* fog)
     : sky_(sky),
       tracer_(tracer),
       obstacle_radiance_(std::move(obstacle_radiance)),
-      lit_as_the_point_(std::move(lit_as_the_point)),
       elements_(std::move(elements)),
       fog_(fog) {
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
@@ -45,7 +44,7 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
 Radiance SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const {
   const Ray ray{origin, direction};
   const std::optional<Hit> hit = tracer_.intersect(ray);
-  return hit ? obstacle_radiance_(ray, *hit) : sky;
+  return hit ? obstacle_radiance_(ray, *hit).radiance : sky;
 }
 
 Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer,
@@ -89,7 +88,7 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   // and the glossy lobe sees obstacles near the mirror direction, mostly at the point's
   // own height.
   auto obstacle_seen = [&](const Ray& ray, const Hit& hit) {
-    const Radiance light = obstacle_radiance_(ray, hit);
+    const Radiance light = obstacle_radiance_(ray, hit).radiance;
     if (!in_fog) return light;
     const Radiance fog = sky_toward(ray.direction);
     return fog + (light - fog) * Transmittance(fog_->transmittance(point, ray.direction, hit.t));
@@ -235,7 +234,8 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
     rays.push_back(Ray{origin, elements[i].direction});
   }
   tracer_.intersect(rays, hits);
-  Spectrum reflected_back(0.0f);  // Σ_hidden w·T·ρ/π, with lit_as_the_point_
+  Spectrum reflected_back(0.0f);  // Σ_hidden w·T·ρ/π over the obstacles lit as the point
+  bool lit_as_the_point = false;
   for (size_t i = 0; i < elements.size(); ++i) {
     const SkyElement& e = elements[i];
     if (ray_of_element[i] < 0) continue;
@@ -245,8 +245,10 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
     if (!hit) continue;
     // Hidden: the element's sky leaves, the obstacle's light comes in its place.
     const float weight = static_cast<float>(cosine * e.solid_angle);
-    const Radiance obstacle = obstacle_radiance_(ray, *hit);
-    const Spectrum albedo = lit_as_the_point_ ? lit_as_the_point_(ray, *hit).spectrum() : Spectrum(0.0f);
+    const ObstacleLight light = obstacle_radiance_(ray, *hit);
+    const Radiance& obstacle = light.radiance;
+    const Spectrum& albedo = light.lit_as_the_point.spectrum();
+    lit_as_the_point = lit_as_the_point || !light.lit_as_the_point.is_black();
     if (in_fog) {
       // The field's light from the element leaves; the obstacle's light, less the field's
       // at the obstacle, comes through the fog between (δ-M, docs/fog.md).
@@ -265,7 +267,7 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
   }
   // Σ w·ρ/π ≤ ρ times the hidden share of the hemisphere, below 1 for any albedo below 1;
   // the bound keeps a white room's geometric series finite.
-  if (lit_as_the_point_)
+  if (lit_as_the_point)
     for (int k = 0; k < kSpectralBins; ++k) irradiance[k] /= 1.0f - std::min(0.99f, reflected_back[k]);
   return Irradiance(irradiance);
 }

@@ -24,10 +24,18 @@
 
 namespace skylit {
 
-// Radiance (W m⁻² sr⁻¹ nm⁻¹) that the obstacle hit by `ray` sends back along it.
-using ObstacleRadiance = std::function<Radiance(const Ray& ray, const Hit& hit)>;
-// The Lambertian albedo toward the ray's origin of the obstacle hit by `ray`.
-using ObstacleAlbedo = std::function<Reflectance(const Ray& ray, const Hit& hit)>;
+// What the obstacle hit by a ray sends back along it: its radiance (W m⁻² sr⁻¹ nm⁻¹),
+// and, where that radiance leaves out the obstacle's sky light, the Lambertian albedo
+// toward the ray's origin with which it returns the point's own instead
+// (SkyLight::diffuse_irradiance). Made from a radiance alone, so that a callback giving
+// only that is one.
+struct ObstacleLight {
+  ObstacleLight(const Radiance& radiance_sent, const Reflectance& albedo = Reflectance(0.0f))
+      : radiance(radiance_sent), lit_as_the_point(albedo) {}
+  Radiance radiance;
+  Reflectance lit_as_the_point;
+};
+using ObstacleRadiance = std::function<ObstacleLight(const Ray& ray, const Hit& hit)>;
 
 class SkyLight {
  public:
@@ -49,20 +57,20 @@ class SkyLight {
   // covers instead of the sky: the diffuse irradiance there is the fog field's, each
   // hidden direction seen through the fog (media/fog_surface_light.h); it is referred
   // to, not copied.
-  //
-  // `lit_as_the_point`, when given, closes the bounces between obstacles: the obstacles'
-  // radiance from `obstacle_radiance` then leaves out their sky light, and each is taken
-  // to receive the same sky irradiance E as the point itself, so that
-  //   E = (E_seen + Σ_hidden w·L_obstacle) / (1 − Σ_hidden w·ρ_obstacle/π),
-  // w = cos·dω, per wavelength bin: exact where everything around sees the same sky
-  // (a white furnace), and in a street the opposite wall at the same height does, about.
   SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
            std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections),
-           const FogSurfaceLight* fog = nullptr, ObstacleAlbedo lit_as_the_point = nullptr);
+           const FogSurfaceLight* fog = nullptr);
 
   // Irradiance (W m⁻² nm⁻¹) on a surface at `point` with unit `normal` (facing the side
   // being lit), from the sky, the far ground, and the obstacles that hide them; inside a
   // fog given to the constructor, from the fog's light and the obstacles seen through it.
+  //
+  // An obstacle whose ObstacleLight has an albedo ρ (its `lit_as_the_point`) is taken
+  // to receive the same sky irradiance E as the point itself, which closes the bounces
+  // between obstacles:
+  //   E = (E_seen + Σ_hidden w·L_obstacle) / (1 − Σ_hidden w·ρ/π),
+  // w = cos·dω, per wavelength bin: exact where everything around sees the same sky
+  // (a white furnace), and in a street the opposite wall at the same height does, about.
   Irradiance diffuse_irradiance(const Vec3& point, const Vec3& normal) const;
   // Whether diffuse_irradiance at altitude z already holds what the fog above takes and
   // adds (so the caller must not dim it by the fog's share of the sky light).
@@ -92,7 +100,6 @@ class SkyLight {
   const SkyModel& sky_;
   const RayTracer& tracer_;
   ObstacleRadiance obstacle_radiance_;
-  ObstacleAlbedo lit_as_the_point_;  // may be empty
   // The light arriving from an element's direction: the sky's, or the obstacle's.
   Radiance incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const;
 
