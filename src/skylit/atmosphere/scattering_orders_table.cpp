@@ -74,27 +74,37 @@ struct TableCoordinates {
   float pole;
 };
 
-TableCoordinates coordinates(double rg, double rt, double r, double mu, double mu_sun, double nu) {
-  const double denominator = std::sqrt(std::max(0.0, (1.0 - mu * mu) * (1.0 - mu_sun * mu_sun)));
-  const double azimuth = denominator < 1e-9 ? 0.0 : std::acos(std::clamp((nu - mu * mu_sun) / denominator, -1.0, 1.0));
+// The part of it that depends on the point's radius and direction alone: the same for
+// every sun along a ray of the grid, so the grid's rays find it once.
+struct RayCoordinates {
+  Lerp altitude, mu;
+  float pole;
+};
+
+RayCoordinates ray_coordinates(double rg, double rt, double r, double mu) {
   const double f_mu = (mu + 1.0) * 0.5 * Table::kMuSize - 0.5;
-  const Lerp lr = lerp(unit_from_altitude(r - rg, rt - rg) * (Table::kAltitudeSize - 1), Table::kAltitudeSize);
-  const Lerp ls = lerp(unit_from_mu_sun(mu_sun) * (Table::kMuSunSize - 1), Table::kMuSunSize);
-  const Lerp lm = lerp(f_mu, Table::kMuSize);
-  const Lerp lp = lerp(azimuth / kPi * Table::kAzimuthSize - 0.5, Table::kAzimuthSize);
   // Beyond the outermost band of μ toward the zenith or the nadir every azimuth meets
   // in one direction: blend toward the mean over φ of the outermost band, so that the
   // light there does not depend on the azimuth (clamping left a 2–4 % seam at the zenith).
   const float pole = static_cast<float>(std::clamp(2.0 * std::max(-f_mu, f_mu - (Table::kMuSize - 1)), 0.0, 1.0));
-  return {static_cast<uint8_t>(lr.i),
+  return {lerp(unit_from_altitude(r - rg, rt - rg) * (Table::kAltitudeSize - 1), Table::kAltitudeSize),
+          lerp(f_mu, Table::kMuSize), pole};
+}
+
+TableCoordinates coordinates(const RayCoordinates& ray, double mu, double mu_sun, double nu) {
+  const double denominator = std::sqrt(std::max(0.0, (1.0 - mu * mu) * (1.0 - mu_sun * mu_sun)));
+  const double azimuth = denominator < 1e-9 ? 0.0 : std::acos(std::clamp((nu - mu * mu_sun) / denominator, -1.0, 1.0));
+  const Lerp ls = lerp(unit_from_mu_sun(mu_sun) * (Table::kMuSunSize - 1), Table::kMuSunSize);
+  const Lerp lp = lerp(azimuth / kPi * Table::kAzimuthSize - 0.5, Table::kAzimuthSize);
+  return {static_cast<uint8_t>(ray.altitude.i),
           static_cast<uint8_t>(ls.i),
-          static_cast<uint8_t>(lm.i),
+          static_cast<uint8_t>(ray.mu.i),
           static_cast<uint8_t>(lp.i),
-          lr.a,
+          ray.altitude.a,
           ls.a,
-          lm.a,
+          ray.mu.a,
           lp.a,
-          pole};
+          ray.pole};
 }
 
 // S at a table position by multilinear interpolation of log S on the grid.
@@ -196,6 +206,35 @@ Step step(const AtmosphereMedium& m, const Coefficients& c, double h, double dt)
   return s;
 }
 
+// A ray of the grid from radius r in direction μ: where it ends, and its segments with
+// all that does not depend on the sun: the same for every sun and every order.
+struct RayPath {
+  struct Segment {
+    double t, r_t, mu_t;  // the segment's middle: distance along the ray, radius, direction
+    RayCoordinates where;
+    Step step;
+  };
+  bool ground = false;
+  double length = 0;
+  std::vector<Segment> segments;
+};
+
+RayPath ray_path(const AtmosphereMedium& m, const Coefficients& c, double rg, double rt, double r, double mu) {
+  RayPath path;
+  path.ground = shell::hits_ground(r, mu, rg);
+  path.length = path.ground ? shell::distance_to_ground(r, mu, rg) : shell::distance_to_outer_sphere(r, mu, rt);
+  const std::vector<double> bounds = shell::crowded_boundaries(path.length, -r * mu, Table::kSegments);
+  for (size_t i = 1; i < bounds.size(); ++i) {
+    const double dt = bounds[i] - bounds[i - 1];
+    if (dt <= 0) continue;
+    const double t = 0.5 * (bounds[i] + bounds[i - 1]);
+    const double r_t = std::clamp(shell::radius_at(r, mu, t), rg, rt);
+    const double mu_t = shell::mu_at(r, mu, t, r_t);
+    path.segments.push_back({t, r_t, mu_t, ray_coordinates(rg, rt, r_t, mu_t), step(m, c, r_t - m.earth_radius_m, dt)});
+  }
+  return path;
+}
+
 }  // namespace
 
 // The grid's points and the transport of one order along rays from them.
@@ -218,29 +257,25 @@ struct ScatteringOrdersTable::Grid {
     return out;
   }
 
-  // L along the ray (r, μ) with the sun at μ_s, ν. Order 1 (`logs` null): sunlight
-  // scattered once and the sunlit ground. Order n: σ·S_{n−1} (from its logarithms
-  // `logs`), and the ground's reflection of E_{n−1}.
-  Bins transport(const std::vector<LogSource>* logs, const std::vector<Bins>& ground_irradiance, double r, double mu,
-                 double mu_sun, double nu) const {
-    const bool ground = shell::hits_ground(r, mu, rg);
-    const double length = ground ? shell::distance_to_ground(r, mu, rg) : shell::distance_to_outer_sphere(r, mu, rt);
+  std::vector<RayPath> paths;  // [altitude][μ], filled by the table's constructor
+  const RayPath& path(int altitude, int mu) const { return paths[static_cast<size_t>(altitude * kMuSize + mu)]; }
+
+  // L along the grid's ray `path` from radius r with the sun at μ_s, ν. Order 1 (`logs`
+  // null): sunlight scattered once and the sunlit ground. Order n: σ·S_{n−1} (from its
+  // logarithms `logs`), and the ground's reflection of E_{n−1}.
+  Bins transport(const std::vector<LogSource>* logs, const std::vector<Bins>& ground_irradiance, const RayPath& path,
+                 double r, double mu_sun, double nu) const {
     const float phase_r = static_cast<float>(rayleigh_phase(nu, rayleigh_phase_gamma));
     const float phase_a = static_cast<float>(aerosol_phase(nu));
     Bins throughput, light{}, s_r, s_a;
     throughput.fill(1.0f);
-    const std::vector<double> bounds = shell::crowded_boundaries(length, -r * mu, kSegments);
-    for (size_t i = 1; i < bounds.size(); ++i) {
-      const double dt = bounds[i] - bounds[i - 1];
-      if (dt <= 0) continue;
-      const double t = 0.5 * (bounds[i] + bounds[i - 1]);
-      const double r_t = std::clamp(shell::radius_at(r, mu, t), rg, rt);
-      const double mu_sun_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
-      const Step s = step(medium, coefficients, r_t - medium.earth_radius_m, dt);
+    for (const RayPath::Segment& segment : path.segments) {
+      const double mu_sun_t = std::clamp((r * mu_sun + segment.t * nu) / segment.r_t, -1.0, 1.0);
+      const Step& s = segment.step;
       if (logs) {
-        gather(*logs, coordinates(rg, rt, r_t, shell::mu_at(r, mu, t, r_t), mu_sun_t, nu), s_r, s_a);
+        gather(*logs, coordinates(segment.where, segment.mu_t, mu_sun_t, nu), s_r, s_a);
       } else {
-        const Bins sun = sun_at(r_t, mu_sun_t);
+        const Bins sun = sun_at(segment.r_t, mu_sun_t);
         for (int k = 0; k < kBins; ++k) {
           s_r[k] = phase_r * sun[k];
           s_a[k] = phase_a * sun[k];
@@ -253,8 +288,8 @@ struct ScatteringOrdersTable::Grid {
         throughput[k] *= s.attenuation[k];
       }
     }
-    if (ground) {
-      const double mu_sun_g = std::clamp((r * mu_sun + length * nu) / rg, -1.0, 1.0);
+    if (path.ground) {
+      const double mu_sun_g = std::clamp((r * mu_sun + path.length * nu) / rg, -1.0, 1.0);
       Bins e{};
       if (logs) {
         const Lerp ls = lerp(unit_from_mu_sun(mu_sun_g) * (kMuSunSize - 1), kMuSunSize);
@@ -288,14 +323,18 @@ struct ScatteringOrdersTable::Grid {
 ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, const TransmittanceTable& transmittance,
                                              const AerosolSettings& aerosol, double ground_albedo)
     : ground_radius_(transmittance.ground_radius()), top_radius_(transmittance.top_radius()) {
-  const Grid grid{medium,
-                  transmittance,
-                  Coefficients(medium),
-                  static_cast<float>(medium.rayleigh_gamma),
-                  AerosolPhaseFunction(aerosol),
-                  ground_albedo,
-                  ground_radius_,
-                  top_radius_};
+  Grid grid{medium,
+            transmittance,
+            Coefficients(medium),
+            static_cast<float>(medium.rayleigh_gamma),
+            AerosolPhaseFunction(aerosol),
+            ground_albedo,
+            ground_radius_,
+            top_radius_,
+            {}};
+  for (int i = 0; i < kAltitudeSize; ++i)
+    for (int m = 0; m < kMuSize; ++m)
+      grid.paths.push_back(ray_path(medium, grid.coefficients, ground_radius_, top_radius_, grid.radius(i), mu_of(m)));
   const double gamma = medium.rayleigh_gamma;
   const std::vector<float> phase_r = phase_matrix([gamma](double c) { return rayleigh_phase(c, gamma); });
   const std::vector<float> phase_a = phase_matrix([&grid](double c) { return grid.aerosol_phase(c); });
@@ -308,11 +347,13 @@ ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, con
   for (int order = 1; order <= kOrders; ++order) {
     // L_order at every point and direction.
     tbb::parallel_for(0, kPoints, [&](int p) {
-      const double r = grid.radius(p / kMuSunSize), mu_sun = Grid::mu_sun(p % kMuSunSize);
+      const int altitude = p / kMuSunSize;
+      const double r = grid.radius(altitude), mu_sun = Grid::mu_sun(p % kMuSunSize);
       for (int d = 0; d < kDirections; ++d) {
-        const double mu = mu_of(d / kAzimuthSize);
-        radiance[static_cast<size_t>(p * kDirections + d)] = grid.transport(
-            order == 1 ? nullptr : &logs, ground, r, mu, mu_sun, nu_of(mu, mu_sun, azimuth_of(d % kAzimuthSize)));
+        const int m = d / kAzimuthSize;
+        radiance[static_cast<size_t>(p * kDirections + d)] =
+            grid.transport(order == 1 ? nullptr : &logs, ground, grid.path(altitude, m), r, mu_sun,
+                           nu_of(mu_of(m), mu_sun, azimuth_of(d % kAzimuthSize)));
       }
     });
     ground = Grid::ground_irradiance(radiance);
@@ -375,7 +416,7 @@ ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, con
 
 ScatteringOrdersTable::Source ScatteringOrdersTable::at(double r, double mu, double mu_sun, double nu) const {
   Bins s_r, s_a;
-  gather(log_source_, coordinates(ground_radius_, top_radius_, r, mu, mu_sun, nu), s_r, s_a);
+  gather(log_source_, coordinates(ray_coordinates(ground_radius_, top_radius_, r, mu), mu, mu_sun, nu), s_r, s_a);
   // Linear in wavelength between the table's bins.
   Source out;
   for (int b = 0; b + 1 < kBins; ++b) {

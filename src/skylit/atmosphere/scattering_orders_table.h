@@ -54,7 +54,7 @@ class ScatteringOrdersTable {
   Source at(double r, double mu, double mu_sun, double nu) const;
 
   // One entry of the table: log S_R and log S_A in the table's bins.
-  struct LogSource {
+  struct alignas(64) LogSource {  // one cache line: a look-up's corners touch one each
     Bins rayleigh, aerosol;
   };
 
