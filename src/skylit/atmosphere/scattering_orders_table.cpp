@@ -107,21 +107,32 @@ TableCoordinates coordinates(const RayCoordinates& ray, double mu, double mu_sun
           ray.pole};
 }
 
-// S at a table position by multilinear interpolation of log S on the grid.
-void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c, Bins& out_r, Bins& out_a) {
-  Bins sum_r{}, sum_a{};
-  for (int corner = 0; corner < 16; ++corner) {
-    const int di = corner & 1, dj = (corner >> 1) & 1, dm = (corner >> 2) & 1, dp = (corner >> 3) & 1;
-    const float w = (di ? c.a_altitude : 1 - c.a_altitude) * (dj ? c.a_mu_sun : 1 - c.a_mu_sun) *
-                    (dm ? c.a_mu : 1 - c.a_mu) * (dp ? c.a_azimuth : 1 - c.a_azimuth);
-    if (w == 0.0f) continue;
-    const size_t point = static_cast<size_t>((c.altitude + di) * Table::kMuSunSize + c.mu_sun + dj);
-    const size_t index = point * kDirections + static_cast<size_t>((c.mu + dm) * Table::kAzimuthSize + c.azimuth + dp);
-    for (int k = 0; k < kBins; ++k) {
-      sum_r[k] += w * logs[index].rayleigh[k];
-      sum_a[k] += w * logs[index].aerosol[k];
-    }
+// a + f·(b − a), bin by bin.
+Table::LogSource blend(const Table::LogSource& a, const Table::LogSource& b, float f) {
+  Table::LogSource out;
+  for (int k = 0; k < kBins; ++k) {
+    out.rayleigh[k] = a.rayleigh[k] + f * (b.rayleigh[k] - a.rayleigh[k]);
+    out.aerosol[k] = a.aerosol[k] + f * (b.aerosol[k] - a.aerosol[k]);
   }
+  return out;
+}
+
+// S at a table position by multilinear interpolation of log S on the grid: the 16
+// corners blended one axis at a time (azimuth, μ, μ_s, altitude), so that each bin
+// waits on four blends in a row rather than on sixteen sums.
+void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c, Bins& out_r, Bins& out_a) {
+  auto entry = [&logs](int altitude, int mu_sun, int mu, int azimuth) -> const Table::LogSource& {
+    return logs[static_cast<size_t>((altitude * Table::kMuSunSize + mu_sun) * kDirections + mu * Table::kAzimuthSize +
+                                    azimuth)];
+  };
+  auto along_azimuth = [&](int di, int dj, int dm) {
+    return blend(entry(c.altitude + di, c.mu_sun + dj, c.mu + dm, c.azimuth),
+                 entry(c.altitude + di, c.mu_sun + dj, c.mu + dm, c.azimuth + 1), c.a_azimuth);
+  };
+  auto along_mu = [&](int di, int dj) { return blend(along_azimuth(di, dj, 0), along_azimuth(di, dj, 1), c.a_mu); };
+  auto along_mu_sun = [&](int di) { return blend(along_mu(di, 0), along_mu(di, 1), c.a_mu_sun); };
+  const Table::LogSource sum = blend(along_mu_sun(0), along_mu_sun(1), c.a_altitude);
+  Bins sum_r = sum.rayleigh, sum_a = sum.aerosol;
   if (c.pole > 0) {
     const int row = c.mu == 0 ? 0 : Table::kMuSize - 1;
     Bins mean_r{}, mean_a{};
