@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -22,6 +23,7 @@
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/renderer.h"
 #include "skylit/render/surface_cache.h"
+#include "skylit/sky/sky_light.h"
 #include "skylit/spectrum/cie.h"
 
 namespace skylit {
@@ -30,11 +32,24 @@ namespace {
 struct CacheDeviation {
   double p99 = 0, mean_ratio = 0;
   size_t pixels = 0;
+  // Against a converged quadrature (kConvergedDirections), when asked for: the cached
+  // value's 99th percentile and the exact value's own (its 1024 directions' error).
+  double cached_converged_p99 = 0, exact_converged_p99 = 0;
 };
+
+// Directions of the converged sky light: 16 times the renderer's 1024.
+constexpr int kConvergedDirections = 16384;
+
+double percentile_99(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  return values[values.size() * 99 / 100];
+}
 
 // Every `stride`-th pixel centre in both directions (offset so that most are not grid
 // points themselves): |cached / exact − 1| of the diffuse sky light's illuminance.
-CacheDeviation cache_deviation(const std::string& example, int width, int height, int stride) {
+CacheDeviation cache_deviation(const std::string& example, int width, int height, int stride,
+                               bool against_converged = false) {
   const Scene scene = load_scene(std::string(SKYLIT_SOURCE_DIR) + "/examples/" + example,
                                  {"render.width=" + std::to_string(width), "render.height=" + std::to_string(height)});
   const Renderer renderer(scene);
@@ -42,11 +57,18 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
   const ImageCamera camera(scene.camera, width, height);
   const PrimaryHits hits(camera, width, height, [&](const Ray& ray) { return integrator.first_hit(ray); });
   auto diffuse = [&](const SurfacePoint& p) {
-    return CachedSkyLight{integrator.sky_light().diffuse_irradiance(p.position, p.normal), Radiance(0.0f)};
+    CachedSkyLight value;
+    value.diffuse_irradiance =
+        integrator.sky_light().diffuse_irradiance(p.position, p.normal, &value.obstacle_distance_m);
+    return value;
   };
   const SurfaceCache cache(hits, diffuse);
+  const std::unique_ptr<SkyLight> converged =
+      against_converged ? integrator.sky_light_with(kConvergedDirections) : nullptr;
   const int rows = (height - 1) / stride + 1;
   std::vector<std::vector<double>> ratios(static_cast<size_t>(rows));
+  // |cached / converged − 1| and |exact / converged − 1| per pixel, by row.
+  std::vector<std::vector<std::pair<double, double>>> off_converged(static_cast<size_t>(rows));
   tbb::parallel_for(0, rows, [&](int row) {
     const int y = std::min(row * stride + stride / 2, height - 1);
     for (int x = stride / 2; x < width; x += stride) {
@@ -55,7 +77,14 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
       const std::optional<CachedSkyLight> cached = cache.interpolate(x + 0.5, y + 0.5, *point);
       if (!cached) continue;  // the renderer computes such a sample itself
       const double exact = illuminance(diffuse(*point).diffuse_irradiance);
-      if (exact > 0) ratios[static_cast<size_t>(row)].push_back(illuminance(cached->diffuse_irradiance) / exact);
+      if (!(exact > 0)) continue;
+      const double cached_lx = illuminance(cached->diffuse_irradiance);
+      ratios[static_cast<size_t>(row)].push_back(cached_lx / exact);
+      if (!converged) continue;
+      const double truth = illuminance(converged->diffuse_irradiance(point->position, point->normal));
+      if (truth > 0)
+        off_converged[static_cast<size_t>(row)].emplace_back(std::abs(cached_lx / truth - 1),
+                                                             std::abs(exact / truth - 1));
     }
   });
   std::vector<double> deviations;
@@ -70,6 +99,18 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
   result.mean_ratio /= static_cast<double>(deviations.size());
   std::sort(deviations.begin(), deviations.end());
   result.p99 = deviations[deviations.size() * 99 / 100];
+  if (converged) {
+    std::vector<double> cached_off, exact_off;
+    for (const auto& row : off_converged)
+      for (const auto& [c, e] : row) {
+        cached_off.push_back(c);
+        exact_off.push_back(e);
+      }
+    result.cached_converged_p99 = percentile_99(cached_off);
+    result.exact_converged_p99 = percentile_99(exact_off);
+    std::printf("  against %d directions: cached 99th percentile %.4f, exact (1024) %.4f\n", kConvergedDirections,
+                result.cached_converged_p99, result.exact_converged_p99);
+  }
   std::printf(
       "%s %d×%d (every %d px, %zu pixels; cache %d coarse, %d fine, %d per-pixel points): mean ratio %.4f, "
       "99th percentile %.4f, worst %.4f\n",
@@ -79,13 +120,14 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
 }
 
 // Bound on the 99th percentile of the per-pixel deviation. The issue asks for 2 %; the
-// cache does not reach it at a cost the frame budget allows (docs/sky-light.md): on
-// Fig. 7 it measured (2026-12-02, every 2nd pixel) 9.0 % at 320 × 180 and 6.9 % at
-// 480 × 270, against 27.7 % and 25.8 % before corners were refused (a cell's corners
-// then stood in for any point of their plane). The bound leaves that a margin and fails
-// by a factor two on the old cache. The exact value and the cached one come from the
-// same 1024-direction quadrature, so the deviation is the cache's alone.
-constexpr double kTolerance = 0.12;
+// 1024-direction integral that the cache interpolates is itself off by more than that
+// from the converged sky light (next test), in steps as obstacle edges cross its
+// directions, which no smooth interpolation follows. Measured (2026-12-03, every 2nd
+// pixel): 5.2 % at 320 × 180 and 5.4 % at 480 × 270 with corners kept within their
+// obstacles' reach (cache_corner_agreement.h); 9.2 % and 7.2 % without, 27.7 % and
+// 25.8 % before corners were refused at all. The exact value and the cached one come
+// from the same quadrature, so the deviation is the cache's against its own points.
+constexpr double kTolerance = 0.07;
 
 TEST(SkyLightCacheExamples, Fig7AtSmallSizesStaysNearTheExactSkyLight) {
   for (const auto& [width, height] : {std::pair{320, 180}, std::pair{480, 270}}) {
@@ -95,15 +137,28 @@ TEST(SkyLightCacheExamples, Fig7AtSmallSizesStaysNearTheExactSkyLight) {
   }
 }
 
+// Against the converged sky light (16,384 directions), the cache's 99th percentile
+// stays within 2 points of the 1024-direction integral's own: what the cache adds to
+// the quadrature's error. Measured (2026-12-03, every 4th pixel, Fig. 7 at 320 × 180):
+// cached 4.96 %, the integral itself 3.47 %; 12.3 % before corners were kept within
+// their obstacles' reach. 3 s.
+TEST(SkyLightCacheExamples, Fig7CacheAddsLittleToTheQuadraturesOwnError) {
+  const CacheDeviation d = cache_deviation("fig7.json", 320, 180, 4, true);
+  ASSERT_GT(d.pixels, 1000u);
+  EXPECT_GT(d.exact_converged_p99, 0.01);  // the quadrature's steps do show
+  EXPECT_LT(d.cached_converged_p99, d.exact_converged_p99 + 0.02);
+}
+
 TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
   if (!std::getenv("SKYLIT_SKY_LIGHT_ACCURACY")) GTEST_SKIP() << "heavy: set SKYLIT_SKY_LIGHT_ACCURACY=1";
-  // Measured 2026-12-02 (99th percentile; 1920 × 1080 every 4th pixel): Fig. 7 7.9 %,
-  // 5.4 %, 7.1 % at 320 × 180, 480 × 270, 1920 × 1080; building 14.2 %, 14.7 %, 3.7 %;
-  // house 18.2 %, 15.6 %, 14.8 % (its window frames and roof facets a pixel wide, as in
-  // sky_light_accuracy_test.cpp). Neither reaches the issue's 2 %; the other examples'
-  // bound only catches a cache gone wrong.
+  // Measured 2026-12-03 (99th percentile; 1920 × 1080 every 4th pixel): Fig. 7 4.7 %,
+  // 4.8 %, 4.7 % at 320 × 180, 480 × 270, 1920 × 1080; building 4.3 %, 4.8 %, 3.7 %;
+  // house 18.3 %, 15.7 %, 14.8 % (its window frames and roof facets a pixel wide, as in
+  // sky_light_accuracy_test.cpp). Before corners were kept within their obstacles'
+  // reach: Fig. 7 7.9 %, 5.4 %, 7.1 %; building 14.2 %, 14.7 %, 3.7 %; house the same.
+  // The house's bound only catches a cache gone wrong.
   for (const auto& [example, bound] :
-       {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", 0.25}, std::pair{"house.json", 0.25}})
+       {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", kTolerance}, std::pair{"house.json", 0.25}})
     for (const auto& [width, height] : {std::pair{320, 180}, std::pair{480, 270}, std::pair{1920, 1080}}) {
       const CacheDeviation d = cache_deviation(example, width, height, width > 1000 ? 4 : 1);
       ASSERT_GT(d.pixels, 5000u);

@@ -16,10 +16,11 @@ namespace {
 
 constexpr int kWidth = 64, kHeight = 48;
 
-// A camera 100 m above the plane z = 0, looking straight down; the plane's material
-// changes every `tile_m` metres in x and y among `materials` materials.
-PrimaryHits hits_of_tiled_plane(double tile_m, int materials) {
-  const ImageCamera camera(Camera{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 50.0}, kWidth, kHeight);
+// A camera 100 m above the plane z = 0, looking straight down (or `camera_setup`); the
+// plane's material changes every `tile_m` metres in x and y among `materials` materials.
+PrimaryHits hits_of_tiled_plane(double tile_m, int materials,
+                                const Camera& camera_setup = Camera{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 50.0}) {
+  const ImageCamera camera(camera_setup, kWidth, kHeight);
   return PrimaryHits(camera, kWidth, kHeight, [&](const Ray& ray) {
     const double t = -ray.origin.z / ray.direction.z;
     const Vec3 p = ray.origin + t * ray.direction;
@@ -85,6 +86,42 @@ TEST(SurfaceCache, OneLargeSurfaceNeedsNoPerPixelPoints) {
   EXPECT_EQ(cache.pixel_points(), 0);
   const SurfacePoint& p = *hits.surface(20, 30);
   ASSERT_TRUE(cache.interpolate(20.5, 30.5, p));
+}
+
+TEST(SurfaceCache, CornersBeyondTheirObstaclesReachAreRefinedWhereTheyDisagree) {
+  // Ground seen at a grazing angle from 3 m up, its value changing along the view by
+  // 0.3 % a metre: with the obstacles 20 m away (a corner stands for points within 2 m)
+  // rather than 5 km, the cells that span much depth and whose corners differ by more
+  // than kCloseSpread are refined further; with the value uniform, or the same ground
+  // seen from straight above (cells of little depth), none are.
+  const Camera grazing{{0, 0, 3}, {0, 60, 0}, {0, 0, 1}, 50.0};
+  const PrimaryHits hits = hits_of_tiled_plane(1e5, 1, grazing);
+  auto changing = [](double obstacle_m) {
+    return [obstacle_m](const SurfacePoint& p) {
+      CachedSkyLight v = value_at(p);
+      v.diffuse_irradiance = Irradiance(static_cast<float>(1000 + 3 * p.position.y));
+      v.obstacle_distance_m = obstacle_m;
+      return v;
+    };
+  };
+  const SurfaceCache far_away(hits, changing(5000));
+  const SurfaceCache near(hits, changing(20));
+  EXPECT_GT(near.fine_points() + near.pixel_points(), far_away.fine_points() + far_away.pixel_points() + 50);
+  const PrimaryHits from_above = hits_of_tiled_plane(1e5, 1, Camera{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 20.0});
+  const SurfaceCache near_from_above(from_above, changing(20)), far_from_above(from_above, changing(5000));
+  EXPECT_EQ(near_from_above.fine_points() + near_from_above.pixel_points(),
+            far_from_above.fine_points() + far_from_above.pixel_points());
+  auto uniform = [](double obstacle_m) {
+    return [obstacle_m](const SurfacePoint& p) {
+      CachedSkyLight v = value_at(p);
+      v.diffuse_irradiance = Irradiance(500.0f);
+      v.obstacle_distance_m = obstacle_m;
+      return v;
+    };
+  };
+  const SurfaceCache uniform_near(hits, uniform(20)), uniform_far(hits, uniform(5000));
+  EXPECT_EQ(uniform_near.fine_points() + uniform_near.pixel_points(),
+            uniform_far.fine_points() + uniform_far.pixel_points());
 }
 
 }  // namespace

@@ -31,15 +31,17 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       scene.scene(), lookup_directions, [this](int level, const Vec3& point, const Vec3& normal) {
         return obstacle_sky_lights_[static_cast<size_t>(level)]->diffuse_irradiance(point, normal);
       });
-  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_light(ray, hit, 0); };
-  sky_light_ = std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle,
-                                          fibonacci_sphere(SkyLight::kDefaultDirections), fog_light_);
-  one_pixel_sky_light_ =
-      std::make_unique<SkyLight>(sky_, scene.tracer(), obstacle, fibonacci_sphere(kOnePixelDirections), fog_light_);
+  sky_light_ = sky_light_with(SkyLight::kDefaultDirections);
+  one_pixel_sky_light_ = sky_light_with(kOnePixelDirections);
   reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
                                                   [this](const Vec3& position, const Vec3& normal) {
                                                     return sun_reaching(SurfacePoint{position, normal, 0, 0});
                                                   });
+}
+
+std::unique_ptr<SkyLight> BandsIntegrator::sky_light_with(int directions) const {
+  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_light(ray, hit, 0); };
+  return std::make_unique<SkyLight>(sky_, scene_.tracer(), obstacle, fibonacci_sphere(directions), fog_light_);
 }
 
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {
@@ -161,9 +163,10 @@ Radiance BandsIntegrator::sky_seen_from(const Vec3& point, const Vec3& direction
 CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& sky_light, const SurfacePoint& point,
                                              const Vec3& to_viewer) const {
   const Material& material = material_of(point);
-  return {sky_light.diffuse_irradiance(point.position, point.normal),
-          sky_light.specular_radiance(point.position, point.normal, to_viewer, material),
-          reflected_sun_->from_rough(point.position, point.normal)};
+  double obstacle_distance_m = 0;
+  const Irradiance diffuse = sky_light.diffuse_irradiance(point.position, point.normal, &obstacle_distance_m);
+  return {diffuse, sky_light.specular_radiance(point.position, point.normal, to_viewer, material),
+          reflected_sun_->from_rough(point.position, point.normal), obstacle_distance_m};
 }
 
 Irradiance BandsIntegrator::reflected_sun(const SurfacePoint& point, const CachedSkyLight& cached) const {

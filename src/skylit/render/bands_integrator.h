@@ -120,6 +120,9 @@ class BandsIntegrator {
   Irradiance reflected_sun(const SurfacePoint& point, const CachedSkyLight& cached) const;
 
   const SkyLight& sky_light() const { return *sky_light_; }
+  // The sky light as sky_light() finds it, with `directions` directions instead: for
+  // checking the quadrature's own convergence (tests/render/sky_light_cache_examples_test.cpp).
+  std::unique_ptr<SkyLight> sky_light_with(int directions) const;
   // The glass and metal facet groups that reflect the sun onto other surfaces.
   const ReflectedSun& facades() const { return *reflected_sun_; }
 

@@ -9,10 +9,14 @@ bool within_reach(const SurfacePoint& cached, const SurfacePoint& point) {
   return length(cached.position - point.position) <= kCornerReach * point.distance;
 }
 
-bool corners_agree(std::span<const double> corner_illuminance_lx) {
+bool within_obstacle_reach(const SurfacePoint& cached, double obstacle_distance_m, const SurfacePoint& point) {
+  return length(cached.position - point.position) <= kObstacleReach * obstacle_distance_m;
+}
+
+bool corners_agree(std::span<const double> corner_illuminance_lx, double spread) {
   if (corner_illuminance_lx.empty()) return true;
   const auto [low, high] = std::minmax_element(corner_illuminance_lx.begin(), corner_illuminance_lx.end());
-  return *high - *low <= kCornerSpread * *high;
+  return *high - *low <= spread * *high;
 }
 
 }  // namespace skylit

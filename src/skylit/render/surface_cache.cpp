@@ -49,7 +49,8 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
   std::array<const Stored*, 4> corners{};
   std::array<double, 4> corner_lx{};
   size_t count = 0;
-  bool all_within_reach = true;
+  bool all_within_reach = true, all_within_obstacle_reach = true;
+  double depth_span = 0;
   for (int dy = 0; dy <= 1; ++dy)
     for (int dx = 0; dx <= 1; ++dx) {
       const Stored* e = stored(std::min(gx + dx, grid_width_ - 1), std::min(gy + dy, grid_height_ - 1));
@@ -57,12 +58,20 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
       corners[static_cast<size_t>(2 * dy + dx)] = e;
       corner_lx[count++] = e->diffuse_lx;
       all_within_reach = all_within_reach && within_reach(e->point, point);
+      all_within_obstacle_reach =
+          all_within_obstacle_reach && within_obstacle_reach(e->point, e->value.obstacle_distance_m, point);
+      depth_span = std::max(depth_span, std::abs(e->point.distance / point.distance - 1));
     }
   // Corners whose sky light disagrees lie across a change the cell cannot follow. Fewer
   // than four corners on the surface cannot show how it changes across the cell, so
   // they must also lie near the point.
-  const bool disagree = count > 0 && (!(count == 4 || all_within_reach) ||
-                                      !corners_agree(std::span<const double>(corner_lx.data(), count)));
+  // In a cell that spans much depth, near obstacles, corners farther than their reach
+  // must agree closely (cache_corner_agreement.h). The per-pixel level's corners are a
+  // pixel apart: nothing finer to go to.
+  const std::span<const double> lx(corner_lx.data(), count);
+  const bool near_obstacles =
+      spacing_ > 1 && depth_span > kDepthSpan && !all_within_obstacle_reach && !corners_agree(lx, kCloseSpread);
+  const bool disagree = count > 0 && (near_obstacles || !(count == 4 || all_within_reach) || !corners_agree(lx));
   if (refused) *refused = disagree;
   if (disagree) return std::nullopt;
   CachedSkyLight sum;

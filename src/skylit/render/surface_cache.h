@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct CachedSkyLight {
   Irradiance diffuse_irradiance;
   Radiance specular_radiance;
   Irradiance rough_reflected_sun{};
+  // The harmonic mean distance to the obstacles the point's sky-light integral met
+  // (SkyLight::diffuse_irradiance): how far the value may stand for other points.
+  double obstacle_distance_m = std::numeric_limits<double>::infinity();
 };
 
 // Whether a cached point can stand in for `point`: the same material on the same plane

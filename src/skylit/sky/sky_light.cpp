@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -194,7 +195,7 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   return sum;
 }
 
-Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) const {
+Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, double* obstacle_distance_m) const {
   // Per bin: the hidden elements' radiance × cos dω changes the irradiance. In a fog
   // that lights the point, the unobstructed light is the fog field's, and what a hidden
   // element changes is seen through the fog in front of its obstacle.
@@ -236,13 +237,16 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
   tracer_.intersect(rays, hits);
   Spectrum reflected_back(0.0f);  // Σ_hidden w·T·ρ/π over the obstacles lit as the point
   bool lit_as_the_point = false;
+  double weight_sum = 0, weight_over_distance = 0;  // Σ w, Σ_hidden w / t
   for (size_t i = 0; i < elements.size(); ++i) {
     const SkyElement& e = elements[i];
     if (ray_of_element[i] < 0) continue;
     const double cosine = dot(normal, e.direction);
     const Ray& ray = rays[static_cast<size_t>(ray_of_element[i])];
     const std::optional<Hit>& hit = hits[static_cast<size_t>(ray_of_element[i])];
+    weight_sum += cosine * e.solid_angle;
     if (!hit) continue;
+    weight_over_distance += cosine * e.solid_angle / std::max(hit->t, 1e-3);
     // Hidden: the element's sky leaves, the obstacle's light comes in its place.
     const float weight = static_cast<float>(cosine * e.solid_angle);
     const ObstacleLight light = obstacle_radiance_(ray, *hit);
@@ -269,6 +273,9 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal) c
   // the bound keeps a white room's geometric series finite.
   if (lit_as_the_point)
     for (int k = 0; k < kSpectralBins; ++k) irradiance[k] /= 1.0f - std::min(0.99f, reflected_back[k]);
+  if (obstacle_distance_m)
+    *obstacle_distance_m =
+        weight_over_distance > 0 ? weight_sum / weight_over_distance : std::numeric_limits<double>::infinity();
   return Irradiance(irradiance);
 }
 

@@ -71,7 +71,11 @@ class SkyLight {
   //   E = (E_seen + Σ_hidden w·L_obstacle) / (1 − Σ_hidden w·ρ/π),
   // w = cos·dω, per wavelength bin: exact where everything around sees the same sky
   // (a white furnace), and in a street the opposite wall at the same height does, about.
-  Irradiance diffuse_irradiance(const Vec3& point, const Vec3& normal) const;
+  //
+  // `obstacle_distance_m`, when given, receives the harmonic mean distance to what the
+  // directions meet (cos-weighted; open sky counts as infinitely far; +∞ when nothing is
+  // hidden): the scale over which the irradiance changes (Ward et al. 1988).
+  Irradiance diffuse_irradiance(const Vec3& point, const Vec3& normal, double* obstacle_distance_m = nullptr) const;
   // Whether diffuse_irradiance at altitude z already holds what the fog above takes and
   // adds (so the caller must not dim it by the fog's share of the sky light).
   bool lights_in_fog(double z_m) const { return fog_ && fog_->covers(z_m); }
