@@ -42,6 +42,7 @@ heavy=(
   FogSkyLight.AdaptivePitchMatchesFineFixedSteps
   WeatherConditions.ClearHoursOfTheSharedFileMatchTheModel
   SkyLightCacheExamples.Fig7AtSmallSizesStaysNearTheExactSkyLight
+  SkyLightCacheExamples.Fig7CacheAddsLittleToTheQuadraturesOwnError
   # the atmosphere's Monte Carlo reference (test code; about 25 s of CPU in Release for
   # each estimator), which whichever of these runs first in a shard computes
   'MultipleScattering.*MonteCarlo*'
