@@ -48,7 +48,7 @@ bool within_reach(const SurfacePoint& cached, const SurfacePoint& point);
 // deviation went from 12.3 % to 5.0 %, near the 1,024-direction integral's own 3.5 %.
 // Without the depth condition it was 4.8 % but the million-triangle frame took 1.3 times
 // as long (its aerial view's small cells beside houses); with it that frame is unchanged
-// and Fig. 7's about 1.1 times.
+// and Fig. 7's about 1.05 times.
 inline constexpr double kObstacleReach = 0.1;
 inline constexpr double kCloseSpread = 0.03;
 inline constexpr double kDepthSpan = 0.1;
