@@ -139,12 +139,11 @@ void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c
     for (int corner = 0; corner < 4; ++corner) {
       const int di = corner & 1, dj = (corner >> 1) & 1;
       const float w = (di ? c.a_altitude : 1 - c.a_altitude) * (dj ? c.a_mu_sun : 1 - c.a_mu_sun) / Table::kAzimuthSize;
-      const size_t point = static_cast<size_t>((c.altitude + di) * Table::kMuSunSize + c.mu_sun + dj);
       for (int p = 0; p < Table::kAzimuthSize; ++p) {
-        const size_t index = point * kDirections + static_cast<size_t>(row * Table::kAzimuthSize + p);
+        const Table::LogSource& e = entry(c.altitude + di, c.mu_sun + dj, row, p);
         for (int k = 0; k < kBins; ++k) {
-          mean_r[k] += w * logs[index].rayleigh[k];
-          mean_a[k] += w * logs[index].aerosol[k];
+          mean_r[k] += w * e.rayleigh[k];
+          mean_a[k] += w * e.aerosol[k];
         }
       }
     }

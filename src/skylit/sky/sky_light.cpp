@@ -237,18 +237,19 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
   tracer_.intersect(rays, hits);
   Spectrum reflected_back(0.0f);  // Σ_hidden w·T·ρ/π over the obstacles lit as the point
   bool lit_as_the_point = false;
-  double weight_sum = 0, weight_over_distance = 0;  // Σ w, Σ_hidden w / t
+  double weight_sum = 0, weight_over_distance = 0;  // Σ w, Σ_hidden w / t (when asked)
   for (size_t i = 0; i < elements.size(); ++i) {
     const SkyElement& e = elements[i];
     if (ray_of_element[i] < 0) continue;
     const double cosine = dot(normal, e.direction);
     const Ray& ray = rays[static_cast<size_t>(ray_of_element[i])];
     const std::optional<Hit>& hit = hits[static_cast<size_t>(ray_of_element[i])];
-    weight_sum += cosine * e.solid_angle;
+    const double w = cosine * e.solid_angle;
+    if (obstacle_distance_m) weight_sum += w;
     if (!hit) continue;
-    weight_over_distance += cosine * e.solid_angle / std::max(hit->t, 1e-3);
+    if (obstacle_distance_m) weight_over_distance += w / std::max(hit->t, 1e-3);
     // Hidden: the element's sky leaves, the obstacle's light comes in its place.
-    const float weight = static_cast<float>(cosine * e.solid_angle);
+    const float weight = static_cast<float>(w);
     const ObstacleLight light = obstacle_radiance_(ray, *hit);
     const Radiance& obstacle = light.radiance;
     const Spectrum& albedo = light.lit_as_the_point.spectrum();
