@@ -41,10 +41,11 @@ struct FogSettings {
   double droplet_diameter_um = 15.0;  // for droplet_fit; the fit holds for 5–50 µm
   double asymmetry = 0.85;            // g, for henyey_greenstein
   // Light scattered more than once (docs/fog.md, "Multiple scattering"): a 1-D
-  // discrete-ordinates solution for the layer, azimuthally averaged. Off by default
-  // until the sun's multiply scattered light gets its azimuthal structure (it errs by
-  // up to 3–4× at optical depths 0.1–3, docs/fog.md); the paper's single scattering
-  // (§5: the sun's beams and the sky light of Eq. 13, isotropic) otherwise.
+  // discrete-ordinates solution for the layer with its Fourier terms in azimuth about
+  // the sun, lighting the fog and the surfaces in it. Off by default until the
+  // figures' reference images and validation tables are remade with it; the paper's
+  // single scattering (§5: the sun's beams and the sky light of Eq. 13, isotropic)
+  // otherwise.
   bool multiple_scattering = false;
 };
 
