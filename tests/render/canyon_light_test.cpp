@@ -80,7 +80,7 @@ TEST(CanyonLight, ShadedWallAgainstThePathTracer) {
 TEST(CanyonLight, TheSceneChoosesWhatLightsTheObstacles) {
   testing::TempDir dir;
   const auto scene_file = dir.write("scene.json", testing::small_scene_json());
-  EXPECT_FALSE(load_scene(scene_file).render.obstacles_own_sky);
+  EXPECT_TRUE(load_scene(scene_file).render.obstacles_own_sky);  // the default: physically right
   EXPECT_TRUE(load_scene(scene_file, {"render.obstacle_light=own_sky"}).render.obstacles_own_sky);
   EXPECT_FALSE(load_scene(scene_file, {"render.obstacle_light=open_sky"}).render.obstacles_own_sky);
   const std::string error = testing::input_error_of([&] { load_scene(scene_file, {"render.obstacle_light=closed"}); });

@@ -88,9 +88,10 @@ struct RenderSettings {
   bool exr_layers = false;             // .exr: add object, distance and normal layers
   bool human_display = false;          // .png: as a person would see it (io/image/human_display.h)
   // bands: obstacles in the sky light lit by the sky they see themselves, with the
-  // bounces between them (render/obstacle_sky_light.h), or by the open sky (the paper's
-  // one bounce, the default until its cost, 1.4–1.7 times the frame, is measured idle).
-  bool obstacles_own_sky = false;
+  // bounces between them (render/obstacle_sky_light.h; within 3 % of the path tracer in
+  // street canyons), or by the open sky ("open_sky", the paper's one bounce: shaded
+  // walls across narrow streets 1.2–12 times too bright, for about 1/1.4 of the frame).
+  bool obstacles_own_sky = true;
 };
 
 // Where a mesh object came from and what loading did to it (`skylit info`).
