@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "skylit/geometry/primitives.h"
 #include "skylit/media/fog_sun_integral.h"
@@ -26,13 +27,22 @@ Scene street_scene() {
 }
 
 TEST(FogRender, VanishingFogGivesTheImageWithoutFog) {
-  Scene clear = street_scene();
-  Scene fog = street_scene();
-  fog.fog = FogSettings{};
-  fog.fog->density_at_ground = 1e-9;
-  const XyzImage a = Renderer(clear).render(), b = Renderer(fog).render();
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) EXPECT_NEAR(b.at(x, y).y, a.at(x, y).y, 1e-4 * a.at(x, y).y) << x << "," << y;
+  // The paper's single scattering to 1e-4. With multiple scattering a surface in the
+  // fog is lit by the field's own quadrature of the sky (fog_surface_light.h) instead of
+  // the sky's irradiance table; the two agree to about 6e-4 (FogSurfaceLight's checks
+  // against a dense quadrature), which bounds what a vanishing fog may change.
+  const Scene clear = street_scene();
+  const XyzImage a = Renderer(clear).render();
+  for (const auto& [multiple, tolerance] : {std::pair{false, 1e-4}, std::pair{true, 1e-3}}) {
+    Scene fog = street_scene();
+    fog.fog = FogSettings{};
+    fog.fog->density_at_ground = 1e-9;
+    fog.fog->multiple_scattering = multiple;
+    const XyzImage b = Renderer(fog).render();
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x)
+        EXPECT_NEAR(b.at(x, y).y, a.at(x, y).y, tolerance * a.at(x, y).y) << x << "," << y << " multiple " << multiple;
+  }
 }
 
 TEST(FogRender, FogAddsNoMoreLightThanItsSources) {
@@ -43,6 +53,7 @@ TEST(FogRender, FogAddsNoMoreLightThanItsSources) {
   // scatters is no longer bounded by the unattenuated J/4π.)
   Scene scene = street_scene();
   scene.fog = FogSettings{};
+  scene.fog->multiple_scattering = false;
   const Atmosphere atmosphere(scene.atmosphere);
   const Vec3 to_sun = direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
   const SkyModel sky(atmosphere, to_sun, 1.6);
