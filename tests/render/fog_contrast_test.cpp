@@ -88,41 +88,41 @@ TEST(FogContrast, BlackTargetsFollowKoschmiedersLawInTheRenderedImage) {
   ASSERT_GT(spike, 0.3);  // 15 µm droplets: about 0.45
   ASSERT_LT(spike, 0.6);
   for (const bool multiple : {false, true})
-  for (const double aod : {0.01, 0.3}) {
-    AtmosphereSettings settings;
-    settings.aerosol.aod_550 = aod;
-    const Atmosphere atmosphere(settings);
-    const SkyModel sky(atmosphere, direction_from_altitude_azimuth(kSunAltitudeDeg, 180), kCameraHeightM);
-    for (const double visibility : {100.0, 1000.0, 5000.0}) {
-      const auto scene = dir.write("scene.json", koschmieder_scene(visibility, aod, multiple));
-      const auto image = dir.path() / "out.pfm";
-      const auto run =
-          testing::run_skylit("render " + testing::quoted(scene) + " --quiet -o " + testing::quoted(image));
-      ASSERT_EQ(run.exit_status, 0) << run.output;
-      const XyzImage xyz = read_image(image);
-      // The two rows just above the horizon: 0.03° and 0.09° up.
-      auto luminance_at = [&](int x) { return 0.5 * (xyz.at(x, kHeight / 2 - 1).y + xyz.at(x, kHeight / 2 - 2).y); };
-      for (int i = 0; i < kTargets; ++i) {
-        const int c = target_column(i);
-        const double target = luminance_at(c);
-        // The fog horizon just beside the target, on both sides.
-        const double horizon = 0.5 * (luminance_at(c - kHalfWidthPx - 4) + luminance_at(c + kHalfWidthPx + 4));
-        const double d = kDistancesInV[i] * visibility;
-        const double extinction = multiple ? 1 - spike : 1;
-        const double expected = -std::exp(-extinction * 3.912 * kDistancesInV[i]) * air_transmittance(sky, d);
-        // The air's factor is exact only where its light is a small part of the fog's:
-        // its in-scattered light has its own colour and angles. Where the air over d is
-        // itself thick (V = 5 km at AOD 0.3: transmittance 0.28) the contrast departs
-        // from the product by about a fifth either way (single scattering −0.0066
-        // against −0.0055, within the bound; multiple −0.042 against −0.032), so the
-        // δ-M law is checked where the air lets through more than 0.6.
-        if (multiple && air_transmittance(sky, d) < 0.6) continue;
-        EXPECT_NEAR((target - horizon) / horizon, expected, 0.005)
-            << "AOD " << aod << ", V = " << visibility << " m, target at " << kDistancesInV[i] << " V"
-            << (multiple ? ", multiple scattering" : ", single scattering");
+    for (const double aod : {0.01, 0.3}) {
+      AtmosphereSettings settings;
+      settings.aerosol.aod_550 = aod;
+      const Atmosphere atmosphere(settings);
+      const SkyModel sky(atmosphere, direction_from_altitude_azimuth(kSunAltitudeDeg, 180), kCameraHeightM);
+      for (const double visibility : {100.0, 1000.0, 5000.0}) {
+        const auto scene = dir.write("scene.json", koschmieder_scene(visibility, aod, multiple));
+        const auto image = dir.path() / "out.pfm";
+        const auto run =
+            testing::run_skylit("render " + testing::quoted(scene) + " --quiet -o " + testing::quoted(image));
+        ASSERT_EQ(run.exit_status, 0) << run.output;
+        const XyzImage xyz = read_image(image);
+        // The two rows just above the horizon: 0.03° and 0.09° up.
+        auto luminance_at = [&](int x) { return 0.5 * (xyz.at(x, kHeight / 2 - 1).y + xyz.at(x, kHeight / 2 - 2).y); };
+        for (int i = 0; i < kTargets; ++i) {
+          const int c = target_column(i);
+          const double target = luminance_at(c);
+          // The fog horizon just beside the target, on both sides.
+          const double horizon = 0.5 * (luminance_at(c - kHalfWidthPx - 4) + luminance_at(c + kHalfWidthPx + 4));
+          const double d = kDistancesInV[i] * visibility;
+          const double extinction = multiple ? 1 - spike : 1;
+          const double expected = -std::exp(-extinction * 3.912 * kDistancesInV[i]) * air_transmittance(sky, d);
+          // The air's factor is exact only where its light is a small part of the fog's:
+          // its in-scattered light has its own colour and angles. Where the air over d is
+          // itself thick (V = 5 km at AOD 0.3: transmittance 0.28) the contrast departs
+          // from the product by about a fifth either way (single scattering −0.0066
+          // against −0.0055, within the bound; multiple −0.042 against −0.032), so the
+          // δ-M law is checked where the air lets through more than 0.6.
+          if (multiple && air_transmittance(sky, d) < 0.6) continue;
+          EXPECT_NEAR((target - horizon) / horizon, expected, 0.005)
+              << "AOD " << aod << ", V = " << visibility << " m, target at " << kDistancesInV[i] << " V"
+              << (multiple ? ", multiple scattering" : ", single scattering");
+        }
       }
     }
-  }
 }
 
 }  // namespace
