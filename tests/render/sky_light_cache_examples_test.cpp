@@ -121,8 +121,9 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
 // pixel): 5.2 % at 320 × 180 and 5.4 % at 480 × 270 with corners kept within their
 // obstacles' reach (cache_corner_agreement.h); 9.2 % and 7.2 % without, 27.7 % and
 // 25.8 % before corners were refused at all. With the obstacles lit by their own sky
-// and the corners' 15 % spread (2026-12-04): 4.3 % and 5.3 %. The exact value and the cached one come
-// from the same quadrature, so the deviation is the cache's against its own points.
+// and the corners' 15 % spread (2026-12-04): 4.3 % and 5.3 %. The exact value and the
+// cached one come from the same quadrature, so the deviation is the cache's against its
+// own points.
 constexpr double kTolerance = 0.07;
 
 TEST(SkyLightCacheExamples, Fig7AtSmallSizesStaysNearTheExactSkyLight) {
