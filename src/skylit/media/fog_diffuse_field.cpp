@@ -21,6 +21,8 @@
 #include <map>
 #include <utility>
 
+#include <tbb/parallel_for.h>
+
 #include "skylit/core/angles.h"
 #include "skylit/core/banded_matrix.h"
 
@@ -387,6 +389,11 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
       }
     }
   }
+  sun_side_.assign(scattered_.size(), Spectrum(0.0f));
+  if (sun) {
+    sun_cosine_ = mu0;
+    tabulate_sun_side(chi_scaled, mu0);
+  }
   // The largest light scattered toward any direction: bounded by Σ_m |S_m| per bin.
   for (size_t at = 0; at < scattered_.size(); at += kModes)
     for (int b = 0; b < kSpectralBins; ++b) {
@@ -394,6 +401,93 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
       for (int m = 0; m < kModes; ++m) bound += std::abs(scattered_[at + static_cast<size_t>(m)][b]);
       largest_[static_cast<size_t>(b)] = std::max(largest_[static_cast<size_t>(b)], bound);
     }
+}
+
+void FogDiffuseField::tabulate_sun_side(const std::vector<double>& chi_scaled, double mu0) {
+  // The directions of travel within kSunSideDeg of the sunbeam's, s (upward cosine −μ0,
+  // azimuth 0): Gauss–Legendre in the angle from s (p' has a forward lobe tens of degrees
+  // wide, which even steps in the cosine would leave to one or two rings), even around.
+  constexpr int kRings = 12, kAround = 24, kAzimuths = 2 * kModes;
+  const double cone_angle = radians(kSunSideDeg);
+  std::vector<double> ring_x, ring_w;
+  gauss_legendre_unit(kRings, ring_x, ring_w);
+  const Vec3 s{std::sqrt(std::max(0.0, 1 - mu0 * mu0)), 0.0, -mu0};
+  const Vec3 side = normalize(std::abs(s.z) < 0.99 ? cross(s, Vec3{0, 0, 1}) : cross(s, Vec3{1, 0, 0}));
+  const Vec3 third = cross(s, side);
+  struct Node {
+    Vec3 dir;
+    double weight;  // solid angle (sr)
+  };
+  std::vector<Node> cone;
+  for (int r = 0; r < kRings; ++r) {
+    const double angle = cone_angle * ring_x[static_cast<size_t>(r)];
+    const double c = std::cos(angle), sn = std::sin(angle);
+    for (int a = 0; a < kAround; ++a) {
+      const double psi = 2 * kPi * (a + 0.5) / kAround;
+      cone.push_back({c * s + sn * (std::cos(psi) * side + std::sin(psi) * third),
+                      cone_angle * ring_w[static_cast<size_t>(r)] * sn * 2 * kPi / kAround});
+    }
+  }
+  // p'(cos Θ) from its moments.
+  auto phase = [&](double c) {
+    double p0 = 1, p1 = c, sum = chi_scaled[0] + 3 * chi_scaled[1] * c;
+    for (int l = 2; l < static_cast<int>(chi_scaled.size()); ++l) {
+      const double p2 = ((2 * l - 1) * c * p1 - (l - 1) * p0) / l;
+      sum += (2 * l + 1) * chi_scaled[static_cast<size_t>(l)] * p2;
+      p0 = p1;
+      p1 = p2;
+    }
+    return sum / (4 * kPi);
+  };
+  // The weights (1 − f)·p'(ω_n·u)·dω_n toward each output direction and azimuth. (The
+  // spike's f·D stays: it returns the light travelling along the view itself, which no
+  // building blocks while the view passes; where the view ends on a surface, the
+  // surface's own light replaces it, FogMedium::Along::forward_gain.)
+  const size_t directions = direction_.size(), nodes = cone.size();
+  std::vector<float> weight(directions * kAzimuths * nodes);
+  for (size_t d = 0; d < directions; ++d)
+    for (int i = 0; i < kAzimuths; ++i) {
+      const double phi = (i + 0.5) * kPi / kAzimuths, up = direction_[d];
+      const double horizontal = std::sqrt(std::max(0.0, 1 - up * up));
+      const Vec3 u{horizontal * std::cos(phi), horizontal * std::sin(phi), up};
+      const size_t at = d * kAzimuths + static_cast<size_t>(i);
+      for (size_t n = 0; n < nodes; ++n)
+        weight[at * nodes + n] = static_cast<float>((1 - f_) * phase(dot(cone[n].dir, u)) * cone[n].weight);
+    }
+  tbb::parallel_for(size_t{0}, column_.size(), [&](size_t k) {
+    std::vector<Spectrum> arriving(nodes), sampled(kAzimuths);
+    std::array<Spectrum, kModes> terms;
+    // The diffuse radiance travelling along each node of the cone at this level.
+    for (size_t n = 0; n < nodes; ++n) {
+      const Vec3& w = cone[n].dir;
+      radiance_terms_at_level(k, w.z, terms);
+      const AzimuthTerms cosines = azimuth_terms(std::atan2(w.y, w.x));
+      Spectrum v(0.0f);
+      for (int m = 0; m < kModes; ++m) v += terms[static_cast<size_t>(m)] * cosines[static_cast<size_t>(m)];
+      for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);
+      arriving[n] = v;
+    }
+    for (size_t d = 0; d < directions; ++d) {
+      for (int i = 0; i < kAzimuths; ++i) {
+        const size_t at = d * kAzimuths + static_cast<size_t>(i);
+        Spectrum sum(0.0f);
+        for (size_t n = 0; n < nodes; ++n) sum += arriving[n] * weight[at * nodes + n];
+        sampled[static_cast<size_t>(i)] = sum;
+      }
+      // Its Fourier terms in azimuth (midpoint rule over the half circle).
+      Spectrum* out = &sun_side_[(k * directions + d) * kModes];
+      for (int i = 0; i < kAzimuths; ++i) {
+        const AzimuthTerms cosines = azimuth_terms((i + 0.5) * kPi / kAzimuths);
+        for (int m = 0; m < kModes; ++m)
+          out[m] += sampled[static_cast<size_t>(i)] *
+                    static_cast<float>((m == 0 ? 1.0 : 2.0) * cosines[static_cast<size_t>(m)] / kAzimuths);
+      }
+    }
+  });
+}
+
+void FogDiffuseField::sun_side_terms(double z, double up, std::array<Spectrum, kModes>& terms) const {
+  lookup_terms(sun_side_, z, up, terms);
 }
 
 FogDiffuseField::LevelWeight FogDiffuseField::level_at(double z) const {

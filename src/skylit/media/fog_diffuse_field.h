@@ -81,6 +81,16 @@ class FogDiffuseField {
   Spectrum radiance_without_sun(double z_m, double up, double relative_azimuth) const;
   // The diffuse irradiance on a horizontal plane facing up (downward flux) at z.
   Spectrum downward_irradiance(double z_m) const;
+  // The part of `scattered` brought by the diffuse light that travels within kSunSideDeg
+  // of the sunbeam's direction, i.e. arrives from the sun's half of the sky: (1 − f)·∫p'L
+  // over those directions (the spike's f·D excepted: it returns the light along the view
+  // itself, which nothing blocks while the view goes on). A point in a building's shadow
+  // has the building between it and the sun, and the building hides that light too
+  // (docs/fog.md, "The field in the buildings' shadows"). Fourier terms as
+  // scattered_terms; zero without the sun.
+  void sun_side_terms(double z_m, double up, std::array<Spectrum, kModes>& terms) const;
+  static constexpr double kSunSideDeg = 90.0;
+  double sun_cosine() const { return sun_cosine_; }
   // A bound on the largest value `scattered` takes (Σ_m |S_m|), per bin.
   const std::array<double, kSpectralBins>& largest() const { return largest_; }
 
@@ -113,10 +123,14 @@ class FogDiffuseField {
 
   FogLayer layer_;
   double omega_, f_;
+  double sun_cosine_ = 0;                                     // μ0 when the sun lights the layer, else 0
   std::vector<double> column_;                                // column from the top (m) at each level, increasing
   std::vector<double> direction_;                             // output directions' upward cosines, increasing
   std::vector<Spectrum> scattered_, radiance_, without_sun_;  // [level][direction][term]
   std::vector<Spectrum> downward_;                            // [level]
+  std::vector<Spectrum> sun_side_;                            // [level][direction][term]
+  // Fills sun_side_ from the solved radiance_; chi_scaled: the moments of p'.
+  void tabulate_sun_side(const std::vector<double>& chi_scaled, double sun_cosine);
   std::array<double, kSpectralBins> largest_{};
 };
 

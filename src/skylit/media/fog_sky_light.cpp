@@ -303,4 +303,37 @@ int FogSkyLight::in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, doub
   return FogDiffuseField::kModes;
 }
 
+int FogSkyLight::sun_side_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end,
+                                Spectrum* terms) const {
+  if (!has_sun_side()) return 0;
+  std::array<Spectrum, FogDiffuseField::kModes> field_terms;
+  integrate(
+      viewpoint, dir, s_begin, s_end, FogDiffuseField::kModes,
+      [&](double z, double up, Spectrum* j) {
+        diffuse_->sun_side_terms(z, up, field_terms);
+        std::copy(field_terms.begin(), field_terms.end(), j);
+      },
+      terms, nullptr);
+  return FogDiffuseField::kModes;
+}
+
+Spectrum FogSkyLight::sun_side_in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin,
+                                            double s_end) const {
+  Spectrum out(0.0f);
+  if (!has_sun_side()) return out;
+  const FogDiffuseField::AzimuthTerms weights = FogDiffuseField::azimuth_terms(relative_azimuth(dir));
+  std::array<Spectrum, FogDiffuseField::kModes> terms;
+  integrate(
+      viewpoint, dir, s_begin, s_end, 1,
+      [&](double z, double up, Spectrum* j) {
+        diffuse_->sun_side_terms(z, up, terms);
+        Spectrum sum(0.0f);
+        for (size_t m = 0; m < terms.size(); ++m) sum += terms[m] * weights[m];
+        for (int b = 0; b < kSpectralBins; ++b) sum[b] = std::max(sum[b], 0.0f);
+        *j = sum;
+      },
+      &out, nullptr);
+  return out;
+}
+
 }  // namespace skylit

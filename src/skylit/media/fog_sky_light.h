@@ -78,6 +78,14 @@ class FogSkyLight {
   // the paper's mode, whose source has no azimuth; at most kMaxTerms).
   int in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, Spectrum* terms) const;
   static constexpr int kMaxTerms = FogDiffuseField::kModes;
+  // With multiple scattering and the sun up: the part of the in-scattered light above
+  // that arrives from the sun's half of the sky (FogDiffuseField::sun_side_terms), which
+  // a point in a building's shadow does not receive. Its terms as in_scattered_terms;
+  // returns 0 (nothing written) when there is none.
+  int sun_side_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, Spectrum* terms) const;
+  // The same weighed for the ray's azimuth (≥ 0).
+  Spectrum sun_side_in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end) const;
+  bool has_sun_side() const { return diffuse_.has_value() && diffuse_->sun_cosine() > 0; }
   // The azimuth (radians) of a direction from the sun's, about the vertical.
   double relative_azimuth(const Vec3& dir) const;
 

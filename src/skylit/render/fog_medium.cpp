@@ -36,6 +36,8 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
   std::array<Spectrum, FogSkyLight::kMaxTerms> probe;
   terms_ = sky_light_.in_scattered_terms(camera_, Vec3{1, 0, 0}, 0.0, 0.0, probe.data());
   row_inscatter_.assign(row_depth_.size() * static_cast<size_t>(terms_), Spectrum(0.0f));
+  const bool sun_side = sky_light_.has_sun_side() && to_sun_.z > 0;
+  if (sun_side) row_sun_side_.assign(row_inscatter_.size(), Spectrum(0.0f));
   const Spectrum& open = sky_light_.unattenuated();
   for (int i = 0; i < kShareAltitudes; ++i) {
     const double z = layer_.bottom_m() + (layer_.top_m() - layer_.bottom_m()) * i / (kShareAltitudes - 1);
@@ -50,8 +52,9 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
     const RaySpan inside = layer_.clip(camera_.z, dir.z, 0.0, kLongestRayM);
     const double length = inside.empty() ? 0.0 : inside.hi;
     row_length_[static_cast<size_t>(row)] = length;
-    std::array<Spectrum, FogSkyLight::kMaxTerms> sum, piece;
+    std::array<Spectrum, FogSkyLight::kMaxTerms> sum, piece, sun_side_sum;
     sum.fill(Spectrum(0.0f));
+    sun_side_sum.fill(Spectrum(0.0f));
     double previous = 0.0;
     for (int k = 0; k <= kDistanceSlices; ++k) {
       const double u = static_cast<double>(k) / kDistanceSlices;
@@ -59,10 +62,16 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       if (d > previous) {
         sky_light_.in_scattered_terms(camera_, dir, previous, d, piece.data());
         for (int t = 0; t < terms_; ++t) sum[static_cast<size_t>(t)] += piece[static_cast<size_t>(t)];
+        if (sun_side) {
+          sky_light_.sun_side_terms(camera_, dir, previous, d, piece.data());
+          for (int t = 0; t < terms_; ++t) sun_side_sum[static_cast<size_t>(t)] += piece[static_cast<size_t>(t)];
+        }
       }
       previous = d;
       const size_t at = static_cast<size_t>(row * (kDistanceSlices + 1) + k);
       std::copy_n(sum.begin(), terms_, row_inscatter_.begin() + static_cast<std::ptrdiff_t>(at) * terms_);
+      if (sun_side)
+        std::copy_n(sun_side_sum.begin(), terms_, row_sun_side_.begin() + static_cast<std::ptrdiff_t>(at) * terms_);
       row_depth_[at] = clearest_depth(dir.z, d);
     }
   });
@@ -72,8 +81,8 @@ double FogMedium::clearest_depth(double z_v, double distance) const {
   return min_sigma_ * layer_.column(camera_.z, z_v, 0.0, distance);
 }
 
-Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double relative_azimuth, double distance,
-                                              double depth) const {
+Spectrum FogMedium::from_camera(const std::vector<Spectrum>& table, double elevation, double relative_azimuth,
+                                double distance, double depth) const {
   std::array<float, FogSkyLight::kMaxTerms> weights{};
   weights[0] = 1.0f;
   if (terms_ > 1) {
@@ -89,7 +98,7 @@ Spectrum FogMedium::sky_inscatter_from_camera(double elevation, double relative_
     const size_t first = static_cast<size_t>(r * (kDistanceSlices + 1));
     // Slice k's light toward the ray's azimuth: its terms weighed by cos(mφ).
     auto slice = [&](int k) {
-      const Spectrum* t = &row_inscatter_[(first + static_cast<size_t>(k)) * static_cast<size_t>(terms_)];
+      const Spectrum* t = &table[(first + static_cast<size_t>(k)) * static_cast<size_t>(terms_)];
       Spectrum v(0.0f);
       for (int m = 0; m < terms_; ++m) v += t[m] * weights[static_cast<size_t>(m)];
       return v;
@@ -155,8 +164,10 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   }
   Spectrum in_scattered(0.0f);
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
+  std::vector<Interval> lit_parts;
   if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
-    for (const Interval& lit : shadows_.sunlit_intervals(ray, inside.lo, std::min(inside.hi, 1e12))) {
+    lit_parts = shadows_.sunlit_intervals(ray, inside.lo, std::min(inside.hi, 1e12));
+    for (const Interval& lit : lit_parts) {
       in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end, sun_above_fog_,
                                         sky_light_.sun_depth_scale());
     }
@@ -169,7 +180,40 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
                                               std::min(distance, kLongestRayM), min_sigma_ * column);
   else
     in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
+  if (!row_sun_side_.empty() && !sun_above_fog_.is_black()) {
+    in_scattered -= sun_side_light_in_shadow(ray, inside.lo, std::min(inside.hi, 1e12), lit_parts);
+    for (int b = 0; b < kSpectralBins; ++b) in_scattered[b] = std::max(in_scattered[b], 0.0f);
+  }
   out.near.in_scattered = Radiance(in_scattered);
+  return out;
+}
+
+Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, double begin, double end,
+                                             const std::vector<Interval>& lit) const {
+  Spectrum out(0.0f);
+  const bool from_camera_table = ray.origin == camera_;
+  const double elevation = std::asin(std::clamp(ray.direction.z, -1.0, 1.0));
+  const double azimuth = sky_light_.relative_azimuth(ray.direction);
+  auto cumulative = [&](double s) {
+    const double d = std::min(s, kLongestRayM);
+    return from_camera(row_sun_side_, elevation, azimuth, d,
+                       min_sigma_ * layer_.column(ray.origin.z, ray.direction.z, 0.0, d));
+  };
+  auto add = [&](double a, double b) {
+    if (!(b > a)) return;
+    if (from_camera_table)
+      out += cumulative(b) - cumulative(a);
+    else
+      out += sky_light_.sun_side_in_scattered(ray.origin, ray.direction, a, b);
+  };
+  // The shadowed parts: between the sunlit intervals (sorted, disjoint).
+  double from = begin;
+  for (const Interval& l : lit) {
+    add(from, std::min(l.begin, end));
+    from = std::max(from, l.end);
+  }
+  add(from, end);
+  for (int b = 0; b < kSpectralBins; ++b) out[b] = std::max(out[b], 0.0f);
   return out;
 }
 

@@ -92,12 +92,22 @@ class FogMedium {
   // `depth`: the clearest bin's optical depth along the ray up to `distance`, by which
   // the slices are read (the rows around the ray, a fraction of a degree away, are
   // taken to have the same).
-  Spectrum sky_inscatter_from_camera(double elevation, double relative_azimuth, double distance, double depth) const;
+  Spectrum sky_inscatter_from_camera(double elevation, double relative_azimuth, double distance, double depth) const {
+    return from_camera(row_inscatter_, elevation, relative_azimuth, distance, depth);
+  }
+  // A table of the same layout read at a ray's elevation, azimuth and distance (≥ 0).
+  Spectrum from_camera(const std::vector<Spectrum>& table, double elevation, double relative_azimuth, double distance,
+                       double depth) const;
+  // With multiple scattering: the field's light from the sun's side of the sky
+  // (FogSkyLight::sun_side_terms), which the buildings hide from the points in their
+  // shadow, over the ray's parts in shadow: the complement of `lit` in [begin, end].
+  Spectrum sun_side_light_in_shadow(const Ray& ray, double begin, double end, const std::vector<Interval>& lit) const;
   double min_sigma_;  // σ of the clearest bin (m⁻¹ per unit density)
   Vec3 camera_;
   std::vector<double> row_length_;
   int terms_ = 1;                        // azimuthal terms of the sky light's source (FogSkyLight)
   std::vector<Spectrum> row_inscatter_;  // [row][slice][term]
+  std::vector<Spectrum> row_sun_side_;   // the same for FogSkyLight::sun_side_terms (empty without)
   std::vector<double> row_depth_;        // [row][slice]: the clearest bin's optical depth from the camera
   // The clearest bin's optical depth from the camera along a ray of vertical cosine z_v.
   double clearest_depth(double z_v, double distance) const;
