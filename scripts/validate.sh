@@ -7,7 +7,7 @@
 #   scripts/validate.sh [WIDTH HEIGHT SAMPLES [EXAMPLE ...]]   (default 320 180 256, all)
 # An example may be a variant NAME@PATH=VALUE (e.g. fig7@materials.walls=aluminium):
 # the scene with that --set, compared in NAME's regions. The default list has Fig. 7's
-# aluminium tower too.
+# aluminium tower and the fog figures in the paper's single scattering too.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh >/dev/null
@@ -19,6 +19,8 @@ names=("$@")
 if [ ${#names[@]} -eq 0 ]; then
   for f in validation/regions/*.json; do names+=("$(basename "$f" .json)"); done
   names+=("fig7@materials.walls=aluminium")
+  # The fog figures in the paper's single scattering, for the brackets of docs/validation.md.
+  for f in fig8a fig8b fig8c fig8d fig9; do names+=("$f@fog.multiple_scattering=false"); done
 fi
 skylit=build/bin/skylit
 out=out/validation

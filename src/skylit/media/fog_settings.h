@@ -42,11 +42,10 @@ struct FogSettings {
   double asymmetry = 0.85;            // g, for henyey_greenstein
   // Light scattered more than once (docs/fog.md, "Multiple scattering"): a 1-D
   // discrete-ordinates solution for the layer with its Fourier terms in azimuth about
-  // the sun, lighting the fog and the surfaces in it. Off by default until the forward
-  // spike's point-spread function is in the image and the figures and the Koschmieder
-  // test are redone with it (docs/fog.md, "Multiple scattering"); the paper's single
-  // scattering (§5: the sun's beams and the sky light of Eq. 13, isotropic) otherwise.
-  bool multiple_scattering = false;
+  // the sun, lighting the fog and the surfaces in it. false: the paper's single
+  // scattering (§5: the sun's beams and the sky light of Eq. 13, isotropic), grey and too
+  // dark in thick fog, kept as the paper's mode.
+  bool multiple_scattering = true;
 };
 
 // Koschmieder's constant: −ln 0.02, the visual range at a 2 % contrast threshold.

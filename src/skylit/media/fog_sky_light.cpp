@@ -147,7 +147,7 @@ Spectrum FogSkyLight::source(double z, double up, double relative_azimuth) const
 }
 
 void FogSkyLight::integrate(const Vec3& viewpoint, const Vec3& dir_in, double s_begin, double s_end, int terms,
-                            const TermSource& source_terms, Spectrum* out, int* steps) const {
+                            int paced, const TermSource& source_terms, Spectrum* out, int* steps) const {
   if (steps) *steps = 0;
   for (int t = 0; t < terms; ++t) out[t] = Spectrum(0.0f);
   const double albedo = fog_.single_scattering_albedo();
@@ -177,10 +177,10 @@ void FogSkyLight::integrate(const Vec3& viewpoint, const Vec3& dir_in, double s_
   // With several terms (the Fourier terms of the multiple-scattering source), `mean` is
   // that of Σ_t |term|, which bounds the light of any azimuth, and so paces the steps.
   struct Sample {
-    std::array<std::array<double, kSpectralBins>, kMaxTerms> f{};
+    std::array<std::array<double, kSpectralBins>, kMaxIntegrated> f{};
     double mean = 0, tau_mean = 0;
   };
-  std::array<Spectrum, kMaxTerms> j;
+  std::array<Spectrum, kMaxIntegrated> j;
   auto sample = [&](double s, double column_from_a) {
     Sample out;
     const double z = std::clamp(z_p + w * s, fog_.bottom_m(), fog_.top_m());
@@ -193,7 +193,7 @@ void FogSkyLight::integrate(const Vec3& viewpoint, const Vec3& dir_in, double s_
       for (int t = 0; t < terms; ++t) {
         const double v = along * j[static_cast<size_t>(t)][i];
         out.f[static_cast<size_t>(t)][static_cast<size_t>(i)] = v;
-        out.mean += std::abs(v);
+        if (t < paced) out.mean += std::abs(v);
       }
     }
     out.mean /= kSpectralBins;
@@ -201,7 +201,7 @@ void FogSkyLight::integrate(const Vec3& viewpoint, const Vec3& dir_in, double s_
     return out;
   };
 
-  std::array<std::array<double, kSpectralBins>, kMaxTerms> sum{};
+  std::array<std::array<double, kSpectralBins>, kMaxIntegrated> sum{};
   double s = a;
   Sample f0 = sample(a, 0.0);
   int n = 0;
@@ -236,7 +236,7 @@ void FogSkyLight::integrate(const Vec3& viewpoint, const Vec3& dir_in, double s_
       const double rest =
           j_max_[i] * std::exp(-std::min(sg * column, 800.0)) * -std::expm1(-std::min(sg * rest_column, 800.0));
       double summed = 0;
-      for (size_t t = 0; t < static_cast<size_t>(terms); ++t) summed += std::abs(sum[t][i]);
+      for (size_t t = 0; t < static_cast<size_t>(paced); ++t) summed += std::abs(sum[t][i]);
       done = rest <= kTailTolerance * summed;
     }
     if (done) break;
@@ -264,15 +264,15 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir, doubl
   Spectrum out;
   if (!diffuse_) {
     integrate(
-        viewpoint, dir, s_begin, s_end, 1, [this](double z, double up, Spectrum* j) { *j = source(z, up, 0.0); }, &out,
-        steps);
+        viewpoint, dir, s_begin, s_end, 1, 1, [this](double z, double up, Spectrum* j) { *j = source(z, up, 0.0); },
+        &out, steps);
     return out;
   }
   // A straight ray keeps its azimuth: the source's terms are weighed once for it.
   const FogDiffuseField::AzimuthTerms weights = FogDiffuseField::azimuth_terms(relative_azimuth(dir));
   std::array<Spectrum, FogDiffuseField::kModes> terms;
   integrate(
-      viewpoint, dir, s_begin, s_end, 1,
+      viewpoint, dir, s_begin, s_end, 1, 1,
       [&](double z, double up, Spectrum* j) {
         diffuse_->scattered_terms(z, up, terms);
         Spectrum sum(0.0f);
@@ -285,36 +285,32 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir, doubl
 }
 
 int FogSkyLight::in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end,
-                                    Spectrum* terms) const {
+                                    Spectrum* terms, Spectrum* sun_side) const {
   if (!diffuse_) {
     integrate(
-        viewpoint, dir, s_begin, s_end, 1, [this](double z, double up, Spectrum* j) { *j = source(z, up, 0.0); }, terms,
-        nullptr);
+        viewpoint, dir, s_begin, s_end, 1, 1, [this](double z, double up, Spectrum* j) { *j = source(z, up, 0.0); },
+        terms, nullptr);
     return 1;
   }
-  std::array<Spectrum, FogDiffuseField::kModes> field_terms;
+  constexpr int kModes = FogDiffuseField::kModes;
+  // The sun-side terms ride along in the same steps, which the source's terms alone pace
+  // (so that the source's integral is the same with or without them).
+  const bool both = sun_side != nullptr && has_sun_side();
+  std::array<Spectrum, kModes> field_terms;
+  std::array<Spectrum, 2 * kModes> out;
   integrate(
-      viewpoint, dir, s_begin, s_end, FogDiffuseField::kModes,
+      viewpoint, dir, s_begin, s_end, both ? 2 * kModes : kModes, kModes,
       [&](double z, double up, Spectrum* j) {
         diffuse_->scattered_terms(z, up, field_terms);
         std::copy(field_terms.begin(), field_terms.end(), j);
-      },
-      terms, nullptr);
-  return FogDiffuseField::kModes;
-}
-
-int FogSkyLight::sun_side_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end,
-                                Spectrum* terms) const {
-  if (!has_sun_side()) return 0;
-  std::array<Spectrum, FogDiffuseField::kModes> field_terms;
-  integrate(
-      viewpoint, dir, s_begin, s_end, FogDiffuseField::kModes,
-      [&](double z, double up, Spectrum* j) {
+        if (!both) return;
         diffuse_->sun_side_terms(z, up, field_terms);
-        std::copy(field_terms.begin(), field_terms.end(), j);
+        std::copy(field_terms.begin(), field_terms.end(), j + kModes);
       },
-      terms, nullptr);
-  return FogDiffuseField::kModes;
+      out.data(), nullptr);
+  std::copy_n(out.begin(), kModes, terms);
+  if (both) std::copy_n(out.begin() + kModes, kModes, sun_side);
+  return kModes;
 }
 
 Spectrum FogSkyLight::sun_side_in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin,
@@ -324,7 +320,7 @@ Spectrum FogSkyLight::sun_side_in_scattered(const Vec3& viewpoint, const Vec3& d
   const FogDiffuseField::AzimuthTerms weights = FogDiffuseField::azimuth_terms(relative_azimuth(dir));
   std::array<Spectrum, FogDiffuseField::kModes> terms;
   integrate(
-      viewpoint, dir, s_begin, s_end, 1,
+      viewpoint, dir, s_begin, s_end, 1, 1,
       [&](double z, double up, Spectrum* j) {
         diffuse_->sun_side_terms(z, up, terms);
         Spectrum sum(0.0f);

@@ -76,14 +76,14 @@ class FogSkyLight {
   // along a ray depend on its altitude and elevation only: in_scattered toward any azimuth
   // φ is then max(0, Σ_m cos(mφ)·term_m). Writes and returns the number of terms (1 in
   // the paper's mode, whose source has no azimuth; at most kMaxTerms).
-  int in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, Spectrum* terms) const;
+  int in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, Spectrum* terms,
+                         Spectrum* sun_side = nullptr) const;
   static constexpr int kMaxTerms = FogDiffuseField::kModes;
-  // With multiple scattering and the sun up: the part of the in-scattered light above
-  // that arrives from the sun's half of the sky (FogDiffuseField::sun_side_terms), which
-  // a point in a building's shadow does not receive. Its terms as in_scattered_terms;
-  // returns 0 (nothing written) when there is none.
-  int sun_side_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, Spectrum* terms) const;
-  // The same weighed for the ray's azimuth (≥ 0).
+  // With multiple scattering and the sun up, `sun_side` (when not null, kMaxTerms
+  // entries) receives the same for the part of the source that arrives from the sun's
+  // half of the sky (FogDiffuseField::sun_side_terms), which a point in a building's
+  // shadow does not receive; has_sun_side() says whether there is one.
+  // That part's in-scattered light along a ray, weighed for its azimuth (≥ 0).
   Spectrum sun_side_in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end) const;
   bool has_sun_side() const { return diffuse_.has_value() && diffuse_->sun_cosine() > 0; }
   // The azimuth (radians) of a direction from the sun's, about the vertical.
@@ -103,8 +103,10 @@ class FogSkyLight {
  private:
   using TermSource = std::function<void(double z_m, double up, Spectrum* terms)>;
   // ∫ τ (ω0) source_t e^(−t) ds for each of `terms` source terms, Eq. 14's pitch.
-  void integrate(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, int terms,
+  // The first `paced` of them pace the steps and end the integration.
+  void integrate(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, int terms, int paced,
                  const TermSource& source_terms, Spectrum* out, int* steps) const;
+  static constexpr int kMaxIntegrated = 2 * kMaxTerms;
 
   FogLayer fog_;
   Vec3 sun_horizontal_{1, 0, 0}, sun_horizontal_side_{0, 1, 0};  // the sun's azimuth and 90° from it

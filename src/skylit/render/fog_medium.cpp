@@ -52,7 +52,7 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
     const RaySpan inside = layer_.clip(camera_.z, dir.z, 0.0, kLongestRayM);
     const double length = inside.empty() ? 0.0 : inside.hi;
     row_length_[static_cast<size_t>(row)] = length;
-    std::array<Spectrum, FogSkyLight::kMaxTerms> sum, piece, sun_side_sum;
+    std::array<Spectrum, FogSkyLight::kMaxTerms> sum, piece, sun_side_sum, sun_side_piece;
     sum.fill(Spectrum(0.0f));
     sun_side_sum.fill(Spectrum(0.0f));
     double previous = 0.0;
@@ -60,12 +60,12 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       const double u = static_cast<double>(k) / kDistanceSlices;
       const double d = length * u * u;
       if (d > previous) {
-        sky_light_.in_scattered_terms(camera_, dir, previous, d, piece.data());
+        sky_light_.in_scattered_terms(camera_, dir, previous, d, piece.data(),
+                                      sun_side ? sun_side_piece.data() : nullptr);
         for (int t = 0; t < terms_; ++t) sum[static_cast<size_t>(t)] += piece[static_cast<size_t>(t)];
-        if (sun_side) {
-          sky_light_.sun_side_terms(camera_, dir, previous, d, piece.data());
-          for (int t = 0; t < terms_; ++t) sun_side_sum[static_cast<size_t>(t)] += piece[static_cast<size_t>(t)];
-        }
+        if (sun_side)
+          for (int t = 0; t < terms_; ++t)
+            sun_side_sum[static_cast<size_t>(t)] += sun_side_piece[static_cast<size_t>(t)];
       }
       previous = d;
       const size_t at = static_cast<size_t>(row * (kDistanceSlices + 1) + k);
@@ -81,8 +81,8 @@ double FogMedium::clearest_depth(double z_v, double distance) const {
   return min_sigma_ * layer_.column(camera_.z, z_v, 0.0, distance);
 }
 
-Spectrum FogMedium::from_camera(const std::vector<Spectrum>& table, double elevation, double relative_azimuth,
-                                double distance, double depth) const {
+void FogMedium::from_camera(double elevation, double relative_azimuth, double distance, double depth, Spectrum* sky,
+                            Spectrum* sun_side) const {
   std::array<float, FogSkyLight::kMaxTerms> weights{};
   weights[0] = 1.0f;
   if (terms_ > 1) {
@@ -93,18 +93,16 @@ Spectrum FogMedium::from_camera(const std::vector<Spectrum>& table, double eleva
   const double f = (std::copysign(std::sqrt(std::abs(u)), u) + 1.0) * 0.5 * (kElevationRows - 1);
   const int row = std::min(static_cast<int>(f), kElevationRows - 2);
   const float w = static_cast<float>(f - row);
-  auto at_row = [&](int r) {
+  // On row r: the slice at or before `distance` and the weight of the next one.
+  struct Slices {
+    size_t first;
+    float next;
+  };
+  auto slices_on = [&](int r) -> Slices {
     const double length = row_length_[static_cast<size_t>(r)];
     const size_t first = static_cast<size_t>(r * (kDistanceSlices + 1));
-    // Slice k's light toward the ray's azimuth: its terms weighed by cos(mφ).
-    auto slice = [&](int k) {
-      const Spectrum* t = &table[(first + static_cast<size_t>(k)) * static_cast<size_t>(terms_)];
-      Spectrum v(0.0f);
-      for (int m = 0; m < terms_; ++m) v += t[m] * weights[static_cast<size_t>(m)];
-      return v;
-    };
-    if (length <= 0) return slice(0);
-    if (distance >= length) return slice(kDistanceSlices);
+    if (length <= 0) return {first, 0.0f};
+    if (distance >= length) return {first + kDistanceSlices, 0.0f};
     const double s = std::sqrt(distance / length) * kDistanceSlices;
     const int k = std::min(static_cast<int>(s), kDistanceSlices - 1);
     // Linear in the fog's transmittance e^−τ between the two slices around it: the
@@ -122,12 +120,26 @@ Spectrum FogMedium::from_camera(const std::vector<Spectrum>& table, double eleva
       const double d1 = length * (k + 1) * (k + 1) / (kDistanceSlices * kDistanceSlices);
       t = (distance - d0) / (d1 - d0);
     }
-    const auto w = static_cast<float>(std::clamp(t, 0.0, 1.0));
-    return slice(k) * (1 - w) + slice(k + 1) * w;
+    return {first + static_cast<size_t>(k), static_cast<float>(std::clamp(t, 0.0, 1.0))};
   };
-  Spectrum v = at_row(row) * (1 - w) + at_row(row + 1) * w;
-  for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);  // a truncated series may dip below 0
-  return v;
+  const Slices lower = slices_on(row), upper = slices_on(row + 1);
+  // The four slices around the ray, their terms weighed by cos(mφ) (both tables alike).
+  auto read = [&](const std::vector<Spectrum>& table) {
+    Spectrum v(0.0f);
+    auto add = [&](size_t slice, float weight) {
+      if (weight == 0.0f) return;
+      const Spectrum* t = &table[slice * static_cast<size_t>(terms_)];
+      for (int m = 0; m < terms_; ++m) v += t[m] * (weights[static_cast<size_t>(m)] * weight);
+    };
+    add(lower.first, (1 - w) * (1 - lower.next));
+    add(lower.first + 1, (1 - w) * lower.next);
+    add(upper.first, w * (1 - upper.next));
+    add(upper.first + 1, w * upper.next);
+    for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);  // a truncated series may dip below 0
+    return v;
+  };
+  if (sky) *sky = read(row_inscatter_);
+  if (sun_side) *sun_side = read(row_sun_side_);
 }
 
 FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
@@ -174,30 +186,40 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   }
   // Sky light, everywhere along it (the paper's assumption: no shadows for sky light);
   // from the camera's table when the ray starts there.
-  if (ray.origin == camera_)
-    in_scattered += sky_inscatter_from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)),
-                                              sky_light_.relative_azimuth(ray.direction),
-                                              std::min(distance, kLongestRayM), min_sigma_ * column);
-  else
+  // With multiple scattering, less the field's light from the sun's side over the parts
+  // in the buildings' shadows (read at the ray's end with the sky light).
+  const bool sun_side = !row_sun_side_.empty() && !sun_above_fog_.is_black();
+  Spectrum sun_side_at_end(0.0f);
+  if (ray.origin == camera_) {
+    Spectrum sky;
+    from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)), sky_light_.relative_azimuth(ray.direction),
+                std::min(distance, kLongestRayM), min_sigma_ * column, &sky, sun_side ? &sun_side_at_end : nullptr);
+    in_scattered += sky;
+  } else {
     in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
-  if (!row_sun_side_.empty() && !sun_above_fog_.is_black()) {
-    in_scattered -= sun_side_light_in_shadow(ray, inside.lo, std::min(inside.hi, 1e12), lit_parts);
+  }
+  if (sun_side) {
+    in_scattered -= sun_side_light_in_shadow(ray, inside.lo, std::min(inside.hi, 1e12), lit_parts, sun_side_at_end);
     for (int b = 0; b < kSpectralBins; ++b) in_scattered[b] = std::max(in_scattered[b], 0.0f);
   }
   out.near.in_scattered = Radiance(in_scattered);
   return out;
 }
 
-Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, double begin, double end,
-                                             const std::vector<Interval>& lit) const {
+Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, double begin, double end, const std::vector<Interval>& lit,
+                                             const Spectrum& at_end) const {
   Spectrum out(0.0f);
   const bool from_camera_table = ray.origin == camera_;
   const double elevation = std::asin(std::clamp(ray.direction.z, -1.0, 1.0));
   const double azimuth = sky_light_.relative_azimuth(ray.direction);
+  // The camera's table gathered from the camera to s: nothing before the layer, and at
+  // the ray's end what was read there with the sky light.
   auto cumulative = [&](double s) {
-    const double d = std::min(s, kLongestRayM);
-    return from_camera(row_sun_side_, elevation, azimuth, d,
-                       min_sigma_ * layer_.column(ray.origin.z, ray.direction.z, 0.0, d));
+    if (s <= begin) return Spectrum(0.0f);
+    if (s >= end) return at_end;
+    Spectrum v;
+    from_camera(elevation, azimuth, s, min_sigma_ * layer_.column(ray.origin.z, ray.direction.z, 0.0, s), nullptr, &v);
+    return v;
   };
   auto add = [&](double a, double b) {
     if (!(b > a)) return;

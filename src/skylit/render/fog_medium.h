@@ -92,16 +92,15 @@ class FogMedium {
   // `depth`: the clearest bin's optical depth along the ray up to `distance`, by which
   // the slices are read (the rows around the ray, a fraction of a degree away, are
   // taken to have the same).
-  Spectrum sky_inscatter_from_camera(double elevation, double relative_azimuth, double distance, double depth) const {
-    return from_camera(row_inscatter_, elevation, relative_azimuth, distance, depth);
-  }
-  // A table of the same layout read at a ray's elevation, azimuth and distance (≥ 0).
-  Spectrum from_camera(const std::vector<Spectrum>& table, double elevation, double relative_azimuth, double distance,
-                       double depth) const;
+  // Into `sky` (and `sun_side`, the same for row_sun_side_), each when not null.
+  void from_camera(double elevation, double relative_azimuth, double distance, double depth, Spectrum* sky,
+                   Spectrum* sun_side) const;
   // With multiple scattering: the field's light from the sun's side of the sky
   // (FogSkyLight::sun_side_terms), which the buildings hide from the points in their
   // shadow, over the ray's parts in shadow: the complement of `lit` in [begin, end].
-  Spectrum sun_side_light_in_shadow(const Ray& ray, double begin, double end, const std::vector<Interval>& lit) const;
+  // From the camera, `at_end` is its table read at `end`.
+  Spectrum sun_side_light_in_shadow(const Ray& ray, double begin, double end, const std::vector<Interval>& lit,
+                                    const Spectrum& at_end) const;
   double min_sigma_;  // σ of the clearest bin (m⁻¹ per unit density)
   Vec3 camera_;
   std::vector<double> row_length_;
