@@ -268,13 +268,19 @@ Spectrum FogSkyLight::in_scattered(const Vec3& viewpoint, const Vec3& dir, doubl
         &out, steps);
     return out;
   }
-  // A straight ray keeps its azimuth: the source's terms are weighed once for it.
+  return weighed_for_azimuth(viewpoint, dir, s_begin, s_end, &FogDiffuseField::scattered_terms, steps);
+}
+
+Spectrum FogSkyLight::weighed_for_azimuth(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end,
+                                          FieldTerms field_terms, int* steps) const {
+  // A straight ray keeps its azimuth: the terms are weighed once for it.
   const FogDiffuseField::AzimuthTerms weights = FogDiffuseField::azimuth_terms(relative_azimuth(dir));
   std::array<Spectrum, FogDiffuseField::kModes> terms;
+  Spectrum out(0.0f);
   integrate(
       viewpoint, dir, s_begin, s_end, 1, 1,
       [&](double z, double up, Spectrum* j) {
-        diffuse_->scattered_terms(z, up, terms);
+        ((*diffuse_).*field_terms)(z, up, terms);
         Spectrum sum(0.0f);
         for (size_t m = 0; m < terms.size(); ++m) sum += terms[m] * weights[m];
         for (int b = 0; b < kSpectralBins; ++b) sum[b] = std::max(sum[b], 0.0f);
@@ -315,21 +321,8 @@ int FogSkyLight::in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, doub
 
 Spectrum FogSkyLight::sun_side_in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin,
                                             double s_end) const {
-  Spectrum out(0.0f);
-  if (!has_sun_side()) return out;
-  const FogDiffuseField::AzimuthTerms weights = FogDiffuseField::azimuth_terms(relative_azimuth(dir));
-  std::array<Spectrum, FogDiffuseField::kModes> terms;
-  integrate(
-      viewpoint, dir, s_begin, s_end, 1, 1,
-      [&](double z, double up, Spectrum* j) {
-        diffuse_->sun_side_terms(z, up, terms);
-        Spectrum sum(0.0f);
-        for (size_t m = 0; m < terms.size(); ++m) sum += terms[m] * weights[m];
-        for (int b = 0; b < kSpectralBins; ++b) sum[b] = std::max(sum[b], 0.0f);
-        *j = sum;
-      },
-      &out, nullptr);
-  return out;
+  if (!has_sun_side()) return Spectrum(0.0f);
+  return weighed_for_azimuth(viewpoint, dir, s_begin, s_end, &FogDiffuseField::sun_side_terms, nullptr);
 }
 
 }  // namespace skylit

@@ -103,6 +103,11 @@ class FogSkyLight {
  private:
   using TermSource = std::function<void(double z_m, double up, Spectrum* terms)>;
   // ∫ τ (ω0) source_t e^(−t) ds for each of `terms` source terms, Eq. 14's pitch.
+  // The integral of a field's table (scattered_terms or sun_side_terms) weighed for the
+  // ray's azimuth, ≥ 0 (with multiple scattering only).
+  using FieldTerms = void (FogDiffuseField::*)(double, double, std::array<Spectrum, FogDiffuseField::kModes>&) const;
+  Spectrum weighed_for_azimuth(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end,
+                               FieldTerms field_terms, int* steps) const;
   // The first `paced` of them pace the steps and end the integration.
   void integrate(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, int terms, int paced,
                  const TermSource& source_terms, Spectrum* out, int* steps) const;
