@@ -389,9 +389,9 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
       }
     }
   }
-  sun_side_.assign(scattered_.size(), Spectrum(0.0f));
   if (sun) {
     sun_cosine_ = mu0;
+    sun_side_.assign(scattered_.size(), Spectrum(0.0f));
     tabulate_sun_side(chi_scaled, mu0);
   }
   // The largest light scattered toward any direction: bounded by Σ_m |S_m| per bin.
@@ -487,6 +487,10 @@ void FogDiffuseField::tabulate_sun_side(const std::vector<double>& chi_scaled, d
 }
 
 void FogDiffuseField::sun_side_terms(double z, double up, std::array<Spectrum, kModes>& terms) const {
+  if (sun_side_.empty()) {
+    terms.fill(Spectrum(0.0f));
+    return;
+  }
   lookup_terms(sun_side_, z, up, terms);
 }
 

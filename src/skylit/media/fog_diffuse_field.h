@@ -128,7 +128,7 @@ class FogDiffuseField {
   std::vector<double> direction_;                             // output directions' upward cosines, increasing
   std::vector<Spectrum> scattered_, radiance_, without_sun_;  // [level][direction][term]
   std::vector<Spectrum> downward_;                            // [level]
-  std::vector<Spectrum> sun_side_;                            // [level][direction][term]
+  std::vector<Spectrum> sun_side_;                            // [level][direction][term]; empty without sun
   // Fills sun_side_ from the solved radiance_; chi_scaled: the moments of p'.
   void tabulate_sun_side(const std::vector<double>& chi_scaled, double sun_cosine);
   std::array<double, kSpectralBins> largest_{};

@@ -75,15 +75,15 @@ class FogSkyLight {
   // The same integral split into the source's azimuthal terms (FogDiffuseField), which
   // along a ray depend on its altitude and elevation only: in_scattered toward any azimuth
   // φ is then max(0, Σ_m cos(mφ)·term_m). Writes and returns the number of terms (1 in
-  // the paper's mode, whose source has no azimuth; at most kMaxTerms).
+  // the paper's mode, whose source has no azimuth; at most kMaxTerms). With multiple
+  // scattering and the sun up, `sun_side` (when not null, kMaxTerms entries) receives the
+  // same for the part of the source that arrives from the sun's half of the sky
+  // (FogDiffuseField::sun_side_terms), which a point in a building's shadow does not
+  // receive; has_sun_side() says whether there is one.
   int in_scattered_terms(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, Spectrum* terms,
                          Spectrum* sun_side = nullptr) const;
   static constexpr int kMaxTerms = FogDiffuseField::kModes;
-  // With multiple scattering and the sun up, `sun_side` (when not null, kMaxTerms
-  // entries) receives the same for the part of the source that arrives from the sun's
-  // half of the sky (FogDiffuseField::sun_side_terms), which a point in a building's
-  // shadow does not receive; has_sun_side() says whether there is one.
-  // That part's in-scattered light along a ray, weighed for its azimuth (≥ 0).
+  // That sun-side part's in-scattered light along a ray, weighed for its azimuth (≥ 0).
   Spectrum sun_side_in_scattered(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end) const;
   bool has_sun_side() const { return diffuse_.has_value() && diffuse_->sun_cosine() > 0; }
   // The azimuth (radians) of a direction from the sun's, about the vertical.
@@ -102,13 +102,13 @@ class FogSkyLight {
 
  private:
   using TermSource = std::function<void(double z_m, double up, Spectrum* terms)>;
-  // ∫ τ (ω0) source_t e^(−t) ds for each of `terms` source terms, Eq. 14's pitch.
   // The integral of a field's table (scattered_terms or sun_side_terms) weighed for the
   // ray's azimuth, ≥ 0 (with multiple scattering only).
   using FieldTerms = void (FogDiffuseField::*)(double, double, std::array<Spectrum, FogDiffuseField::kModes>&) const;
   Spectrum weighed_for_azimuth(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end,
                                FieldTerms field_terms, int* steps) const;
-  // The first `paced` of them pace the steps and end the integration.
+  // ∫ τ (ω0) source_t e^(−t) ds for each of `terms` source terms, Eq. 14's pitch; the
+  // first `paced` of them pace the steps and end the integration.
   void integrate(const Vec3& viewpoint, const Vec3& dir, double s_begin, double s_end, int terms, int paced,
                  const TermSource& source_terms, Spectrum* out, int* steps) const;
   static constexpr int kMaxIntegrated = 2 * kMaxTerms;

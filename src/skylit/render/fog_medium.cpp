@@ -6,6 +6,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "skylit/geometry/intervals.h"
 #include "skylit/media/fog_sun_integral.h"
 
 namespace skylit {
@@ -36,7 +37,7 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
   std::array<Spectrum, FogSkyLight::kMaxTerms> probe;
   terms_ = sky_light_.in_scattered_terms(camera_, Vec3{1, 0, 0}, 0.0, 0.0, probe.data());
   row_inscatter_.assign(row_depth_.size() * static_cast<size_t>(terms_), Spectrum(0.0f));
-  const bool sun_side = sky_light_.has_sun_side() && to_sun_.z > 0;
+  const bool sun_side = sky_light_.has_sun_side();
   if (sun_side) row_sun_side_.assign(row_inscatter_.size(), Spectrum(0.0f));
   const Spectrum& open = sky_light_.unattenuated();
   for (int i = 0; i < kShareAltitudes; ++i) {
@@ -199,15 +200,17 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
     in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
   }
   if (sun_side) {
-    in_scattered -= sun_side_light_in_shadow(ray, inside.lo, std::min(inside.hi, 1e12), lit_parts, sun_side_at_end);
+    const double end = std::min(inside.hi, 1e12);
+    complement_of_union(inside.lo, end, 0.0, lit_parts);  // now the parts in shadow
+    in_scattered -= sun_side_light_in_shadow(ray, lit_parts, inside.lo, end, sun_side_at_end);
     for (int b = 0; b < kSpectralBins; ++b) in_scattered[b] = std::max(in_scattered[b], 0.0f);
   }
   out.near.in_scattered = Radiance(in_scattered);
   return out;
 }
 
-Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, double begin, double end, const std::vector<Interval>& lit,
-                                             const Spectrum& at_end) const {
+Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, const std::vector<Interval>& shadowed, double begin,
+                                             double end, const Spectrum& at_end) const {
   Spectrum out(0.0f);
   const bool from_camera_table = ray.origin == camera_;
   const double elevation = std::asin(std::clamp(ray.direction.z, -1.0, 1.0));
@@ -221,20 +224,12 @@ Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, double begin, doubl
     from_camera(elevation, azimuth, s, min_sigma_ * layer_.column(ray.origin.z, ray.direction.z, 0.0, s), nullptr, &v);
     return v;
   };
-  auto add = [&](double a, double b) {
-    if (!(b > a)) return;
+  for (const Interval& part : shadowed) {
     if (from_camera_table)
-      out += cumulative(b) - cumulative(a);
+      out += cumulative(part.end) - cumulative(part.begin);
     else
-      out += sky_light_.sun_side_in_scattered(ray.origin, ray.direction, a, b);
-  };
-  // The shadowed parts: between the sunlit intervals (sorted, disjoint).
-  double from = begin;
-  for (const Interval& l : lit) {
-    add(from, std::min(l.begin, end));
-    from = std::max(from, l.end);
+      out += sky_light_.sun_side_in_scattered(ray.origin, ray.direction, part.begin, part.end);
   }
-  add(from, end);
   for (int b = 0; b < kSpectralBins; ++b) out[b] = std::max(out[b], 0.0f);
   return out;
 }

@@ -92,21 +92,20 @@ class FogMedium {
   // `depth`: the clearest bin's optical depth along the ray up to `distance`, by which
   // the slices are read (the rows around the ray, a fraction of a degree away, are
   // taken to have the same).
-  // Into `sky` (and `sun_side`, the same for row_sun_side_), each when not null.
+  // Into `sky` (and `sun_side`, the same from row_sun_side_), each when not null.
   void from_camera(double elevation, double relative_azimuth, double distance, double depth, Spectrum* sky,
                    Spectrum* sun_side) const;
-  // With multiple scattering: the field's light from the sun's side of the sky
-  // (FogSkyLight::sun_side_terms), which the buildings hide from the points in their
-  // shadow, over the ray's parts in shadow: the complement of `lit` in [begin, end].
-  // From the camera, `at_end` is its table read at `end`.
-  Spectrum sun_side_light_in_shadow(const Ray& ray, double begin, double end, const std::vector<Interval>& lit,
+  // With multiple scattering: the field's light from the sun's side of the sky, which the
+  // buildings hide from the points in their shadow, over the ray's `shadowed` parts of
+  // [begin, end]. From the camera, `at_end` is its table read at `end`.
+  Spectrum sun_side_light_in_shadow(const Ray& ray, const std::vector<Interval>& shadowed, double begin, double end,
                                     const Spectrum& at_end) const;
   double min_sigma_;  // σ of the clearest bin (m⁻¹ per unit density)
   Vec3 camera_;
   std::vector<double> row_length_;
   int terms_ = 1;                        // azimuthal terms of the sky light's source (FogSkyLight)
   std::vector<Spectrum> row_inscatter_;  // [row][slice][term]
-  std::vector<Spectrum> row_sun_side_;   // the same for FogSkyLight::sun_side_terms (empty without)
+  std::vector<Spectrum> row_sun_side_;   // the same for the source's sun-side part (empty without)
   std::vector<double> row_depth_;        // [row][slice]: the clearest bin's optical depth from the camera
   // The clearest bin's optical depth from the camera along a ray of vertical cosine z_v.
   double clearest_depth(double z_v, double distance) const;
