@@ -58,8 +58,9 @@ TEST(FogDiffuseField, MatchesAddingDoublingForAHomogeneousSlab) {
   // reference's cosines within 1 % of the adding–doubling solution with 32 nodes. What
   // is left is the discretisation (8 streams, δ-M, depth levels): 0.3 % worst, measured
   // (at τ = 1, μ = 0.9, reflected); the exponential density (h0 = 20 m) is the same slab
-  // in optical depth and must give the same numbers.
-  for (double tau : {1.0, 8.0}) {
+  // in optical depth and must give the same numbers. τ 400 has the coarser levels deep
+  // inside (fog_diffuse_field.cpp), where the light has diffused.
+  for (double tau : {1.0, 8.0, 400.0}) {
     const testing::AddingDoubling reference(32, tau, 1.0, [](double c) { return henyey_greenstein_phase(c, 0.85); });
     for (double h0 : {std::numeric_limits<double>::infinity(), 20.0}) {
       const FogLayer layer(slab(tau, h0, FogPhase::henyey_greenstein, 0.85));
@@ -93,8 +94,8 @@ TEST(FogDiffuseField, ConservesTheSunsEnergy) {
   // The sun at 30° on a conservative fog over a white ground, no sky: all the sunlight
   // that enters leaves the top again, so the diffuse flux leaving the top equals μ0·E0.
   // The flux is ∫ L μ dω from the output directions (the trapezoidal rule in μ² steps);
-  // within 1 %.
-  for (double tau : {1.0, 10.0, 30.0}) {
+  // within 1 %. τ 3000 has the coarser levels deep inside (fog_diffuse_field.cpp).
+  for (double tau : {1.0, 10.0, 30.0, 3000.0}) {
     const FogLayer layer(slab(tau, 10.0, FogPhase::droplet_fit, 0));
     FogLayerLighting light = uniform_sky(0.0, 1.0);
     light.sun_irradiance = Spectrum(1.0f);

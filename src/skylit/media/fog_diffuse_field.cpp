@@ -4,7 +4,7 @@
 // every bin shares the levels, placed in c: thin near both faces (where the sky's and the
 // ground's light enters and the field changes over a fraction of an optical depth) and
 // growing by a tenth of the distance to the nearer face inside, where the field is
-// diffuse and smooth.
+// diffuse and smooth (by half of it deeper than kFineDepth, in absurdly thick fog).
 //
 // Characteristics. Along a stream of cosine μ across a layer of scaled depth Δ, with the
 // source S (per unit scaled extinction) linear in depth between its values S_in at the
@@ -30,6 +30,7 @@ namespace skylit {
 namespace {
 
 constexpr int kN = FogDiffuseField::kStreams;
+constexpr double kFineDepth = 32.0;  // scaled optical depth from the nearer face (see the levels)
 constexpr int kStreamsAll = 2 * kN;
 
 // Gauss–Legendre nodes and weights on [0, 1] (weights sum to 1).
@@ -176,7 +177,14 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
     double at = 0;
     while (at < depth) {
       const double nearer = std::min(at, depth - at);
-      double step = std::min({first + 0.1 * nearer, widest, depth / 16});
+      // Deeper than kFineDepth from both faces (only in fogs thicker than any real one)
+      // the light has diffused: the field is linear in depth without absorption (which
+      // the characteristics integrate exactly) and decays exponentially with it, so the
+      // steps grow by half the distance instead of a tenth, without the cap `widest`.
+      // A fog of density 1e250 then has 230 levels, not 640 (300 MB of tables and
+      // seconds to build); fogs up to twice kFineDepth are not affected.
+      const bool deep = nearer > kFineDepth;
+      double step = std::min({first + (deep ? 0.5 : 0.1) * nearer, deep ? depth : widest, depth / 16});
       if (depth - at < 1.3 * step) step = depth - at;
       at += step;
       column_.push_back(at >= depth ? total : at / scale);
