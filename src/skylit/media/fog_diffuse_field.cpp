@@ -562,10 +562,20 @@ void FogDiffuseField::radiance_terms_at_level(size_t level, double up, std::arra
 
 Spectrum FogDiffuseField::lookup(const std::vector<Spectrum>& table, double z, double up,
                                  const AzimuthTerms& weights) const {
-  std::array<Spectrum, kModes> terms;
-  lookup_terms(table, z, up, terms);
   Spectrum v(0.0f);
-  for (int m = 0; m < kModes; ++m) v += terms[static_cast<size_t>(m)] * weights[static_cast<size_t>(m)];
+  if (std::isnan(z) || std::isnan(up)) return v;
+  const LevelWeight level = level_at(z);
+  const DirectionWeight direction = direction_at(up);
+  // The four table entries around (z, up), each one level's terms toward one direction.
+  auto add = [&](size_t level_index, size_t direction_index, float weight) {
+    if (weight == 0.0f) return;
+    add_azimuth_weighted(v, &table[(level_index * direction_.size() + direction_index) * kModes], kModes,
+                         weights.data(), weight);
+  };
+  add(level.below, direction.below, (1 - level.above) * (1 - direction.above));
+  add(level.below, direction.below + 1, (1 - level.above) * direction.above);
+  add(level.below + 1, direction.below, level.above * (1 - direction.above));
+  add(level.below + 1, direction.below + 1, level.above * direction.above);
   for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);  // a truncated series may dip below 0
   return v;
 }

@@ -50,6 +50,17 @@ struct FogLayerLighting {
 // direction, where droplets' diffraction peaks are a fraction of a degree wide.
 std::vector<double> phase_legendre_moments(const std::function<double(double)>& phase, int count);
 
+// sum += weight · Σ_m azimuth_weights[m]·terms[m] over `count` terms, bin by bin: the
+// inner loop of every look-up of Fourier terms toward one azimuth, which the renderer
+// runs for each view ray (one pass, no temporary spectra).
+inline void add_azimuth_weighted(Spectrum& sum, const Spectrum* terms, int count, const float* azimuth_weights,
+                                 float weight) {
+  for (int m = 0; m < count; ++m) {
+    const float c = azimuth_weights[m] * weight;
+    for (int b = 0; b < kSpectralBins; ++b) sum[b] += c * terms[m][b];
+  }
+}
+
 class FogDiffuseField {
  public:
   static constexpr int kStreams = 8;                   // per hemisphere (N)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <tbb/parallel_for.h>
 
@@ -76,24 +77,33 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       row_depth_[at] = clearest_depth(dir.z, d);
     }
   });
+  row_slice_gain_.assign(row_depth_.size(), 0.0);
+  for (size_t at = 0; at + 1 < row_depth_.size(); ++at)
+    row_slice_gain_[at] = std::expm1(-(row_depth_[at + 1] - row_depth_[at]));
 }
 
 double FogMedium::clearest_depth(double z_v, double distance) const {
   return min_sigma_ * layer_.column(camera_.z, z_v, 0.0, distance);
 }
 
-void FogMedium::from_camera(double elevation, double relative_azimuth, double distance, double depth, Spectrum* sky,
-                            Spectrum* sun_side) const {
-  std::array<float, FogSkyLight::kMaxTerms> weights{};
-  weights[0] = 1.0f;
+FogMedium::CameraRay FogMedium::camera_ray(const Vec3& direction) const {
+  CameraRay out{};
+  out.azimuth_weights[0] = 1.0f;
   if (terms_ > 1) {
-    const FogDiffuseField::AzimuthTerms cosines = FogDiffuseField::azimuth_terms(relative_azimuth);
-    std::copy_n(cosines.begin(), terms_, weights.begin());
+    const FogDiffuseField::AzimuthTerms cosines =
+        FogDiffuseField::azimuth_terms(sky_light_.relative_azimuth(direction));
+    std::copy_n(cosines.begin(), terms_, out.azimuth_weights.begin());
   }
+  const double elevation = std::asin(std::clamp(direction.z, -1.0, 1.0));
   const double u = std::clamp(elevation / (0.5 * kPi), -1.0, 1.0);
   const double f = (std::copysign(std::sqrt(std::abs(u)), u) + 1.0) * 0.5 * (kElevationRows - 1);
-  const int row = std::min(static_cast<int>(f), kElevationRows - 2);
-  const float w = static_cast<float>(f - row);
+  out.row = std::min(static_cast<int>(f), kElevationRows - 2);
+  out.upper = static_cast<float>(f - out.row);
+  return out;
+}
+
+Spectrum FogMedium::from_camera(const CameraRay& ray, double distance, double depth,
+                                const std::vector<Spectrum>& table) const {
   // On row r: the slice at or before `distance` and the weight of the next one.
   struct Slices {
     size_t first;
@@ -106,41 +116,37 @@ void FogMedium::from_camera(double elevation, double relative_azimuth, double di
     if (distance >= length) return {first + kDistanceSlices, 0.0f};
     const double s = std::sqrt(distance / length) * kDistanceSlices;
     const int k = std::min(static_cast<int>(s), kDistanceSlices - 1);
+    const size_t at = first + static_cast<size_t>(k);
     // Linear in the fog's transmittance e^−τ between the two slices around it: the
     // light gathered grows as 1 − e^−τ, exactly so where the fog and its sources are
     // uniform (a level ray), so a dense fog that saturates within the first slices is
     // read right. Linear in distance where the slices hold no fog.
-    const double depth0 = row_depth_[first + static_cast<size_t>(k)];
-    const double depth1 = row_depth_[first + static_cast<size_t>(k) + 1];
+    const double depth0 = row_depth_[at];
     double t;
-    if (depth1 - depth0 > 1e-9) {
-      const double within = std::clamp(depth, depth0, depth1);
-      t = std::expm1(-(within - depth0)) / std::expm1(-(depth1 - depth0));
+    if (row_depth_[at + 1] - depth0 > 1e-9) {
+      const double within = std::clamp(depth, depth0, row_depth_[at + 1]);
+      t = std::expm1(-(within - depth0)) / row_slice_gain_[at];
     } else {
       const double d0 = length * k * k / (kDistanceSlices * kDistanceSlices);
       const double d1 = length * (k + 1) * (k + 1) / (kDistanceSlices * kDistanceSlices);
       t = (distance - d0) / (d1 - d0);
     }
-    return {first + static_cast<size_t>(k), static_cast<float>(std::clamp(t, 0.0, 1.0))};
+    return {at, static_cast<float>(std::clamp(t, 0.0, 1.0))};
   };
-  const Slices lower = slices_on(row), upper = slices_on(row + 1);
-  // The four slices around the ray, their terms weighed by cos(mφ) (both tables alike).
-  auto read = [&](const std::vector<Spectrum>& table) {
-    Spectrum v(0.0f);
-    auto add = [&](size_t slice, float weight) {
-      if (weight == 0.0f) return;
-      const Spectrum* t = &table[slice * static_cast<size_t>(terms_)];
-      for (int m = 0; m < terms_; ++m) v += t[m] * (weights[static_cast<size_t>(m)] * weight);
-    };
-    add(lower.first, (1 - w) * (1 - lower.next));
-    add(lower.first + 1, (1 - w) * lower.next);
-    add(upper.first, w * (1 - upper.next));
-    add(upper.first + 1, w * upper.next);
-    for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);  // a truncated series may dip below 0
-    return v;
+  const Slices lower = slices_on(ray.row), upper = slices_on(ray.row + 1);
+  // The four slices around the ray, their terms weighed by cos(mφ), summed bin by bin in
+  // one pass over each slice's terms (this is read for every view ray).
+  Spectrum v(0.0f);
+  auto add = [&](size_t slice, float weight) {
+    if (weight == 0.0f) return;
+    add_azimuth_weighted(v, &table[slice * static_cast<size_t>(terms_)], terms_, ray.azimuth_weights.data(), weight);
   };
-  if (sky) *sky = read(row_inscatter_);
-  if (sun_side) *sun_side = read(row_sun_side_);
+  add(lower.first, (1 - ray.upper) * (1 - lower.next));
+  add(lower.first + 1, (1 - ray.upper) * lower.next);
+  add(upper.first, ray.upper * (1 - upper.next));
+  add(upper.first + 1, ray.upper * upper.next);
+  for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);  // a truncated series may dip below 0
+  return v;
 }
 
 FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
@@ -188,44 +194,37 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
   // Sky light, everywhere along it (the paper's assumption: no shadows for sky light);
   // from the camera's table when the ray starts there.
   // With multiple scattering, less the field's light from the sun's side over the parts
-  // in the buildings' shadows (read at the ray's end with the sky light).
-  const bool sun_side = !row_sun_side_.empty() && !sun_above_fog_.is_black();
-  Spectrum sun_side_at_end(0.0f);
+  // in the buildings' shadows (nothing to read for a ray in sunlight throughout).
+  std::optional<CameraRay> camera;
   if (ray.origin == camera_) {
-    Spectrum sky;
-    from_camera(std::asin(std::clamp(ray.direction.z, -1.0, 1.0)), sky_light_.relative_azimuth(ray.direction),
-                std::min(distance, kLongestRayM), min_sigma_ * column, &sky, sun_side ? &sun_side_at_end : nullptr);
-    in_scattered += sky;
+    camera = camera_ray(ray.direction);
+    in_scattered += from_camera(*camera, std::min(distance, kLongestRayM), min_sigma_ * column, row_inscatter_);
   } else {
     in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
   }
-  if (sun_side) {
+  if (!row_sun_side_.empty() && !sun_above_fog_.is_black()) {
     const double end = std::min(inside.hi, 1e12);
     complement_of_union(inside.lo, end, 0.0, lit_parts);  // now the parts in shadow
-    in_scattered -= sun_side_light_in_shadow(ray, lit_parts, inside.lo, end, sun_side_at_end);
-    for (int b = 0; b < kSpectralBins; ++b) in_scattered[b] = std::max(in_scattered[b], 0.0f);
+    if (!lit_parts.empty()) {
+      in_scattered -= sun_side_light_in_shadow(ray, lit_parts, inside.lo, end, camera ? &*camera : nullptr);
+      for (int b = 0; b < kSpectralBins; ++b) in_scattered[b] = std::max(in_scattered[b], 0.0f);
+    }
   }
   out.near.in_scattered = Radiance(in_scattered);
   return out;
 }
 
 Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, const std::vector<Interval>& shadowed, double begin,
-                                             double end, const Spectrum& at_end) const {
+                                             double end, const CameraRay* camera) const {
   Spectrum out(0.0f);
-  const bool from_camera_table = ray.origin == camera_;
-  const double elevation = std::asin(std::clamp(ray.direction.z, -1.0, 1.0));
-  const double azimuth = sky_light_.relative_azimuth(ray.direction);
-  // The camera's table gathered from the camera to s: nothing before the layer, and at
-  // the ray's end what was read there with the sky light.
+  // The camera's table gathered from the camera to s: nothing before the layer.
   auto cumulative = [&](double s) {
     if (s <= begin) return Spectrum(0.0f);
-    if (s >= end) return at_end;
-    Spectrum v;
-    from_camera(elevation, azimuth, s, min_sigma_ * layer_.column(ray.origin.z, ray.direction.z, 0.0, s), nullptr, &v);
-    return v;
+    const double to = std::min({s, end, kLongestRayM});
+    return from_camera(*camera, to, min_sigma_ * layer_.column(ray.origin.z, ray.direction.z, 0.0, to), row_sun_side_);
   };
   for (const Interval& part : shadowed) {
-    if (from_camera_table)
+    if (camera)
       out += cumulative(part.end) - cumulative(part.begin);
     else
       out += sky_light_.sun_side_in_scattered(ray.origin, ray.direction, part.begin, part.end);

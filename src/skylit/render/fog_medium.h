@@ -5,6 +5,7 @@
 // — and how it dims the sun and the sky light that reach a surface inside it.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -89,17 +90,24 @@ class FogMedium {
   static constexpr int kShareAltitudes = 129;
   std::vector<Spectrum> sky_share_;
   static double row_elevation(int row);  // radians, crowded toward the horizontal
-  // `depth`: the clearest bin's optical depth along the ray up to `distance`, by which
-  // the slices are read (the rows around the ray, a fraction of a degree away, are
-  // taken to have the same).
-  // Into `sky` (and `sun_side`, the same from row_sun_side_), each when not null.
-  void from_camera(double elevation, double relative_azimuth, double distance, double depth, Spectrum* sky,
-                   Spectrum* sun_side) const;
+  // A camera ray's place in the tables, the same all along it: its two elevation rows
+  // and the weight of the upper one, and cos(mφ) of its relative azimuth φ per term.
+  struct CameraRay {
+    int row;
+    float upper;
+    std::array<float, FogSkyLight::kMaxTerms> azimuth_weights;
+  };
+  CameraRay camera_ray(const Vec3& direction) const;
+  // What a table (row_inscatter_ or row_sun_side_) gathered along the ray up to
+  // `distance`; `depth` is the clearest bin's optical depth there, by which the slices
+  // are read (the rows around the ray, a fraction of a degree away, are taken to have
+  // the same).
+  Spectrum from_camera(const CameraRay& ray, double distance, double depth, const std::vector<Spectrum>& table) const;
   // With multiple scattering: the field's light from the sun's side of the sky, which the
   // buildings hide from the points in their shadow, over the ray's `shadowed` parts of
-  // [begin, end]. From the camera, `at_end` is its table read at `end`.
+  // [begin, end]; from the camera's table when `camera` is given.
   Spectrum sun_side_light_in_shadow(const Ray& ray, const std::vector<Interval>& shadowed, double begin, double end,
-                                    const Spectrum& at_end) const;
+                                    const CameraRay* camera) const;
   double min_sigma_;  // σ of the clearest bin (m⁻¹ per unit density)
   Vec3 camera_;
   std::vector<double> row_length_;
@@ -107,6 +115,7 @@ class FogMedium {
   std::vector<Spectrum> row_inscatter_;  // [row][slice][term]
   std::vector<Spectrum> row_sun_side_;   // the same for the source's sun-side part (empty without)
   std::vector<double> row_depth_;        // [row][slice]: the clearest bin's optical depth from the camera
+  std::vector<double> row_slice_gain_;   // [row][slice]: e^(−Δτ) − 1 over the clearest bin's Δτ to the next
   // The clearest bin's optical depth from the camera along a ray of vertical cosine z_v.
   double clearest_depth(double z_v, double distance) const;
 };
