@@ -152,13 +152,21 @@ TEST(FogLayer, ExtinctionFollowsEq9) {
 }
 
 TEST(FogLayer, TransmittanceIsBeerLambertPerBin) {
-  FogSettings s;
-  s.wavelength_exponent = 1.3;
-  const FogLayer layer(s);
-  const Spectrum t = layer.transmittance(25.0), opaque = layer.transmittance(kOpaqueColumnM);
-  for (int i = 0; i < kSpectralBins; ++i) {
-    EXPECT_NEAR(t[i], std::exp(-layer.unit_density_extinction_bins()[static_cast<size_t>(i)] * 25.0), 1e-7);
-    EXPECT_EQ(opaque[i], 0.0f);
+  // Coloured fog (b = 1.3) bin by bin, and grey fog (b = 0), which takes one exponential
+  // for all bins, from clear to opaque.
+  for (double b : {1.3, 0.0}) {
+    FogSettings s;
+    s.wavelength_exponent = b;
+    const FogLayer layer(s);
+    ASSERT_EQ(layer.is_grey(), b == 0.0);
+    for (double column : {0.0, 25.0, 300.0, 4000.0}) {
+      const Spectrum t = layer.transmittance(column);
+      for (int i = 0; i < kSpectralBins; ++i)
+        EXPECT_NEAR(t[i], std::exp(-layer.unit_density_extinction_bins()[static_cast<size_t>(i)] * column), 1e-7)
+            << "b " << b << " column " << column << " bin " << i;
+    }
+    const Spectrum opaque = layer.transmittance(kOpaqueColumnM);
+    for (int i = 0; i < kSpectralBins; ++i) EXPECT_EQ(opaque[i], 0.0f) << "b " << b;
   }
 }
 

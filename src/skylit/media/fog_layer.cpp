@@ -170,7 +170,13 @@ double FogLayer::sun_column(double z, double z_sun) const {
 
 Spectrum FogLayer::transmittance(double column_m) const {
   // The optical depth in double (columns reach 1e250), then the vectorised single-
-  // precision exponential: the renderer asks for this for every sample.
+  // precision exponential: the renderer asks for this for every sample, and the sky
+  // light in fog for each direction an obstacle hides. Grey fog (the default, b = 0):
+  // one exponential for all bins, the same value the loop below gives each of them.
+  if (grey_) {
+    const float depth = static_cast<float>(std::min(sigma_bins_[0] * column_m, 1e4));
+    return Spectrum(depth >= 87.0f ? 0.0f : exp_nonpositive(-depth));
+  }
   Spectrum depth;
   for (int i = 0; i < kSpectralBins; ++i)
     depth[i] = static_cast<float>(std::min(sigma_bins_[static_cast<size_t>(i)] * column_m, 1e4));
