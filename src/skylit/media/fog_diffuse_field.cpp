@@ -471,7 +471,7 @@ void FogDiffuseField::tabulate_sun_side(const std::vector<double>& chi_scaled, d
       radiance_terms_at_level(k, w.z, terms);
       const AzimuthTerms cosines = azimuth_terms(std::atan2(w.y, w.x));
       Spectrum v(0.0f);
-      for (int m = 0; m < kModes; ++m) v += terms[static_cast<size_t>(m)] * cosines[static_cast<size_t>(m)];
+      add_azimuth_weighted(v, terms.data(), kModes, cosines.data(), 1.0f);
       for (int b = 0; b < kSpectralBins; ++b) v[b] = std::max(v[b], 0.0f);
       arriving[n] = v;
     }

@@ -282,7 +282,7 @@ Spectrum FogSkyLight::weighed_for_azimuth(const Vec3& viewpoint, const Vec3& dir
       [&](double z, double up, Spectrum* j) {
         ((*diffuse_).*field_terms)(z, up, terms);
         Spectrum sum(0.0f);
-        for (size_t m = 0; m < terms.size(); ++m) sum += terms[m] * weights[m];
+        add_azimuth_weighted(sum, terms.data(), FogDiffuseField::kModes, weights.data(), 1.0f);
         for (int b = 0; b < kSpectralBins; ++b) sum[b] = std::max(sum[b], 0.0f);
         *j = sum;
       },

@@ -85,8 +85,7 @@ Spectrum FogSurfaceLight::irradiance(const Vec3& point, const Vec3& normal) cons
        {irradiance_terms(level.below, j + 1), fj * (1 - level.above)},
        {irradiance_terms(level.below + 1, j), (1 - fj) * level.above},
        {irradiance_terms(level.below + 1, j + 1), fj * level.above}}};
-  for (const auto& [terms, weight] : corners)
-    for (int m = 0; m < kModes; ++m) e += terms[m] * (weight * cosines[static_cast<size_t>(m)]);
+  for (const auto& [terms, weight] : corners) add_azimuth_weighted(e, terms, kModes, cosines.data(), weight);
   for (int b = 0; b < kSpectralBins; ++b) e[b] = std::max(e[b], 0.0f);
   return e;
 }
@@ -96,7 +95,7 @@ Spectrum FogSurfaceLight::incoming_at_level(size_t level, const Vec3& from,
   Terms terms;
   field_.radiance_terms_at_level(level, -from.z, terms);
   Spectrum l(0.0f);
-  for (int m = 0; m < kModes; ++m) l += terms[static_cast<size_t>(m)] * cosines[static_cast<size_t>(m)];
+  add_azimuth_weighted(l, terms.data(), kModes, cosines.data(), 1.0f);
   for (int b = 0; b < kSpectralBins; ++b) l[b] = std::max(l[b], 0.0f);  // a truncated series may dip below 0
   return l;
 }
