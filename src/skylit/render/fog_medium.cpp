@@ -38,7 +38,10 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
   std::array<Spectrum, FogSkyLight::kMaxTerms> probe;
   terms_ = sky_light_.in_scattered_terms(camera_, Vec3{1, 0, 0}, 0.0, 0.0, probe.data());
   row_inscatter_.assign(row_depth_.size() * static_cast<size_t>(terms_), Spectrum(0.0f));
-  const bool sun_side = sky_light_.has_sun_side();
+  // The sun-side light is kept only where a sun lights the fog (none at night, or with
+  // the sun hidden by the earth's air at the layer's top), so a ray needs only ask
+  // whether the table is there.
+  const bool sun_side = sky_light_.has_sun_side() && !sun_above_fog_.is_black();
   if (sun_side) row_sun_side_.assign(row_inscatter_.size(), Spectrum(0.0f));
   const Spectrum& open = sky_light_.unattenuated();
   for (int i = 0; i < kShareAltitudes; ++i) {
@@ -77,9 +80,6 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       row_depth_[at] = clearest_depth(dir.z, d);
     }
   });
-  row_slice_gain_.assign(row_depth_.size(), 0.0);
-  for (size_t at = 0; at + 1 < row_depth_.size(); ++at)
-    row_slice_gain_[at] = std::expm1(-(row_depth_[at + 1] - row_depth_[at]));
 }
 
 double FogMedium::clearest_depth(double z_v, double distance) const {
@@ -121,11 +121,11 @@ Spectrum FogMedium::from_camera(const CameraRay& ray, double distance, double de
     // light gathered grows as 1 − e^−τ, exactly so where the fog and its sources are
     // uniform (a level ray), so a dense fog that saturates within the first slices is
     // read right. Linear in distance where the slices hold no fog.
-    const double depth0 = row_depth_[at];
+    const double depth0 = row_depth_[at], depth1 = row_depth_[at + 1];
     double t;
-    if (row_depth_[at + 1] - depth0 > 1e-9) {
-      const double within = std::clamp(depth, depth0, row_depth_[at + 1]);
-      t = std::expm1(-(within - depth0)) / row_slice_gain_[at];
+    if (depth1 - depth0 > 1e-9) {
+      const double within = std::clamp(depth, depth0, depth1);
+      t = std::expm1(-(within - depth0)) / std::expm1(-(depth1 - depth0));
     } else {
       const double d0 = length * k * k / (kDistanceSlices * kDistanceSlices);
       const double d1 = length * (k + 1) * (k + 1) / (kDistanceSlices * kDistanceSlices);
@@ -182,10 +182,11 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
     }
   }
   Spectrum in_scattered(0.0f);
+  const double inside_end = std::min(inside.hi, 1e12);  // where the light along it ends
   // Sunlight, only where the view ray is in sunlight: the beams between the shadows.
   std::vector<Interval> lit_parts;
   if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
-    lit_parts = shadows_.sunlit_intervals(ray, inside.lo, std::min(inside.hi, 1e12));
+    lit_parts = shadows_.sunlit_intervals(ray, inside.lo, inside_end);
     for (const Interval& lit : lit_parts) {
       in_scattered += fog_sun_inscatter(layer_, ray.origin, ray.direction, to_sun_, lit.begin, lit.end, sun_above_fog_,
                                         sky_light_.sun_depth_scale());
@@ -200,13 +201,12 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
     camera = camera_ray(ray.direction);
     in_scattered += from_camera(*camera, std::min(distance, kLongestRayM), min_sigma_ * column, row_inscatter_);
   } else {
-    in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, std::min(inside.hi, 1e12));
+    in_scattered += sky_light_.in_scattered(ray.origin, ray.direction, inside.lo, inside_end);
   }
-  if (!row_sun_side_.empty() && !sun_above_fog_.is_black()) {
-    const double end = std::min(inside.hi, 1e12);
-    complement_of_union(inside.lo, end, 0.0, lit_parts);  // now the parts in shadow
+  if (!row_sun_side_.empty()) {
+    complement_of_union(inside.lo, inside_end, 0.0, lit_parts);  // now the parts in shadow
     if (!lit_parts.empty()) {
-      in_scattered -= sun_side_light_in_shadow(ray, lit_parts, inside.lo, end, camera ? &*camera : nullptr);
+      in_scattered -= sun_side_light_in_shadow(ray, lit_parts, inside.lo, camera ? &*camera : nullptr);
       for (int b = 0; b < kSpectralBins; ++b) in_scattered[b] = std::max(in_scattered[b], 0.0f);
     }
   }
@@ -215,12 +215,12 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
 }
 
 Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, const std::vector<Interval>& shadowed, double begin,
-                                             double end, const CameraRay* camera) const {
+                                             const CameraRay* camera) const {
   Spectrum out(0.0f);
   // The camera's table gathered from the camera to s: nothing before the layer.
   auto cumulative = [&](double s) {
     if (s <= begin) return Spectrum(0.0f);
-    const double to = std::min({s, end, kLongestRayM});
+    const double to = std::min(s, kLongestRayM);
     return from_camera(*camera, to, min_sigma_ * layer_.column(ray.origin.z, ray.direction.z, 0.0, to), row_sun_side_);
   };
   for (const Interval& part : shadowed) {

@@ -104,9 +104,10 @@ class FogMedium {
   // the same).
   Spectrum from_camera(const CameraRay& ray, double distance, double depth, const std::vector<Spectrum>& table) const;
   // With multiple scattering: the field's light from the sun's side of the sky, which the
-  // buildings hide from the points in their shadow, over the ray's `shadowed` parts of
-  // [begin, end]; from the camera's table when `camera` is given.
-  Spectrum sun_side_light_in_shadow(const Ray& ray, const std::vector<Interval>& shadowed, double begin, double end,
+  // buildings hide from the points in their shadow, over the ray's `shadowed` parts (none
+  // before `begin`, where the ray enters the layer); from the camera's table when
+  // `camera` is given.
+  Spectrum sun_side_light_in_shadow(const Ray& ray, const std::vector<Interval>& shadowed, double begin,
                                     const CameraRay* camera) const;
   double min_sigma_;  // σ of the clearest bin (m⁻¹ per unit density)
   Vec3 camera_;
@@ -115,7 +116,6 @@ class FogMedium {
   std::vector<Spectrum> row_inscatter_;  // [row][slice][term]
   std::vector<Spectrum> row_sun_side_;   // the same for the source's sun-side part (empty without)
   std::vector<double> row_depth_;        // [row][slice]: the clearest bin's optical depth from the camera
-  std::vector<double> row_slice_gain_;   // [row][slice]: e^(−Δτ) − 1 over the clearest bin's Δτ to the next
   // The clearest bin's optical depth from the camera along a ray of vertical cosine z_v.
   double clearest_depth(double z_v, double distance) const;
 };
