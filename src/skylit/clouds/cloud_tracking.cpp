@@ -82,13 +82,24 @@ CloudCollision sample_cloud_collision(const CloudLayer& layer, const Vec3& o, co
 
 double estimate_cloud_transmittance(const CloudLayer& layer, const Vec3& o, const Vec3& d, double t_end,
                                     CounterRandom& random) {
+  // Ratio tracking (Novák, Selle & Jarosz 2014) against twice the majorant while the
+  // estimate is above a tenth. Against the majorant itself, each tentative collision
+  // inside a cloud (whose extinction is the majorant there) multiplies by 1 − σ/σ̄ = 0:
+  // the estimate is 0 or 1, with a relative variance of e^τ − 1 over optical depth τ,
+  // and it is multiplied by the droplets' forward peak where the sun is seen through
+  // them (path_integrator.h). With 2σ̄ each halves it (variance e^{τ/2} − 1, twice the
+  // steps); below a tenth the majorant's own tracking ends it cheaply. The rate of each
+  // flight may depend on the estimate so far: every flight's expected factor is still
+  // the transmittance over it.
+  constexpr double kHalvingAbove = 0.1;
   double transmittance = 1;
   for (const Piece& piece : pieces_of(layer, o, d, t_end)) {
     double t = piece.begin;
     while (transmittance > 0) {
-      t -= std::log1p(-random.uniform()) / piece.majorant;
+      const double tracking = (transmittance > kHalvingAbove ? 2 : 1) * piece.majorant;
+      t -= std::log1p(-random.uniform()) / tracking;
       if (t >= piece.end) break;
-      transmittance *= 1 - extinction_at(piece, o + t * d) / piece.majorant;
+      transmittance *= 1 - extinction_at(piece, o + t * d) / tracking;
     }
   }
   return transmittance;
