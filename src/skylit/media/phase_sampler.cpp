@@ -44,10 +44,31 @@ PhaseSampler::Sample PhaseSampler::sample(const Vec3& forward, double u1, double
   return {direction, ring_density_[static_cast<size_t>(i)]};
 }
 
-double PhaseSampler::pdf(double cos_theta) const {
+int PhaseSampler::ring_of(double cos_theta) const {
   const double theta = std::acos(std::clamp(cos_theta, -1.0, 1.0));
-  const int i = std::clamp(static_cast<int>(std::cbrt(theta / kPi) * kRings), 0, kRings - 1);
-  return ring_density_[static_cast<size_t>(i)];
+  return std::clamp(static_cast<int>(std::cbrt(theta / kPi) * kRings), 0, kRings - 1);
+}
+
+double PhaseSampler::pdf(double cos_theta) const { return ring_density_[static_cast<size_t>(ring_of(cos_theta))]; }
+
+PhaseSampler::Cone PhaseSampler::cone(double max_theta) const {
+  const auto edge = std::lower_bound(theta_.begin(), theta_.end(), max_theta);
+  const int rings = std::clamp(static_cast<int>(edge - theta_.begin()), 1, kRings);
+  return {rings, cdf_[static_cast<size_t>(rings)], std::cos(theta_[static_cast<size_t>(rings)])};
+}
+
+PhaseSampler::Sample PhaseSampler::sample_within(const Cone& cone, const Vec3& forward, double u1, double u2) const {
+  // The rings' cumulative probabilities start at 0, so u1 scaled into [0, P) picks
+  // among the cone's rings only (the last one's upper edge excluded).
+  const double u = std::min(u1 * cone.probability, std::nextafter(cone.probability, 0.0));
+  Sample s = sample(forward, u, u2);
+  s.pdf /= cone.probability;
+  return s;
+}
+
+double PhaseSampler::pdf_within(const Cone& cone, double cos_theta) const {
+  const int ring = ring_of(cos_theta);
+  return ring < cone.rings ? ring_density_[static_cast<size_t>(ring)] / cone.probability : 0.0;
 }
 
 }  // namespace skylit

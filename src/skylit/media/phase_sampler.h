@@ -30,10 +30,23 @@ class PhaseSampler {
   // The density of a direction at cos θ from forward, sr⁻¹.
   double pdf(double cos_theta) const;
 
+  // Drawing only within the rings that reach out to `max_theta` (the forward cone the
+  // path tracer's sun strategy draws from): the same rings, the density divided by their
+  // probability, 0 beyond them.
+  struct Cone {
+    int rings;           // the rings [0, rings)
+    double probability;  // of those rings
+    double min_cos;      // cos of the outer edge of the last ring
+  };
+  Cone cone(double max_theta) const;
+  Sample sample_within(const Cone& cone, const Vec3& forward, double u1, double u2) const;
+  double pdf_within(const Cone& cone, double cos_theta) const;
+
  private:
   std::vector<double> theta_;         // kRings + 1 ring edges, from 0 to π
   std::vector<double> cdf_;           // kRings + 1
   std::vector<double> ring_density_;  // sr⁻¹ in each ring
+  int ring_of(double cos_theta) const;
 };
 
 }  // namespace skylit
