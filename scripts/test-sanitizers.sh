@@ -64,6 +64,9 @@ heavy=(
   FogMultipleScattering.LightsSurfacesInTheFogWithTheFogsOwnLight
   FogMultipleScattering.TheBlocksOfFig8cInTheirOwnShadowAgainstThePathTracer
   CanyonLight.ShadedWallAgainstThePathTracer
+  # the sunlit cloud slab (57 s each in Release under ctest -j2); its spike paths run
+  # here in PathIntegrator's cloud tests and ExtremeScenes
+  'CloudSlab.SunAt*'
   FogMultipleScattering.MatchesThePathTracedReferenceWhereTheFieldIsAzimuthallySymmetric
   FogMultipleScattering.FollowsTheSunInAzimuthWithTheDropletPhaseFunction
   ReflectedSunFig7.AluminiumTowerAgainstThePathTracer

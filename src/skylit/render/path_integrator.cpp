@@ -22,9 +22,10 @@ double power_heuristic(double a, double b) { return a * a / (a * a + b * b); }
 // throughput is 1 or more it goes on for sure: in a non-absorbing cloud the throughput
 // stays 1 over the hundreds of events of diffusion, and any fixed chance below 1 would
 // compound there into rare paths of weight in the thousands (with a cap of 0.95, a slab
-// of optical depth 20 read 25 % low after 256,000 paths).
-bool survives_roulette(int event, Spectrum& throughput, CounterRandom& random) {
-  if (event < 3) return true;
+// of optical depth 20 read 25 % low after 256,000 paths). `exempt`: a path travelling
+// within the sun's spike cone goes on whatever its weight (path_integrator.h).
+bool survives_roulette(int event, bool exempt, Spectrum& throughput, CounterRandom& random) {
+  if (event < 3 || exempt) return true;
   const double survive = std::min(1.0, throughput.mean_value());
   if (random.uniform() >= survive) return false;
   throughput *= static_cast<float>(1.0 / survive);
@@ -42,7 +43,10 @@ PathIntegrator::PathIntegrator(const PreparedScene& scene) : scene_(scene), sky_
     const FogLayer& layer = fog->layer();
     fog_phase_ = std::make_unique<PhaseSampler>([&layer](double c) { return layer.phase(c); });
   }
-  if (scene.clouds()) cloud_phase_ = std::make_unique<PhaseSampler>([](double c) { return cloud_phase(c); });
+  if (scene.clouds()) {
+    cloud_phase_ = std::make_unique<PhaseSampler>([](double c) { return cloud_phase(c); });
+    spike_cone_ = cloud_phase_->cone(radians(kSpikeConeDeg));
+  }
 }
 
 PathIntegrator::PathIntegrator(const PreparedScene& scene, const TestEnvironment& environment) : PathIntegrator(scene) {
@@ -83,27 +87,63 @@ double PathIntegrator::scattering_pdf(const Scatterer& scatterer, const Vec3& to
   return phase_sampler(scatterer.kind).pdf(dot(-to_viewer, to_light));
 }
 
+Radiance PathIntegrator::sunlight_scattered(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
+                                            CounterRandom& random) const {
+  // The sun, a direction with the direct irradiance of the sky model at this height.
+  const Vec3& to_sun = scene_.to_sun();
+  const bool surface = scatterer.kind == ScattererKind::surface;
+  if (test_environment_ || (surface && dot(scatterer.normal, to_sun) <= 0)) return Radiance(0.0f);
+  const Irradiance sun = scene_.sky().direct_sun(position.z);
+  const Vec3 origin = surface ? offset_from_surface(position, scatterer.normal) : position;
+  if (!(sun[kSpectralBins - 1] > 0.0f) || scene_.tracer().occluded(Ray{origin, to_sun})) return Radiance(0.0f);
+  Irradiance reaching = sun;
+  if (const FogMedium* fog = scene_.fog()) reaching *= fog->sun_transmittance(position);
+  if (const CloudsInSky* clouds = scene_.clouds())
+    reaching *=
+        static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, to_sun, kSkyDistanceM, random));
+  return scattering_cos(scatterer, to_sun, to_viewer).reflect(reaching);
+}
+
+bool PathIntegrator::sun_spike_strategy() const { return cloud_phase_ && !test_environment_ && scene_.to_sun().z > 0; }
+
+bool PathIntegrator::in_spike_cone(const Vec3& direction) const {
+  return dot(scene_.to_sun(), direction) > spike_cone_.min_cos;
+}
+
+double PathIntegrator::spike_cone_pdf(const Vec3& direction) const {
+  return cloud_phase_->pdf_within(spike_cone_, dot(scene_.to_sun(), direction));
+}
+
+Spectrum PathIntegrator::spike_path(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
+                                    const Spectrum& throughput, int event, int spike_depth,
+                                    CounterRandom& random) const {
+  const double u1 = random.uniform(), u2 = random.uniform();
+  const PhaseSampler::Sample drawn = cloud_phase_->sample_within(spike_cone_, scene_.to_sun(), u1, u2);
+  const Vec3& next = drawn.direction;
+  const bool surface = scatterer.kind == ScattererKind::surface;
+  if (surface && dot(scatterer.normal, next) <= 0) return Spectrum(0.0f);
+  const CosineWeightedBrdf f = scattering_cos(scatterer, next, to_viewer);
+  const double own = scattering_pdf(scatterer, next, to_viewer), cone = spike_cone_pdf(next);
+  if (f.per_sr.is_black() || !(cone > 0)) return Spectrum(0.0f);
+  // f over the density drawn with, times this strategy's balance-heuristic weight
+  // cone / (own + cone).
+  PathState sub;
+  sub.ray = Ray{surface ? offset_from_surface(position, scatterer.normal) : position, next};
+  sub.throughput = throughput * f.per_sr * static_cast<float>(cone / ((own + cone) * drawn.pdf));
+  sub.delta = false;
+  sub.scatter_pdf = own;  // the sky it meets is weighed as the own strategy's would be
+  sub.event = event + 1;
+  return trace(sub, spike_depth, random, nullptr);
+}
+
 Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                                       CounterRandom& random) const {
-  const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
   const bool surface = scatterer.kind == ScattererKind::surface;
   const Vec3 origin = surface ? offset_from_surface(position, scatterer.normal) : position;
   auto faces = [&](const Vec3& direction) { return !surface || dot(scatterer.normal, direction) > 0; };
   Radiance light(0.0f);
-  // The sun, a direction with the direct irradiance of the sky model at this height.
-  const Vec3& to_sun = scene_.to_sun();
-  if (!test_environment_ && faces(to_sun)) {
-    const Irradiance sun = sky.direct_sun(position.z);
-    if (sun[kSpectralBins - 1] > 0.0f && !tracer.occluded(Ray{origin, to_sun})) {
-      Irradiance reaching = sun;
-      if (const FogMedium* fog = scene_.fog()) reaching *= fog->sun_transmittance(position);
-      if (const CloudsInSky* clouds = scene_.clouds())
-        reaching *=
-            static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, to_sun, kSkyDistanceM, random));
-      light += scattering_cos(scatterer, to_sun, to_viewer).reflect(reaching);
-    }
-  }
+  light += sunlight_scattered(position, scatterer, to_viewer, random);
   // The sky, one direction drawn from its table.
   const double u1 = random.uniform(), u2 = random.uniform();
   const SkySampler::Sample s = sky_sampler_.sample(u1, u2);
@@ -139,21 +179,40 @@ Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
 }
 
 Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) const {
+  PathState camera;
+  camera.ray = camera_ray;
+  MediumStretch camera_air;  // the air between the camera and where its ray first scatters
+  const Spectrum radiance = trace(camera, 0, random, &camera_air);
+  return camera_air.seen_through(Radiance(radiance));
+}
+
+Spectrum PathIntegrator::trace(PathState path, int spike_depth, CounterRandom& random,
+                               MediumStretch* camera_air) const {
   const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
   const FogLayer* fog = scene_.fog() ? &scene_.fog()->layer() : nullptr;
   const CloudLayer* clouds = scene_.clouds() ? &scene_.clouds()->layer() : nullptr;
-  // The light gathered so far, and what the path's next light will be multiplied by.
-  Spectrum radiance(0.0f), throughput(1.0f);
-  Ray ray = camera_ray;
-  // How the ray was drawn: from the camera or a mirror (nothing else could have drawn
-  // it, so the sky and the sun it meets count in full), or from a material's lobes or
-  // the fog's phase function with density `scatter_pdf` (the sky it meets is then
-  // weighed against the sky's own sampling).
-  bool delta = true;
-  double scatter_pdf = 0;
-  MediumStretch camera_air;  // the air between the camera and where its ray first scatters
-  for (int event = 0; event < kMaxEvents; ++event) {
+  const bool sun_spike = sun_spike_strategy();
+  Ray& ray = path.ray;
+  Spectrum& throughput = path.throughput;
+  // The light gathered so far.
+  Spectrum radiance(0.0f);
+  // Whether an event at the end of the present ray sends a spike path: not from within
+  // the cone (there the path's own direction and the spike path's would both follow the
+  // same peak, and spike paths sent from spike paths that Russian roulette spares there
+  // would multiply without end), and not deeper than kMaxSpikeDepth.
+  auto sends_spike_path = [&] { return sun_spike && spike_depth < kMaxSpikeDepth && !in_spike_cone(ray.direction); };
+  // After a surface or medium event: the own direction's weight against the spike
+  // path's where one was sent, and whether the path may be cut (not within the cone).
+  auto went_on = [&](double own_pdf) {
+    if (own_pdf > 0) {
+      const double cone = spike_cone_pdf(ray.direction);
+      throughput *= static_cast<float>(own_pdf / (own_pdf + cone));
+    }
+    return survives_roulette(path.event, sun_spike && in_spike_cone(ray.direction), throughput, random);
+  };
+  for (; path.event < kMaxEvents; ++path.event) {
+    const int event = path.event;
     const std::optional<Hit> hit = tracer.intersect(ray);
     const double t_hit = hit ? hit->t : kInfinity;
     // The media: a cloud's collision first (it bounds how far the fog's flight may go),
@@ -177,17 +236,20 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
     if (medium_event && medium_kind == ScattererKind::cloud) throughput *= static_cast<float>(cloud.albedo);
     if (medium_event) {
       const Vec3 at = ray.origin + *medium_event * ray.direction;
-      if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, *medium_event);
+      if (camera_air && event == 0 && !test_environment_)
+        *camera_air = sky.aerial_perspective(ray.direction, *medium_event);
       const Vec3 to_viewer = -ray.direction;
-      radiance += throughput * direct_light(at, Scatterer{medium_kind}, to_viewer, random).spectrum();
+      const Scatterer scatterer{medium_kind};
+      radiance += throughput * direct_light(at, scatterer, to_viewer, random).spectrum();
+      const bool spike = sends_spike_path();
+      if (spike) radiance += spike_path(at, scatterer, to_viewer, throughput, event, spike_depth + 1, random);
       const double u1 = random.uniform(), u2 = random.uniform();
       const PhaseSampler::Sample next = phase_sampler(medium_kind).sample(ray.direction, u1, u2);
-      throughput *=
-          scattering_cos(Scatterer{medium_kind}, next.direction, to_viewer).per_sr * static_cast<float>(1.0 / next.pdf);
-      delta = false;
-      scatter_pdf = next.pdf;
+      throughput *= scattering_cos(scatterer, next.direction, to_viewer).per_sr * static_cast<float>(1.0 / next.pdf);
+      path.delta = false;
+      path.scatter_pdf = next.pdf;
       ray = Ray{at, next.direction};
-      if (!survives_roulette(event, throughput, random)) break;
+      if (!went_on(spike ? next.pdf : 0.0)) break;
       continue;
     }
     if (!hit) {
@@ -201,34 +263,35 @@ Radiance PathIntegrator::sample(const Ray& camera_ray, CounterRandom& random) co
         break;
       }
       Radiance arriving = environment(ray.direction);
-      if (!delta)
-        arriving *= static_cast<float>(power_heuristic(scatter_pdf, sky_sampler_.pdf(ray.direction)));
+      if (!path.delta)
+        arriving *= static_cast<float>(power_heuristic(path.scatter_pdf, sky_sampler_.pdf(ray.direction)));
       else if (!test_environment_)
         arriving += sky.sun_radiance(ray.direction);
       radiance += throughput * arriving.spectrum();
       break;
     }
     const SurfacePoint point = scene_.surface_point(ray, *hit);
-    if (event == 0 && !test_environment_) camera_air = sky.aerial_perspective(ray.direction, hit->t);
+    if (camera_air && event == 0 && !test_environment_) *camera_air = sky.aerial_perspective(ray.direction, hit->t);
     const Vec3 to_viewer = -ray.direction;
     const PointMaterial point_material = scene_.material_at(point);
     const Material& material = point_material.get();
     // Emission is seen from the camera only, as the bands integrator shows it: surfaces
     // that shine do not light others (docs/model-materials.md).
     if (event == 0 && point.emissive) radiance += throughput * emitted_radiance(point.emission_cd_m2).spectrum();
-    radiance += throughput * direct_light(point.position, Scatterer{ScattererKind::surface, &material, point.normal},
-                                          to_viewer, random)
-                                 .spectrum();
+    const Scatterer surface{ScattererKind::surface, &material, point.normal};
+    radiance += throughput * direct_light(point.position, surface, to_viewer, random).spectrum();
+    const bool spike = sends_spike_path();
+    if (spike) radiance += spike_path(point.position, surface, to_viewer, throughput, event, spike_depth + 1, random);
     const double u0 = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
     const std::optional<ReflectionSample> next = sample_reflection(material, point.normal, to_viewer, u0, u1, u2);
     if (!next || next->weight.is_black() || dot(next->to_light, point.normal) <= 0) break;
     throughput *= next->weight;
-    delta = next->mirror;
-    scatter_pdf = next->pdf;
+    path.delta = next->mirror;
+    path.scatter_pdf = next->pdf;
     ray = Ray{offset_from_surface(point.position, point.normal), next->to_light};
-    if (!survives_roulette(event, throughput, random)) break;
+    if (!went_on(spike && !next->mirror ? next->pdf : 0.0)) break;
   }
-  return camera_air.seen_through(Radiance(radiance));
+  return radiance;
 }
 
 }  // namespace skylit
