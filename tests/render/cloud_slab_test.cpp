@@ -59,16 +59,15 @@ struct Estimate {
   double mean = 0, standard_error = 0;
 };
 
-// The mean and standard error of n paths' `value`; `ray_of(i)` gives path i's ray.
-// Paths run in parallel, each with its own counter-based stream, and are summed in
-// order: the same result on any number of threads.
-template <typename RayOf, typename Value>
-Estimate estimate(const PathIntegrator& path, int n, RayOf&& ray_of, Value&& value) {
+// The mean and standard error of n samples, `sample(i, random)` drawing sample i from
+// its own counter-based stream. Samples run in parallel and are summed in order: the
+// same result on any number of threads.
+template <typename Sample>
+Estimate mean_of(int n, Sample&& sample) {
   std::vector<double> values(static_cast<size_t>(n));
   tbb::parallel_for(0, n, [&](int i) {
     CounterRandom random(5, 0, static_cast<uint64_t>(i));
-    const Ray ray = ray_of(i, random);
-    values[static_cast<size_t>(i)] = value(path.sample(ray, random));
+    values[static_cast<size_t>(i)] = sample(i, random);
   });
   double sum = 0, squares = 0;
   for (const double v : values) {
@@ -77,6 +76,15 @@ Estimate estimate(const PathIntegrator& path, int n, RayOf&& ray_of, Value&& val
   }
   const double mean = sum / n;
   return {mean, std::sqrt(std::max(0.0, squares / n - mean * mean) / (n - 1))};
+}
+
+// The mean and standard error of n paths' `value`; `ray_of(i)` gives path i's ray.
+template <typename RayOf, typename Value>
+Estimate estimate(const PathIntegrator& path, int n, RayOf&& ray_of, Value&& value) {
+  return mean_of(n, [&](int i, CounterRandom& random) {
+    const Ray ray = ray_of(i, random);
+    return value(path.sample(ray, random));
+  });
 }
 
 // A view at `zenith_deg` from straight down (from above) or straight up (from below),
@@ -107,9 +115,7 @@ Estimate flux_leaving(const PathIntegrator& path, const Vec3& eye, bool from_abo
   static const PhaseSampler droplets([](double c) { return cloud_phase(c); });
   static const PhaseSampler::Cone cone = droplets.cone(radians(5.0));
   const double toward_sun = from_above ? 0.0 : 0.5;
-  std::vector<double> values(static_cast<size_t>(paths));
-  tbb::parallel_for(0, paths, [&](int i) {
-    CounterRandom random(5, 0, static_cast<uint64_t>(i));
+  return mean_of(paths, [&](int, CounterRandom& random) {
     const double u0 = random.uniform(), u1 = random.uniform(), u2 = random.uniform();
     Vec3 d;
     if (u0 < toward_sun) {
@@ -119,17 +125,10 @@ Estimate flux_leaving(const PathIntegrator& path, const Vec3& eye, bool from_abo
       d = {s * std::cos(phi), s * std::sin(phi), from_above ? -c : c};
     }
     const double cosine = from_above ? -d.z : d.z;
-    if (cosine <= 0) return;
+    if (cosine <= 0) return 0.0;
     const double density = (1 - toward_sun) * cosine / kPi + toward_sun * droplets.pdf_within(cone, dot(to_sun, d));
-    values[static_cast<size_t>(i)] = luminance(path.sample(Ray{eye, d}, random)) * cosine / density;
+    return luminance(path.sample(Ray{eye, d}, random)) * cosine / density;
   });
-  double sum = 0, squares = 0;
-  for (const double v : values) {
-    sum += v;
-    squares += v * v;
-  }
-  const double mean = sum / paths;
-  return {mean, std::sqrt(std::max(0.0, squares / paths - mean * mean) / (paths - 1))};
 }
 
 // The slab's albedo from the reference (the flux leaving its top over the flux onto it:

@@ -43,10 +43,9 @@ PathIntegrator::PathIntegrator(const PreparedScene& scene) : scene_(scene), sky_
     const FogLayer& layer = fog->layer();
     fog_phase_ = std::make_unique<PhaseSampler>([&layer](double c) { return layer.phase(c); });
   }
-  if (scene.clouds()) {
-    cloud_phase_ = std::make_unique<PhaseSampler>([](double c) { return cloud_phase(c); });
-    spike_cone_ = cloud_phase_->cone(radians(kSpikeConeDeg));
-  }
+  if (scene.clouds()) cloud_phase_ = std::make_unique<PhaseSampler>([](double c) { return cloud_phase(c); });
+  spike_phase_ = cloud_phase_ ? cloud_phase_.get() : fog_phase_.get();
+  if (spike_phase_) spike_cone_ = spike_phase_->cone(radians(kSpikeConeDeg));
 }
 
 PathIntegrator::PathIntegrator(const PreparedScene& scene, const TestEnvironment& environment) : PathIntegrator(scene) {
@@ -104,21 +103,21 @@ Radiance PathIntegrator::sunlight_scattered(const Vec3& position, const Scattere
   return scattering_cos(scatterer, to_sun, to_viewer).reflect(reaching);
 }
 
-bool PathIntegrator::sun_spike_strategy() const { return cloud_phase_ && !test_environment_ && scene_.to_sun().z > 0; }
+bool PathIntegrator::sun_spike_strategy() const { return spike_phase_ && !test_environment_ && scene_.to_sun().z > 0; }
 
 bool PathIntegrator::in_spike_cone(const Vec3& direction) const {
   return dot(scene_.to_sun(), direction) > spike_cone_.min_cos;
 }
 
 double PathIntegrator::spike_cone_pdf(const Vec3& direction) const {
-  return cloud_phase_->pdf_within(spike_cone_, dot(scene_.to_sun(), direction));
+  return spike_phase_->pdf_within(spike_cone_, dot(scene_.to_sun(), direction));
 }
 
 Spectrum PathIntegrator::spike_path(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                                     const Spectrum& throughput, int event, int spike_depth,
                                     CounterRandom& random) const {
   const double u1 = random.uniform(), u2 = random.uniform();
-  const PhaseSampler::Sample drawn = cloud_phase_->sample_within(spike_cone_, scene_.to_sun(), u1, u2);
+  const PhaseSampler::Sample drawn = spike_phase_->sample_within(spike_cone_, scene_.to_sun(), u1, u2);
   const Vec3& next = drawn.direction;
   const bool surface = scatterer.kind == ScattererKind::surface;
   if (surface && dot(scatterer.normal, next) <= 0) return Spectrum(0.0f);

@@ -18,7 +18,7 @@
 // heuristic, Veach 1997) and of every lamp (point sources, their intensity
 // distributions), then continues in a direction drawn from the material
 // (material/reflection_sampling.h), with Russian roulette from the fourth bounce; under
-// the sun with clouds it also sends a spike path toward the sun (below). The
+// the sun with clouds or fog it also sends a spike path toward the sun (below). The
 // camera's ray crosses the air as in the fast path (aerial perspective from its
 // tables); the sun's disc is seen where a camera ray or a mirror's reflection meets it.
 //
@@ -82,12 +82,13 @@ class PathIntegrator {
   // sun), is large only for the rare paths that arrive travelling within a degree or two
   // of the sun's direction, and more so for the chains of forward scatterings that such
   // a path then makes: unbiased, but so heavy-tailed that 100,000 paths left 10–20 %
-  // standard errors (docs/clouds.md). So after every surface or medium event the path's
-  // light is gathered by two strategies joined by the balance heuristic (Veach 1997): the
-  // path going on in its own direction (drawn from the material or phase function, density
-  // p_own), and a spike path that starts in a direction drawn from the droplets' phase
-  // function around the sun's within the spike cone (density p_cone) and goes on as a
-  // path of its own. A path within the cone is not cut by Russian roulette (its weight
+  // standard errors (docs/clouds.md); fog droplets likewise (docs/fog.md). So after
+  // every surface or medium event the path's light is gathered by two strategies joined
+  // by the balance heuristic (Veach 1997): the path going on in its own direction (drawn
+  // from the material or phase function, density p_own), and a spike path that starts
+  // in a direction drawn from the droplets' phase function (the clouds', or without
+  // clouds the fog's) around the sun's within the spike cone (density p_cone) and goes
+  // on as a path of its own. A path within the cone is not cut by Russian roulette (its weight
   // is small there, and its light large) and sends no spike paths.
   bool sun_spike_strategy() const;
   bool in_spike_cone(const Vec3& direction) const;
@@ -136,7 +137,9 @@ class PathIntegrator {
   SkySampler sky_sampler_;
   std::unique_ptr<PhaseSampler> fog_phase_;    // with fog only
   std::unique_ptr<PhaseSampler> cloud_phase_;  // with clouds only
-  PhaseSampler::Cone spike_cone_{};            // of cloud_phase_
+  // The spike paths' phase function: the clouds' droplets, or without clouds the fog's.
+  const PhaseSampler* spike_phase_ = nullptr;
+  PhaseSampler::Cone spike_cone_{};  // of spike_phase_
 };
 
 }  // namespace skylit
