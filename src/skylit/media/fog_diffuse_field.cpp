@@ -538,7 +538,7 @@ FogDiffuseField::DirectionWeight FogDiffuseField::direction_at(double up) const 
 
 void FogDiffuseField::add_terms(const std::vector<Spectrum>& table, size_t level, DirectionWeight direction,
                                 float weight, std::array<Spectrum, kModes>& terms) const {
-  const Spectrum* lower = &table[(level * direction_.size() + direction.below) * kModes];
+  const Spectrum* lower = terms_at(table, level, direction.below);
   const Spectrum* upper = lower + kModes;
   const float w_lower = weight * (1 - direction.above), w_upper = weight * direction.above;
   for (int m = 0; m < kModes; ++m) terms[static_cast<size_t>(m)] += lower[m] * w_lower + upper[m] * w_upper;
@@ -569,8 +569,7 @@ Spectrum FogDiffuseField::lookup(const std::vector<Spectrum>& table, double z, d
   // The four table entries around (z, up), each one level's terms toward one direction.
   auto add = [&](size_t level_index, size_t direction_index, float weight) {
     if (weight == 0.0f) return;
-    add_azimuth_weighted(v, &table[(level_index * direction_.size() + direction_index) * kModes], kModes,
-                         weights.data(), weight);
+    add_azimuth_weighted(v, terms_at(table, level_index, direction_index), kModes, weights.data(), weight);
   };
   add(level.below, direction.below, (1 - level.above) * (1 - direction.above));
   add(level.below, direction.below + 1, (1 - level.above) * direction.above);

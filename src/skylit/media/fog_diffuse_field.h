@@ -124,6 +124,10 @@ class FogDiffuseField {
     float above;
   };
   DirectionWeight direction_at(double up) const;
+  // A table's kModes terms at one level toward one of its directions.
+  const Spectrum* terms_at(const std::vector<Spectrum>& table, size_t level, size_t direction) const {
+    return &table[(level * direction_.size() + direction) * kModes];
+  }
   // Adds `weight` times one level's terms, interpolated between two directions.
   void add_terms(const std::vector<Spectrum>& table, size_t level, DirectionWeight direction, float weight,
                  std::array<Spectrum, kModes>& terms) const;

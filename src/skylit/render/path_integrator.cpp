@@ -86,23 +86,6 @@ double PathIntegrator::scattering_pdf(const Scatterer& scatterer, const Vec3& to
   return phase_sampler(scatterer.kind).pdf(dot(-to_viewer, to_light));
 }
 
-Radiance PathIntegrator::sunlight_scattered(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
-                                            CounterRandom& random) const {
-  // The sun, a direction with the direct irradiance of the sky model at this height.
-  const Vec3& to_sun = scene_.to_sun();
-  const bool surface = scatterer.kind == ScattererKind::surface;
-  if (test_environment_ || (surface && dot(scatterer.normal, to_sun) <= 0)) return Radiance(0.0f);
-  const Irradiance sun = scene_.sky().direct_sun(position.z);
-  const Vec3 origin = surface ? offset_from_surface(position, scatterer.normal) : position;
-  if (!(sun[kSpectralBins - 1] > 0.0f) || scene_.tracer().occluded(Ray{origin, to_sun})) return Radiance(0.0f);
-  Irradiance reaching = sun;
-  if (const FogMedium* fog = scene_.fog()) reaching *= fog->sun_transmittance(position);
-  if (const CloudsInSky* clouds = scene_.clouds())
-    reaching *=
-        static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, to_sun, kSkyDistanceM, random));
-  return scattering_cos(scatterer, to_sun, to_viewer).reflect(reaching);
-}
-
 bool PathIntegrator::sun_spike_strategy() const { return spike_phase_ && !test_environment_ && scene_.to_sun().z > 0; }
 
 bool PathIntegrator::in_spike_cone(const Vec3& direction) const {
@@ -137,12 +120,25 @@ Spectrum PathIntegrator::spike_path(const Vec3& position, const Scatterer& scatt
 
 Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                                       CounterRandom& random) const {
+  const SkyModel& sky = scene_.sky();
   const RayTracer& tracer = scene_.tracer();
   const bool surface = scatterer.kind == ScattererKind::surface;
   const Vec3 origin = surface ? offset_from_surface(position, scatterer.normal) : position;
   auto faces = [&](const Vec3& direction) { return !surface || dot(scatterer.normal, direction) > 0; };
   Radiance light(0.0f);
-  light += sunlight_scattered(position, scatterer, to_viewer, random);
+  // The sun, a direction with the direct irradiance of the sky model at this height.
+  const Vec3& to_sun = scene_.to_sun();
+  if (!test_environment_ && faces(to_sun)) {
+    const Irradiance sun = sky.direct_sun(position.z);
+    if (sun[kSpectralBins - 1] > 0.0f && !tracer.occluded(Ray{origin, to_sun})) {
+      Irradiance reaching = sun;
+      if (const FogMedium* fog = scene_.fog()) reaching *= fog->sun_transmittance(position);
+      if (const CloudsInSky* clouds = scene_.clouds())
+        reaching *=
+            static_cast<float>(estimate_cloud_transmittance(clouds->layer(), position, to_sun, kSkyDistanceM, random));
+      light += scattering_cos(scatterer, to_sun, to_viewer).reflect(reaching);
+    }
+  }
   // The sky, one direction drawn from its table.
   const double u1 = random.uniform(), u2 = random.uniform();
   const SkySampler::Sample s = sky_sampler_.sample(u1, u2);

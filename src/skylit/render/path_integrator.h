@@ -73,9 +73,6 @@ class PathIntegrator {
   // the sky (weighed against the point's own sampling) and the lamps.
   Radiance direct_light(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                         CounterRandom& random) const;
-  // The sunlight a point sends toward `to_viewer` after one scattering there.
-  Radiance sunlight_scattered(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
-                              CounterRandom& random) const;
 
   // The sun through the droplets' forward spike. In a cloud, 43 % of the scattering lies
   // within 2° of forward, so the sun's next-event estimate at a cloud event, p(cos to the
