@@ -46,6 +46,8 @@ heavy=(
   FogSurfaceLight.IrradianceOfAnyPlaneMatchesADenseQuadratureOfTheIncomingLight
   FogDiffuseField.ConservesTheSunsEnergy
   LampRender.GlowShadowsAreExactWithinTheReachAndBeyondItWhenTheyMatter
+  # 2.6 s in Release; the share's grid test runs here
+  CloudSkyShare.AgreesWithADenseQuadratureForAnyFacing
   # thirty fogs' multiple-scattering fields, the densest with hundreds of levels (2480 s
   # instrumented, 2026-12-04: CI took 76 minutes); extreme fogs still run here at random
   # in ExtremeScenes.RenderFiniteOrAreRefusedNeverAnInternalError

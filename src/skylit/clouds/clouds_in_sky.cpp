@@ -24,52 +24,42 @@ double mean_altitude(const std::vector<Cloud>& clouds) {
   return altitude / static_cast<double>(std::max<size_t>(1, clouds.size()));
 }
 
+CloudLayer prepared_layer(std::vector<Cloud> clouds, const Vec3& to_sun) {
+  CloudLayer layer(std::move(clouds));
+  layer.prepare_sun(to_sun);
+  return layer;
+}
+
+// Eq. 15: the sun at the clouds' altitude. The sky's light from above and the ground's
+// from below are the irradiances the scene's surfaces get (as the path-traced reference
+// lights the clouds), so that clouds stay lit by the sky after sunset.
+CloudLighting cloud_lighting(const SkyModel& sky, double altitude, CloudLightModel model) {
+  CloudLighting lighting;
+  lighting.to_sun = sky.to_sun();
+  lighting.sun = sky.direct_sun(altitude).spectrum();
+  lighting.model = model;
+  const Irradiance from_above = sky.sky_irradiance({0, 0, 1});
+  lighting.sky_from_above = from_above.spectrum();
+  lighting.sky_from_below = sky.sky_irradiance({0, 0, -1}).spectrum();
+  // The paper's model: a Lambertian of albedo 0.25 under the sun and the sky.
+  if (model == CloudLightModel::paper)
+    lighting.ambient = default_cloud_ambient(lighting.sun, lighting.to_sun) +
+                       (from_above * static_cast<float>(kDefaultCloudAmbientFraction / kPi)).spectrum();
+  return lighting;
+}
+
 }  // namespace
 
 CloudsInSky::CloudsInSky(const std::vector<CloudShape>& listed, const std::optional<CloudLayerSettings>& generated,
-                         const SkyModel& sky, const Vec3& ground_point, CloudLightModel model)
-    : layer_(all_clouds(listed, generated)), to_sun_(sky.to_sun()) {
-  const double altitude = mean_altitude(layer_.clouds());
-  layer_.prepare_sun(to_sun_);
-  // Eq. 15: the sun at the clouds' altitude. The sky's light from above and the ground's
-  // from below are the irradiances the scene's surfaces get (as the path-traced reference
-  // lights the clouds), so that clouds stay lit by the sky after sunset.
-  lighting_.to_sun = to_sun_;
-  lighting_.sun = sky.direct_sun(altitude).spectrum();
-  lighting_.model = model;
-  const Irradiance from_above = sky.sky_irradiance({0, 0, 1});
-  lighting_.sky_from_above = from_above.spectrum();
-  lighting_.sky_from_below = sky.sky_irradiance({0, 0, -1}).spectrum();
-  // The paper's model: a Lambertian of albedo 0.25 under the sun and the sky.
-  if (model == CloudLightModel::paper)
-    lighting_.ambient = default_cloud_ambient(lighting_.sun, to_sun_) +
-                        (from_above * static_cast<float>(kDefaultCloudAmbientFraction / kPi)).spectrum();
-  sky_share_ = measure_sky_share(sky, ground_point);
-}
+                         const SkyModel& sky, const Vec3& camera_ground, CloudLightModel model)
+    : layer_(prepared_layer(all_clouds(listed, generated), sky.to_sun())),
+      to_sun_(sky.to_sun()),
+      lighting_(cloud_lighting(sky, mean_altitude(layer_.clouds()), model)),
+      sky_share_(layer_, lighting_, sky, camera_ground) {}
 
 CloudsInSky::Along CloudsInSky::along(const Vec3& origin, const Vec3& direction, double distance) const {
   const CloudScattering c = layer_.scatter(origin, direction, 0.0, std::min(distance, 1e7), lighting_);
   return {{Transmittance(static_cast<float>(c.transmittance)), Radiance(c.in_scattered)}, c.distance};
-}
-
-Transmittance CloudsInSky::measure_sky_share(const SkyModel& sky, const Vec3& ground_point) const {
-  // The sky over a horizontal surface, with and without the clouds in front of it, by a
-  // cosine-weighted midpoint rule (16 × 32 directions).
-  Radiance clear, cloudy;
-  for (int i = 0; i < 16; ++i) {
-    const double mu = std::sqrt((i + 0.5) / 16), sine = std::sqrt(1 - mu * mu);
-    for (int j = 0; j < 32; ++j) {
-      const double phi = 2 * kPi * (j + 0.5) / 32;
-      const Vec3 dir{sine * std::cos(phi), sine * std::sin(phi), mu};
-      const Radiance radiance = sky.sky_radiance_near_ground(dir);
-      const CloudScattering c = layer_.scatter(ground_point, dir, 0.0, 1e7, lighting_);
-      clear += radiance;
-      cloudy += radiance * static_cast<float>(c.transmittance) + Radiance(c.in_scattered);
-    }
-  }
-  Spectrum share;
-  for (int k = 0; k < kSpectralBins; ++k) share[k] = clear[k] > 0 ? std::min(2.0f, cloudy[k] / clear[k]) : 1.0f;
-  return Transmittance(share);
 }
 
 }  // namespace skylit

@@ -10,17 +10,19 @@
 
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/clouds/cloud_layer.h"
+#include "skylit/clouds/cloud_sky_share.h"
 #include "skylit/spectrum/medium_stretch.h"
 
 namespace skylit {
 
 class CloudsInSky {
  public:
-  // The clouds given one by one and those of a generated layer, if any; `ground_point`
-  // is where the share of sky light under the clouds is measured (below the camera);
-  // `model` how their multiple scattering is found (cloud_scattering.h).
+  // The clouds given one by one and those of a generated layer, if any; `camera_ground`
+  // is the ground below the camera, around which the share of sky light under the
+  // clouds is tabulated (cloud_sky_share.h); `model` how their multiple scattering is
+  // found (cloud_scattering.h).
   CloudsInSky(const std::vector<CloudShape>& listed, const std::optional<CloudLayerSettings>& generated,
-              const SkyModel& sky, const Vec3& ground_point, CloudLightModel model = CloudLightModel::two_stream);
+              const SkyModel& sky, const Vec3& camera_ground, CloudLightModel model = CloudLightModel::two_stream);
 
   // What the clouds do along a view ray from its origin up to `distance` (may be
   // infinite), and where the ray enters the first cloud (infinite if none).
@@ -33,19 +35,17 @@ class CloudsInSky {
   // e^{−t'} toward the sun from a point (the clouds' shadows).
   double sun_transmittance(const Vec3& point) const { return layer_.sun_transmittance(point, to_sun_); }
 
-  // A horizontal surface's sky irradiance under the clouds over that under a clear sky,
-  // per bin (at most 2): how the clouds scale the sky light on surfaces.
-  const Transmittance& sky_share() const { return sky_share_; }
+  // The sky irradiance under the clouds over that under the clear sky on a surface at
+  // `point` facing `normal`, per bin: how the clouds scale the sky light on surfaces.
+  Transmittance sky_share(const Vec3& point, const Vec3& normal) const { return sky_share_.at(point, normal); }
 
   const CloudLayer& layer() const { return layer_; }
 
  private:
-  Transmittance measure_sky_share(const SkyModel& sky, const Vec3& ground_point) const;
-
   CloudLayer layer_;
   Vec3 to_sun_;
   CloudLighting lighting_;
-  Transmittance sky_share_{1.0f};
+  CloudSkyShare sky_share_;
 };
 
 }  // namespace skylit

@@ -81,16 +81,18 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
   return path;
 }
 
-Transmittance BandsIntegrator::clouds_share() const {
-  return scene_.clouds() ? scene_.clouds()->sky_share() : Transmittance(1.0f);
+Transmittance BandsIntegrator::clouds_share(const Vec3& point, const Vec3& facing) const {
+  return scene_.clouds() ? scene_.clouds()->sky_share(point, facing) : Transmittance(1.0f);
 }
 
-Transmittance BandsIntegrator::sky_share(double z) const {
-  return scene_.fog() ? scene_.fog()->sky_light_share(z) * clouds_share() : clouds_share();
+Transmittance BandsIntegrator::sky_share(const Vec3& point, const Vec3& facing) const {
+  const Transmittance clouds = clouds_share(point, facing);
+  return scene_.fog() ? scene_.fog()->sky_light_share(point.z) * clouds : clouds;
 }
 
-Transmittance BandsIntegrator::diffuse_share(double z) const {
-  return sky_light_->lights_in_fog(z) ? clouds_share() : sky_share(z);
+Transmittance BandsIntegrator::diffuse_share(const SurfacePoint& point) const {
+  return sky_light_->lights_in_fog(point.position.z) ? clouds_share(point.position, point.normal)
+                                                     : sky_share(point.position, point.normal);
 }
 
 Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
@@ -110,7 +112,7 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
 Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const SurfacePoint& point,
                                                        const Material& material, const Irradiance& sky) const {
   const Irradiance irradiance =
-      sky * diffuse_share(point.position.z) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
+      sky * diffuse_share(point) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
   return lambertian_radiance(diffuse_albedo(material, dot(point.normal, -ray.direction)), irradiance);
@@ -156,8 +158,9 @@ Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& 
 }
 
 Radiance BandsIntegrator::sky_seen_from(const Vec3& point, const Vec3& direction) const {
-  if (sky_light_->lights_in_fog(point.z)) return Radiance(fog_light_->incoming(point.z, direction)) * clouds_share();
-  return sky_.sky_radiance_near_ground(direction) * sky_share(point.z);
+  if (sky_light_->lights_in_fog(point.z))
+    return Radiance(fog_light_->incoming(point.z, direction)) * clouds_share(point, direction);
+  return sky_.sky_radiance_near_ground(direction) * sky_share(point, direction);
 }
 
 CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& sky_light, const SurfacePoint& point,
@@ -190,7 +193,7 @@ Radiance BandsIntegrator::mirrored(const SurfacePoint& point, const Vec3& direct
 }
 
 Irradiance BandsIntegrator::irradiance(const SurfacePoint& point, const CachedSkyLight& sky_light) const {
-  Irradiance e = sky_light.diffuse_irradiance * diffuse_share(point.position.z) +
+  Irradiance e = sky_light.diffuse_irradiance * diffuse_share(point) +
                  sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_)) + reflected_sun(point, sky_light);
   if (const SceneLamps* lamps = scene_.lamps()) e += lamps->irradiance_on(point);
   return e;
@@ -202,7 +205,7 @@ Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const
   const Vec3 to_viewer = -ray.direction;
   const Irradiance sun = sun_reaching(point);
   // Sky light, dimmed by any fog above the point (unless the fog's own light is in it).
-  const Transmittance share = diffuse_share(point.position.z);
+  const Transmittance share = diffuse_share(point);
   // Lambertian part: sky and sun irradiance, and the sun reflected by facades.
   const Irradiance irradiance = sky_light.diffuse_irradiance * share +
                                 sun * static_cast<float>(dot(point.normal, to_sun_)) + reflected_sun(point, sky_light);

@@ -143,15 +143,17 @@ class BandsIntegrator {
   Radiance shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const;
   // The lamps' glow in fog along the ray: from the glow image if given, else exactly.
   Radiance lamp_glow(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const;
-  // The sky light's share that gets through the clouds and the fog to altitude z (1
-  // without either).
-  Transmittance sky_share(double z) const;
+  // The sky light's share that gets through the clouds and the fog to a point, on a
+  // surface facing `facing` (1 without either; the fog's by altitude, the clouds' by
+  // ground position and facing, cloud_sky_share.h). For the light from one direction,
+  // the share of a surface facing it.
+  Transmittance sky_share(const Vec3& point, const Vec3& facing) const;
   // The clouds' part of it.
-  Transmittance clouds_share() const;
+  Transmittance clouds_share(const Vec3& point, const Vec3& facing) const;
   // The same for the sky light the sky-light integrals give (diffuse and glossy): without
   // the fog's share where the fog's multiple scattering lights the point
   // (SkyLight::lights_in_fog).
-  Transmittance diffuse_share(double z) const;
+  Transmittance diffuse_share(const SurfacePoint& point) const;
   // The sky's light arriving at `point` from `direction` where nothing hides it: dimmed
   // by the fog's share, or the fog's own light where its multiple scattering lights the
   // point; and by the clouds.
