@@ -17,12 +17,6 @@
 namespace skylit {
 namespace {
 
-const SkyModel& test_sky() {
-  static const Atmosphere atmosphere{AtmosphereSettings{}};
-  static const SkyModel sky{atmosphere, direction_from_altitude_azimuth(40, 150), 1.6};
-  return sky;
-}
-
 // The clouds lit as the renderer lights them (clouds_in_sky.cpp): the sun at their
 // altitude, the sky's irradiance from above and below.
 CloudLighting sky_lighting(const SkyModel& sky, double altitude) {
@@ -34,18 +28,21 @@ CloudLighting sky_lighting(const SkyModel& sky, double altitude) {
   return l;
 }
 
+// One cloud 1.5 km high under the standard air's sky, the sun 40° high in the SSE.
 struct Clouds {
-  CloudLayer layer;
-  CloudLighting lighting;
-  Clouds() : layer({Cloud(wavy_cloud())}), lighting(sky_lighting(test_sky(), wavy_cloud().altitude)) {
-    layer.prepare_sun(lighting.to_sun);
-  }
+  Atmosphere atmosphere{AtmosphereSettings{}};
+  SkyModel sky{atmosphere, direction_from_altitude_azimuth(40, 150), 1.6};
+  CloudLayer layer{{Cloud(wavy_cloud())}};
+  CloudLighting lighting = sky_lighting(sky, wavy_cloud().altitude);
+  Clouds() { layer.prepare_sun(lighting.to_sun); }
 };
 
 const Clouds& clouds() {
   static const Clouds c;
   return c;
 }
+
+const SkyModel& test_sky() { return clouds().sky; }
 
 const CloudSkyShare& share() {
   static const CloudSkyShare s(clouds().layer, clouds().lighting, test_sky(), {0, -4000, 0});
