@@ -61,7 +61,7 @@ CloudSkyShare::CloudSkyShare(const CloudLayer& layer, const CloudLighting& light
   tbb::parallel_for(0, nodes_x_ * nodes_y_, [&](int k) {
     const int i = k % nodes_x_, j = k / nodes_x_;  // the node's column and row
     const Vec3 ground{x0_m_ + i * cell_x_m_, y0_m_ + j * cell_y_m_, camera_ground.z};
-    nodes_[static_cast<size_t>(k)] = measure(layer, lighting, ground);
+    nodes_[static_cast<size_t>(k)] = measure(layer, lighting, sky, ground);
   });
 }
 
@@ -190,13 +190,21 @@ Transmittance CloudSkyShare::ratio(const Spectrum& clouded, const Spectrum& clea
 }
 
 CloudSkyShare::PlaneIrradiances CloudSkyShare::measure(const CloudLayer& layer, const CloudLighting& lighting,
-                                                       const Vec3& ground_point) const {
+                                                       const SkyModel& sky, const Vec3& ground_point) const {
   PlaneIrradiances e{};
   for (const Direction& d : directions_) {
     const CloudScattering c = layer.scatter(ground_point, d.toward, 0.0, 1e7, lighting);
-    const Spectrum radiance = d.clear.spectrum() * static_cast<float>(c.transmittance) + c.in_scattered;
+    Radiance radiance = d.clear;
+    if (std::isfinite(c.distance)) {
+      // As a view ray sees a cloud (view_path.h): the clear sky S already holds the air
+      // along the whole ray, so a cloud of transmittance t shows t·S + (1 − t)·A +
+      // T_air·(its own light), A and T_air the air's light and transmittance before it.
+      const MediumStretch air = sky.aerial_perspective(d.toward, c.distance);
+      const auto t = static_cast<float>(c.transmittance);
+      radiance = d.clear * t + air.in_scattered * (1 - t) + Radiance(c.in_scattered) * air.transmittance;
+    }
     for (size_t p = 0; p < kPlanes; ++p)
-      if (d.plane_weight_sr[p] > 0) e[p] += radiance * d.plane_weight_sr[p];
+      if (d.plane_weight_sr[p] > 0) e[p] += radiance.spectrum() * d.plane_weight_sr[p];
   }
   return e;
 }

@@ -17,7 +17,7 @@
 // (a generated layer spans tens of kilometres; the ground in view lies nearer).
 // Not followed: in a cloud's shadow the light scattered forward through the cloud comes
 // from within a few degrees of the sun and changes with the cloud's thickness along the
-// sun's line over tens of metres (up to 29 % between nodes; cells half as wide did not
+// sun's line over tens of metres (up to 27 % between nodes; cells half as wide did not
 // help).
 //
 // Facing: each node holds the clouded sky's irradiance on kPlanes planes: facing up, and
@@ -64,7 +64,8 @@ class CloudSkyShare {
   static constexpr int kPlanes = 1 + kPlaneAzimuths * static_cast<int>(kPlaneElevations_deg.size());
   static Vec3 plane_normal(int plane);
   using PlaneIrradiances = std::array<Spectrum, kPlanes>;
-  PlaneIrradiances measure(const CloudLayer& layer, const CloudLighting& lighting, const Vec3& ground_point) const;
+  PlaneIrradiances measure(const CloudLayer& layer, const CloudLighting& lighting, const SkyModel& sky,
+                           const Vec3& ground_point) const;
 
   // The share for a surface of unit normal `normal` at a point's horizontal position.
   Transmittance at(const Vec3& point, const Vec3& normal) const;

@@ -68,6 +68,27 @@ Transmittance PathIntegrator::media_transmittance(const Vec3& point, const Vec3&
   return t;
 }
 
+Radiance PathIntegrator::sky_through_media(const Vec3& point, const Vec3& direction, bool from_surface,
+                                           CounterRandom& random) const {
+  const Radiance sky = environment(direction);
+  const CloudsInSky* clouds = scene_.clouds();
+  if (!clouds || !from_surface || test_environment_)
+    return sky * media_transmittance(point, direction, kInfinity, random);
+  // From a surface through a cloud: t·S + (1 − t)·A, the sky S (the air along the whole
+  // ray in it) where the cloud lets it through, and the air's light A before the cloud
+  // where it hides the rest, as a view ray sees a cloud (view_path.h); t estimated, the
+  // sum linear in it. The fog's transmittance dims both.
+  const Transmittance fog =
+      scene_.fog() ? Transmittance(fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, kInfinity))
+                   : Transmittance(1.0f);
+  const std::optional<CloudLayer::Crossing> entry = clouds->layer().first_hit(point, direction, 0.0, kSkyDistanceM);
+  if (!entry) return sky * fog;
+  const auto t =
+      static_cast<float>(estimate_cloud_transmittance(clouds->layer(), point, direction, kSkyDistanceM, random));
+  const Radiance air = scene_.sky().aerial_perspective(direction, std::max(entry->t_enter, 0.0)).in_scattered;
+  return (sky * t + air * (1 - t)) * fog;
+}
+
 CosineWeightedBrdf PathIntegrator::scattering_cos(const Scatterer& scatterer, const Vec3& to_light,
                                                   const Vec3& to_viewer) const {
   if (scatterer.kind == ScattererKind::surface)
@@ -115,6 +136,7 @@ Spectrum PathIntegrator::spike_path(const Vec3& position, const Scatterer& scatt
   sub.delta = false;
   sub.scatter_pdf = own;  // the sky it meets is weighed as the own strategy's would be
   sub.event = event + 1;
+  sub.from_surface = surface;
   return trace(sub, spike_depth, random, nullptr);
 }
 
@@ -147,8 +169,7 @@ Radiance PathIntegrator::direct_light(const Vec3& position, const Scatterer& sca
     if (!f.per_sr.is_black() && !tracer.occluded(Ray{origin, s.direction})) {
       const double weight = power_heuristic(s.pdf, scattering_pdf(scatterer, s.direction, to_viewer));
       // One direction standing for the whole sphere: its radiance over its density.
-      light += f.reflect(environment(s.direction) * media_transmittance(position, s.direction, kInfinity, random),
-                         weight / s.pdf);
+      light += f.reflect(sky_through_media(origin, s.direction, surface, random), weight / s.pdf);
     }
   }
   // Every lamp, a point source (its irradiance already through the fog).
@@ -233,6 +254,17 @@ Spectrum PathIntegrator::trace(PathState path, int spike_depth, CounterRandom& r
       const Vec3 at = ray.origin + *medium_event * ray.direction;
       if (camera_air && event == 0 && !test_environment_)
         *camera_air = sky.aerial_perspective(ray.direction, *medium_event);
+      // From a surface into a cloud: the air before the cloud, as the camera's ray has it
+      // (its light, and the cloud's light through it). The air's light is part of the sky
+      // light the surface's sky sample also gathers (sky_through_media), so it is weighed
+      // as the sky met by this direction is.
+      if (path.from_surface && medium_kind == ScattererKind::cloud && !test_environment_) {
+        const MediumStretch air = sky.aerial_perspective(ray.direction, *medium_event);
+        const double weight = path.delta ? 1.0 : power_heuristic(path.scatter_pdf, sky_sampler_.pdf(ray.direction));
+        radiance += throughput * air.in_scattered.spectrum() * static_cast<float>(weight);
+        throughput *= air.transmittance.spectrum();
+      }
+      path.from_surface = false;
       const Vec3 to_viewer = -ray.direction;
       const Scatterer scatterer{medium_kind};
       radiance += throughput * direct_light(at, scatterer, to_viewer, random).spectrum();
@@ -284,6 +316,7 @@ Spectrum PathIntegrator::trace(PathState path, int spike_depth, CounterRandom& r
     path.delta = next->mirror;
     path.scatter_pdf = next->pdf;
     ray = Ray{offset_from_surface(point.position, point.normal), next->to_light};
+    path.from_surface = true;
     if (!went_on(spike && !next->mirror ? next->pdf : 0.0)) break;
   }
   return radiance;

@@ -108,6 +108,9 @@ class PathIntegrator {
     bool delta = true;
     double scatter_pdf = 0;
     int event = 0;
+    // Whether the ray leaves a surface (the air before a cloud it meets is then the
+    // ground's: cloud_air).
+    bool from_surface = false;
   };
   // The light a path gathers from here on; `camera_air` receives the air before the
   // camera ray's first event. `spike_depth`: how many spike paths deep this one is.
@@ -115,6 +118,9 @@ class PathIntegrator {
   // The spike path's light from a surface or medium event (with the path's throughput).
   Spectrum spike_path(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                       const Spectrum& throughput, int event, int spike_depth, CounterRandom& random) const;
+  // The sky's light arriving from `direction` at `point` through the fog and the clouds;
+  // from a surface, with the air's light before a cloud.
+  Radiance sky_through_media(const Vec3& point, const Vec3& direction, bool from_surface, CounterRandom& random) const;
   CosineWeightedBrdf scattering_cos(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
   double scattering_pdf(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
   // The transmittance of the fog and the clouds from a point toward a direction, to
