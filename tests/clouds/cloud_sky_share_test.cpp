@@ -67,11 +67,10 @@ Spectrum dense_share(const Vec3& ground, const Vec3& n) {
       const CloudScattering c = clouds().layer.scatter(ground, dir, 0.0, 1e7, clouds().lighting);
       clear += sky * static_cast<float>(w);
       Spectrum seen = sky;
-      if (std::isfinite(c.distance)) {  // the cloud behind the air before it
-        const MediumStretch air = test_sky().aerial_perspective(dir, c.distance);
-        const auto t = static_cast<float>(c.transmittance);
-        seen = sky * t + air.in_scattered.spectrum() * (1 - t) + c.in_scattered * air.transmittance.spectrum();
-      }
+      if (std::isfinite(c.distance))  // the cloud behind the air before it
+        seen = seen_past(Radiance(sky), test_sky().aerial_perspective(dir, c.distance),
+                         {Transmittance(static_cast<float>(c.transmittance)), Radiance(c.in_scattered)})
+                   .spectrum();
       cloudy += seen * static_cast<float>(w);
     }
   }

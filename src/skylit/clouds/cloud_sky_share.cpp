@@ -133,7 +133,6 @@ CloudSkyShare::PlaneWeights CloudSkyShare::plane_weights(const Vec3& n) {
     w.add(1 + r * kPlaneAzimuths + k0, static_cast<float>(weight) * (1 - fa));
     w.add(1 + r * kPlaneAzimuths + k1, static_cast<float>(weight) * fa);
   };
-  const double step = kPlaneElevations_deg[0] - kPlaneElevations_deg[1];
   if (elevation_deg >= kPlaneElevations_deg[0]) {
     const double t = (elevation_deg - kPlaneElevations_deg[0]) / (90 - kPlaneElevations_deg[0]);
     w.add(0, static_cast<float>(t));
@@ -142,7 +141,9 @@ CloudSkyShare::PlaneWeights CloudSkyShare::plane_weights(const Vec3& n) {
   }
   for (int r = 1; r < static_cast<int>(kPlaneElevations_deg.size()); ++r)
     if (elevation_deg >= kPlaneElevations_deg[static_cast<size_t>(r)]) {
-      const double t = (elevation_deg - kPlaneElevations_deg[static_cast<size_t>(r)]) / step;
+      const double above = kPlaneElevations_deg[static_cast<size_t>(r - 1)];
+      const double below = kPlaneElevations_deg[static_cast<size_t>(r)];
+      const double t = (elevation_deg - below) / (above - below);
       ring(r - 1, t);
       ring(r, 1 - t);
       return w;
@@ -194,15 +195,13 @@ CloudSkyShare::PlaneIrradiances CloudSkyShare::measure(const CloudLayer& layer, 
   PlaneIrradiances e{};
   for (const Direction& d : directions_) {
     const CloudScattering c = layer.scatter(ground_point, d.toward, 0.0, 1e7, lighting);
-    Radiance radiance = d.clear;
-    if (std::isfinite(c.distance)) {
-      // As a view ray sees a cloud (view_path.h): the clear sky S already holds the air
-      // along the whole ray, so a cloud of transmittance t shows t·S + (1 − t)·A +
-      // T_air·(its own light), A and T_air the air's light and transmittance before it.
-      const MediumStretch air = sky.aerial_perspective(d.toward, c.distance);
-      const auto t = static_cast<float>(c.transmittance);
-      radiance = d.clear * t + air.in_scattered * (1 - t) + Radiance(c.in_scattered) * air.transmittance;
-    }
+    // As a view ray sees a cloud (view_path.h): through the air before it, in place of
+    // the sky beyond it.
+    const Radiance radiance =
+        std::isfinite(c.distance)
+            ? seen_past(d.clear, sky.aerial_perspective(d.toward, c.distance),
+                        {Transmittance(static_cast<float>(c.transmittance)), Radiance(c.in_scattered)})
+            : d.clear;
     for (size_t p = 0; p < kPlanes; ++p)
       if (d.plane_weight_sr[p] > 0) e[p] += radiance.spectrum() * d.plane_weight_sr[p];
   }

@@ -58,35 +58,28 @@ Radiance PathIntegrator::environment(const Vec3& direction) const {
   return scene_.sky().sky_radiance_near_ground(direction);
 }
 
-Transmittance PathIntegrator::media_transmittance(const Vec3& point, const Vec3& direction, double distance,
-                                                  CounterRandom& random) const {
-  Transmittance t(1.0f);
-  if (scene_.fog()) t = Transmittance(fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, distance));
-  if (scene_.clouds())
-    t *= static_cast<float>(estimate_cloud_transmittance(scene_.clouds()->layer(), point, direction,
-                                                         std::min(distance, kSkyDistanceM), random));
-  return t;
-}
-
 Radiance PathIntegrator::sky_through_media(const Vec3& point, const Vec3& direction, bool from_surface,
                                            CounterRandom& random) const {
   const Radiance sky = environment(direction);
-  const CloudsInSky* clouds = scene_.clouds();
-  if (!clouds || !from_surface || test_environment_)
-    return sky * media_transmittance(point, direction, kInfinity, random);
-  // From a surface through a cloud: t·S + (1 − t)·A, the sky S (the air along the whole
-  // ray in it) where the cloud lets it through, and the air's light A before the cloud
-  // where it hides the rest, as a view ray sees a cloud (view_path.h); t estimated, the
-  // sum linear in it. The fog's transmittance dims both.
   const Transmittance fog =
       scene_.fog() ? Transmittance(fog_transmittance(scene_.fog()->layer(), Ray{point, direction}, kInfinity))
                    : Transmittance(1.0f);
-  const std::optional<CloudLayer::Crossing> entry = clouds->layer().first_hit(point, direction, 0.0, kSkyDistanceM);
-  if (!entry) return sky * fog;
+  const CloudsInSky* clouds = scene_.clouds();
+  if (!clouds) return sky * fog;
+  // From a surface through a cloud: t·S + (1 − t)·A, the cloud in place of the sky
+  // beyond it, seen through the air before it (medium_stretch.h; its own light comes
+  // from the paths that scatter in it); t estimated, the sum linear in it. The fog's
+  // transmittance dims both.
+  std::optional<CloudLayer::Crossing> entry;
+  if (from_surface && !test_environment_) {
+    entry = clouds->layer().first_hit(point, direction, 0.0, kSkyDistanceM);
+    if (!entry) return sky * fog;
+  }
   const auto t =
       static_cast<float>(estimate_cloud_transmittance(clouds->layer(), point, direction, kSkyDistanceM, random));
-  const Radiance air = scene_.sky().aerial_perspective(direction, std::max(entry->t_enter, 0.0)).in_scattered;
-  return (sky * t + air * (1 - t)) * fog;
+  if (!entry) return sky * (fog * t);
+  const MediumStretch air = scene_.sky().aerial_perspective(direction, std::max(entry->t_enter, 0.0));
+  return seen_past(sky, air, {Transmittance(t), Radiance(0.0f)}) * fog;
 }
 
 CosineWeightedBrdf PathIntegrator::scattering_cos(const Scatterer& scatterer, const Vec3& to_light,

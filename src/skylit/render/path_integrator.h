@@ -118,15 +118,12 @@ class PathIntegrator {
   // The spike path's light from a surface or medium event (with the path's throughput).
   Spectrum spike_path(const Vec3& position, const Scatterer& scatterer, const Vec3& to_viewer,
                       const Spectrum& throughput, int event, int spike_depth, CounterRandom& random) const;
-  // The sky's light arriving from `direction` at `point` through the fog and the clouds;
-  // from a surface, with the air's light before a cloud.
+  // The sky's light arriving from `direction` at `point` through the fog and the clouds
+  // (the clouds' transmittance by an unbiased estimate); from a surface, with the air's
+  // light before a cloud.
   Radiance sky_through_media(const Vec3& point, const Vec3& direction, bool from_surface, CounterRandom& random) const;
   CosineWeightedBrdf scattering_cos(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
   double scattering_pdf(const Scatterer& scatterer, const Vec3& to_light, const Vec3& to_viewer) const;
-  // The transmittance of the fog and the clouds from a point toward a direction, to
-  // `distance` (the clouds' by an unbiased estimate).
-  Transmittance media_transmittance(const Vec3& point, const Vec3& direction, double distance,
-                                    CounterRandom& random) const;
   const PhaseSampler& phase_sampler(ScattererKind kind) const {
     return kind == ScattererKind::fog ? *fog_phase_ : *cloud_phase_;
   }

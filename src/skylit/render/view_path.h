@@ -44,13 +44,9 @@ struct ViewPath {
       for (int k = 0; k < kSpectralBins; ++k) with_spike[k] = std::max(0.0f, with_spike[k]);
       return Radiance(with_spike);
     }
-    // The sky's radiance S holds the air along the whole ray: S = A + T·S_beyond, with
-    // A and T the air's in-scatter and transmittance up to the clouds. The clouds
-    // replace what lies beyond them and are seen through that air:
-    // T·(cloud + t·S_beyond) + A = t·S + (1 − t)·A + T·cloud.
-    const Radiance through_clouds = leaving * clouds.transmittance +
-                                    air_to_clouds.in_scattered * (Transmittance(1.0f) - clouds.transmittance) +
-                                    clouds.in_scattered * air_to_clouds.transmittance;
+    // The sky's radiance holds the air along the whole ray; the clouds replace what lies
+    // beyond them and are seen through the air before them (medium_stretch.h).
+    const Radiance through_clouds = seen_past(leaving, air_to_clouds, clouds);
     // That is S' = A_near + T_near·S_rest, A_near and T_near the air's over `near`:
     // the fog dims T_near·S_rest, and `near` replaces A_near.
     Spectrum rest = (through_clouds - air_near).spectrum();

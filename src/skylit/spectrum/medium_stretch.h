@@ -29,6 +29,16 @@ inline MediumStretch followed_by(const MediumStretch& near, const MediumStretch&
 // the far stretch would be seen anyway and it is returned empty.
 MediumStretch remainder_after(const MediumStretch& near, const MediumStretch& whole);
 
+// A ray whose radiance `whole` holds the air along all of it (the sky's radiance S),
+// when a medium (a cloud) fills it from where the air stretch `air_before` ends: S = A +
+// T·S_beyond, with A and T the air's in-scatter and transmittance up to the medium,
+// and the medium replaces what lies beyond, seen through that air:
+// T·(medium's light + t·S_beyond) + A = t·S + (1 − t)·A + T·medium's light.
+inline Radiance seen_past(const Radiance& whole, const MediumStretch& air_before, const MediumStretch& medium) {
+  return whole * medium.transmittance + air_before.in_scattered * (Transmittance(1.0f) - medium.transmittance) +
+         medium.in_scattered * air_before.transmittance;
+}
+
 // Two media that fill the same stretch of a ray (the air inside a fog layer), each
 // reported as if it were alone there. Each one's in-scattered light is then also dimmed
 // by the other, by as much as it is on average where that light comes from. Exact when
