@@ -33,29 +33,6 @@ constexpr int kN = FogDiffuseField::kStreams;
 constexpr double kFineDepth = 32.0;  // scaled optical depth from the nearer face (see the levels)
 constexpr int kStreamsAll = 2 * kN;
 
-// Gauss–Legendre nodes and weights on [0, 1] (weights sum to 1).
-void gauss_legendre_unit(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.assign(static_cast<size_t>(n), 0.0);
-  w.assign(static_cast<size_t>(n), 0.0);
-  for (int i = 0; i < n; ++i) {
-    double t = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1.0;
-    for (int iter = 0; iter < 100; ++iter) {
-      double p0 = 1, p1 = t;
-      for (int k = 2; k <= n; ++k) {
-        const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (t * p1 - p0) / (t * t - 1);
-      const double step = p1 / dp;
-      t -= step;
-      if (std::abs(step) < 1e-15) break;
-    }
-    x[static_cast<size_t>(n - 1 - i)] = 0.5 * (1 + t);
-    w[static_cast<size_t>(n - 1 - i)] = 1.0 / ((1 - t * t) * dp * dp);  // 2/((1−t²)P'²) halved
-  }
-}
-
 // P_0(u) … P_{count−1}(u).
 std::vector<double> legendre(double u, int count) {
   std::vector<double> p(static_cast<size_t>(count), 0.0);
@@ -102,6 +79,28 @@ StepWeights step_weights(double depth, double mu) {
 
 }  // namespace
 
+void gauss_legendre_unit(int n, std::vector<double>& x, std::vector<double>& w) {
+  x.assign(static_cast<size_t>(n), 0.0);
+  w.assign(static_cast<size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i) {
+    double t = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+    for (int iter = 0; iter < 100; ++iter) {
+      double p0 = 1, p1 = t;
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = n * (t * p1 - p0) / (t * t - 1);
+      const double step = p1 / dp;
+      t -= step;
+      if (std::abs(step) < 1e-15) break;
+    }
+    x[static_cast<size_t>(n - 1 - i)] = 0.5 * (1 + t);
+    w[static_cast<size_t>(n - 1 - i)] = 1.0 / ((1 - t * t) * dp * dp);  // 2/((1−t²)P'²) halved
+  }
+}
+
 std::vector<double> phase_legendre_moments(const std::function<double(double)>& phase, int count) {
   // χ_l = 2π ∫ p(x) P_l(x) dx on panels in y = 1 − x halving toward the forward
   // direction, 8 Gauss points each.
@@ -129,14 +128,14 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
   const std::vector<double> chi =
       phase_legendre_moments([&layer](double c) { return layer.phase(c); }, kStreamsAll + 1);
   f_ = std::clamp(chi[static_cast<size_t>(kept)], 0.0, 0.999);
-  std::vector<double> chi_scaled(kStreamsAll, 0.0);
-  for (int l = 0; l < kept; ++l) chi_scaled[static_cast<size_t>(l)] = (chi[static_cast<size_t>(l)] - f_) / (1 - f_);
+  chi_scaled_.assign(kStreamsAll, 0.0);
+  for (int l = 0; l < kept; ++l) chi_scaled_[static_cast<size_t>(l)] = (chi[static_cast<size_t>(l)] - f_) / (1 - f_);
   // p'_m(u, u') = Σ_l (2l + 1)/4π·χ'_l·Λ_l^m(u)·Λ_l^m(u'): Fourier term m of the δ-M
   // phase function between two cosines (m = 0: its azimuthal mean).
   auto phase_term = [&](const std::vector<double>& pa, const std::vector<double>& pb) {
     double sum = 0;
     for (int l = 0; l < kStreamsAll; ++l)
-      sum += (2 * l + 1) / (4 * kPi) * chi_scaled[static_cast<size_t>(l)] * pa[static_cast<size_t>(l)] *
+      sum += (2 * l + 1) / (4 * kPi) * chi_scaled_[static_cast<size_t>(l)] * pa[static_cast<size_t>(l)] *
              pb[static_cast<size_t>(l)];
     return sum;
   };
@@ -400,7 +399,7 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
   if (sun) {
     sun_cosine_ = mu0;
     sun_side_.assign(scattered_.size(), Spectrum(0.0f));
-    tabulate_sun_side(chi_scaled, mu0);
+    tabulate_sun_side(mu0);
   }
   // The largest light scattered toward any direction: bounded by Σ_m |S_m| per bin.
   for (size_t at = 0; at < scattered_.size(); at += kModes)
@@ -411,7 +410,7 @@ FogDiffuseField::FogDiffuseField(const FogLayer& layer, const FogLayerLighting& 
     }
 }
 
-void FogDiffuseField::tabulate_sun_side(const std::vector<double>& chi_scaled, double mu0) {
+void FogDiffuseField::tabulate_sun_side(double mu0) {
   // The directions of travel within kSunSideDeg of the sunbeam's, s (upward cosine −μ0,
   // azimuth 0): Gauss–Legendre in the angle from s (p' has a forward lobe tens of degrees
   // wide, which even steps in the cosine would leave to one or two rings), even around.
@@ -436,17 +435,6 @@ void FogDiffuseField::tabulate_sun_side(const std::vector<double>& chi_scaled, d
                       cone_angle * ring_w[static_cast<size_t>(r)] * sn * 2 * kPi / kAround});
     }
   }
-  // p'(cos Θ) from its moments.
-  auto phase = [&](double c) {
-    double p0 = 1, p1 = c, sum = chi_scaled[0] + 3 * chi_scaled[1] * c;
-    for (int l = 2; l < static_cast<int>(chi_scaled.size()); ++l) {
-      const double p2 = ((2 * l - 1) * c * p1 - (l - 1) * p0) / l;
-      sum += (2 * l + 1) * chi_scaled[static_cast<size_t>(l)] * p2;
-      p0 = p1;
-      p1 = p2;
-    }
-    return sum / (4 * kPi);
-  };
   // The weights (1 − f)·p'(ω_n·u)·dω_n toward each output direction and azimuth. (The
   // spike's f·D stays: it returns the light travelling along the view itself, which no
   // building blocks while the view passes; where the view ends on a surface, the
@@ -460,7 +448,7 @@ void FogDiffuseField::tabulate_sun_side(const std::vector<double>& chi_scaled, d
       const Vec3 u{horizontal * std::cos(phi), horizontal * std::sin(phi), up};
       const size_t at = d * kAzimuths + static_cast<size_t>(i);
       for (size_t n = 0; n < nodes; ++n)
-        weight[at * nodes + n] = static_cast<float>((1 - f_) * phase(dot(cone[n].dir, u)) * cone[n].weight);
+        weight[at * nodes + n] = static_cast<float>((1 - f_) * smooth_phase(dot(cone[n].dir, u)) * cone[n].weight);
     }
   tbb::parallel_for(size_t{0}, column_.size(), [&](size_t k) {
     std::vector<Spectrum> arriving(nodes), sampled(kAzimuths);
@@ -500,6 +488,19 @@ void FogDiffuseField::sun_side_terms(double z, double up, std::array<Spectrum, k
     return;
   }
   lookup_terms(sun_side_, z, up, terms);
+}
+
+double FogDiffuseField::smooth_phase(double cos_angle) const {
+  // Σ_l (2l + 1)·χ'_l·P_l(cos Θ)/4π, the Legendre polynomials by their recurrence.
+  const double c = std::clamp(cos_angle, -1.0, 1.0);
+  double p0 = 1, p1 = c, sum = chi_scaled_[0] + 3 * chi_scaled_[1] * c;
+  for (int l = 2; l < static_cast<int>(chi_scaled_.size()); ++l) {
+    const double p2 = ((2 * l - 1) * c * p1 - (l - 1) * p0) / l;
+    sum += (2 * l + 1) * chi_scaled_[static_cast<size_t>(l)] * p2;
+    p0 = p1;
+    p1 = p2;
+  }
+  return sum / (4 * kPi);
 }
 
 FogDiffuseField::LevelWeight FogDiffuseField::level_at(double z) const {

@@ -61,6 +61,9 @@ inline void add_azimuth_weighted(Spectrum& sum, const Spectrum* terms, int count
   }
 }
 
+// Gauss–Legendre nodes and weights on [0, 1] (weights sum to 1).
+void gauss_legendre_unit(int n, std::vector<double>& x, std::vector<double>& w);
+
 class FogDiffuseField {
  public:
   static constexpr int kStreams = 8;                   // per hemisphere (N)
@@ -76,6 +79,12 @@ class FogDiffuseField {
   // keeps the forward spike's light in the direct beam.
   double forward_fraction() const { return f_; }
   double sun_depth_scale() const { return 1.0 - omega_ * f_; }
+  double single_scattering_albedo() const { return omega_; }
+  // The phase function's mean cosine g (χ_1).
+  double mean_cosine() const { return f_ + (1 - f_) * chi_scaled_[1]; }
+  // δ-M's smooth phase function p'(cos Θ) (sr⁻¹, normalised over the sphere): what a
+  // unit of scattering sends outside the forward spike is (1 − f)·p'.
+  double smooth_phase(double cos_angle) const;
 
   // The light a unit of scattering at altitude z sends in the direction of travel with
   // upward cosine `up` and azimuth `relative_azimuth` (radians) from the sunbeam's (per
@@ -144,8 +153,9 @@ class FogDiffuseField {
   std::vector<Spectrum> scattered_, radiance_, without_sun_;  // [level][direction][term]
   std::vector<Spectrum> downward_;                            // [level]
   std::vector<Spectrum> sun_side_;                            // [level][direction][term]; empty without sun
-  // Fills sun_side_ from the solved radiance_; chi_scaled: the moments of p'.
-  void tabulate_sun_side(const std::vector<double>& chi_scaled, double sun_cosine);
+  std::vector<double> chi_scaled_;                            // the Legendre moments of p'
+  // Fills sun_side_ from the solved radiance_.
+  void tabulate_sun_side(double sun_cosine);
   std::array<double, kSpectralBins> largest_{};
 };
 

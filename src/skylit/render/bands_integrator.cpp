@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "skylit/core/angles.h"
 #include "skylit/material/reflection.h"
 
 namespace skylit {
@@ -59,6 +60,7 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
     path.fog_beyond = along.beyond;
     path.fog_whole = along.near.transmittance * along.beyond;
     path.fog_forward_gain = along.forward_gain * path.near.transmittance;  // 0 for the sky
+    path.fog_air_transmittance = path.near.transmittance;
     path.fog_open_radiance = along.open_radiance;
     if (along.seen_distance > along.entry_distance) {
       // The air cut where the ray enters the fog and where the fog hides the rest; each
@@ -164,12 +166,43 @@ Radiance BandsIntegrator::sky_seen_from(const Vec3& point, const Vec3& direction
 }
 
 CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& sky_light, const SurfacePoint& point,
-                                             const Vec3& to_viewer) const {
+                                             const Vec3& viewer) const {
   const Material& material = material_of(point);
+  const Vec3 to_viewer = normalize(viewer - point.position);
   double obstacle_distance_m = 0;
   const Irradiance diffuse = sky_light.diffuse_irradiance(point.position, point.normal, &obstacle_distance_m);
-  return {diffuse, sky_light.specular_radiance(point.position, point.normal, to_viewer, material),
-          reflected_sun_->from_rough(point.position, point.normal), obstacle_distance_m};
+  CachedSkyLight out{diffuse, sky_light.specular_radiance(point.position, point.normal, to_viewer, material),
+                     reflected_sun_->from_rough(point.position, point.normal), obstacle_distance_m};
+  if (const FogMedium* fog = scene_.fog(); fog && fog->hides_light_behind_surfaces())
+    out.fog_hidden = fog->hidden_behind(Ray{viewer, -to_viewer}, length(point.position - viewer), point.normal,
+                                        surface_extent(point));
+  return out;
+}
+
+double BandsIntegrator::surface_extent(const SurfacePoint& point) const {
+  // Rings of 8 probes at radii doubling from 0.25 m, each looking back at the plane from
+  // a height of a tenth of its radius; the surface reaches a ring where half its probes
+  // find it there, facing the same way (a wall's foot on the ground still reaches as far
+  // as the wall goes up and sideways: the ground hides the rest, as the field's own ground
+  // does).
+  const Vec3& n = point.normal;
+  const Vec3 t1 = normalize(std::abs(n.z) < 0.9 ? cross(n, Vec3{0, 0, 1}) : cross(n, Vec3{1, 0, 0}));
+  const Vec3 t2 = cross(n, t1);
+  double reached = 0;
+  for (double radius = 0.25; radius <= kLargestSurfaceExtentM; radius *= 2) {
+    const double height = 0.1 * radius;
+    int found = 0;
+    for (int k = 0; k < 8; ++k) {
+      const double angle = kPi * k / 4;
+      const Ray probe{point.position + height * n + radius * (std::cos(angle) * t1 + std::sin(angle) * t2), -n, 0.0,
+                      2 * height};
+      const std::optional<Hit> hit = scene_.tracer().intersect(probe);
+      if (hit && std::abs(hit->t - height) < 0.25 * height && std::abs(dot(hit->geometric_normal, n)) > 0.95) ++found;
+    }
+    if (found < 4) break;
+    reached = radius;
+  }
+  return reached;
 }
 
 Irradiance BandsIntegrator::reflected_sun(const SurfacePoint& point, const CachedSkyLight& cached) const {
@@ -247,13 +280,13 @@ Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const 
         sky_light = *shared;
     }
     if (!sky_light) {
-      sky_light = sky_light_for_one_pixel(hit.point, -ray.direction);
+      sky_light = sky_light_for_one_pixel(hit.point, ray.origin);
       if (context.slivers) context.slivers->add(context.image_x, context.image_y, hit.point, *sky_light);
     }
   } else {
-    sky_light = sky_light_at(hit.point, -ray.direction);
+    sky_light = sky_light_at(hit.point, ray.origin);
   }
-  return glow + path().seen_from_camera(shade(ray, hit.point, *sky_light));
+  return glow + path().seen_from_camera(shade(ray, hit.point, *sky_light), sky_light->fog_hidden);
 }
 
 }  // namespace skylit

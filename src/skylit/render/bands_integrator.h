@@ -84,16 +84,17 @@ class BandsIntegrator {
   // The same, exactly: traced here, with nothing taken from caches.
   Radiance radiance(const Ray& ray) const { return radiance(ray, first_hit(ray), {}); }
 
-  // The sky's light at a surface point seen from `to_viewer`, exactly, and the sun
-  // reflected onto it by rough glossy facades (what the surface cache holds).
-  CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& to_viewer) const {
-    return sky_light_at(*sky_light_, point, to_viewer);
+  // The sky's light at a surface point seen from `viewer`, exactly, the sun reflected
+  // onto it by rough glossy facades, and what it changes in the fog's light in front of
+  // it (what the surface cache holds).
+  CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& viewer) const {
+    return sky_light_at(*sky_light_, point, viewer);
   }
 
   // The same with kOnePixelDirections: for a value that stands for one pixel at most (the
   // cache's per-pixel level).
-  CachedSkyLight sky_light_for_one_pixel(const SurfacePoint& point, const Vec3& to_viewer) const {
-    return sky_light_at(*one_pixel_sky_light_, point, to_viewer);
+  CachedSkyLight sky_light_for_one_pixel(const SurfacePoint& point, const Vec3& viewer) const {
+    return sky_light_at(*one_pixel_sky_light_, point, viewer);
   }
 
   // Obstruction directions for sky light that stands for one pixel or less: the image
@@ -134,7 +135,11 @@ class BandsIntegrator {
 
  private:
   const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
-  CachedSkyLight sky_light_at(const SkyLight& sky_light, const SurfacePoint& point, const Vec3& to_viewer) const;
+  CachedSkyLight sky_light_at(const SkyLight& sky_light, const SurfacePoint& point, const Vec3& viewer) const;
+  // How far the plane of a surface point reaches about it (m), up to kLargestSurfaceExtentM:
+  // how much of the fog's light from behind it the surface hides (FogMedium::hidden_behind).
+  static constexpr double kLargestSurfaceExtentM = 512;
+  double surface_extent(const SurfacePoint& point) const;
   ViewPath view_path(const Ray& ray, double distance) const;
   // The sun's direct normal irradiance at a surface point if it reaches it (0 in
   // shadow or behind the surface).

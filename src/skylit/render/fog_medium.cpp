@@ -33,7 +33,10 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       camera_(camera),
       row_length_(kElevationRows),
       row_depth_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))) {
-  if (sky_light_.diffuse_field()) surface_light_ = std::make_unique<FogSurfaceLight>(sky_light_);
+  if (const FogDiffuseField* field = sky_light_.diffuse_field()) {
+    surface_light_ = std::make_unique<FogSurfaceLight>(sky_light_);
+    behind_ = std::make_unique<FogBehindSurfaces>(layer_, *field, -to_sun_);
+  }
   // The multiple-scattering source has azimuthal terms: the table keeps each one.
   std::array<Spectrum, FogSkyLight::kMaxTerms> probe;
   terms_ = sky_light_.in_scattered_terms(camera_, Vec3{1, 0, 0}, 0.0, 0.0, probe.data());
@@ -231,6 +234,25 @@ Spectrum FogMedium::sun_side_light_in_shadow(const Ray& ray, const std::vector<I
   }
   for (int b = 0; b < kSpectralBins; ++b) out[b] = std::max(out[b], 0.0f);
   return out;
+}
+
+FogHiddenBehind FogMedium::hidden_behind(const Ray& ray, double distance, const Vec3& normal, double extent_m) const {
+  if (!behind_ || !std::isfinite(distance)) return {};
+  const RaySpan inside = layer_.clip(ray.origin.z, ray.direction.z, 0.0, distance);
+  if (inside.empty()) return {};
+  // Whether the fog just in front of the surface lies in a shadow of the sun (then the
+  // view has lost the field's sun-side light there, FogMedium::along).
+  constexpr double kFrontM = 0.5;
+  bool in_shadow = false;
+  if (!row_sun_side_.empty()) {
+    const double from = std::max(inside.lo, distance - kFrontM);
+    double lit = 0;
+    for (const Interval& part : shadows_.sunlit_intervals(ray, from, distance)) lit += part.end - part.begin;
+    in_shadow = lit < 0.5 * (distance - from);
+  }
+  return behind_->at(ray.origin + ray.direction * distance, normal, -ray.direction,
+                     layer_.column(ray.origin.z, ray.direction.z, inside.lo, inside.hi), inside.hi - inside.lo,
+                     extent_m, in_shadow);
 }
 
 Transmittance FogMedium::sun_transmittance(const Vec3& point) const {

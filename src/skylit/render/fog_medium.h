@@ -12,6 +12,7 @@
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/sun_shadow_volumes.h"
+#include "skylit/media/fog_behind_surface.h"
 #include "skylit/media/fog_layer.h"
 #include "skylit/media/fog_sky_light.h"
 #include "skylit/media/fog_surface_light.h"
@@ -56,6 +57,13 @@ class FogMedium {
   static constexpr double kSeenDepth = 10.0;
   Along along(const Ray& ray, double distance) const;
 
+  // With multiple scattering, what a surface at the end of `ray` (at `distance`, facing
+  // `normal`, reaching `extent_m` about the point) changes in the fog's light in front
+  // of it: it hides the open field's light from behind its plane and gives its own
+  // (media/fog_behind_surface.h). Nothing in the paper's mode.
+  FogHiddenBehind hidden_behind(const Ray& ray, double distance, const Vec3& normal, double extent_m) const;
+  bool hides_light_behind_surfaces() const { return behind_ != nullptr; }
+
   // The fog's transmittance toward the sun from a point (0 if the sun is down).
   Transmittance sun_transmittance(const Vec3& point) const;
   // The same for the fast method's sunlit surfaces: with multiple scattering the light
@@ -81,6 +89,7 @@ class FogMedium {
   SunShadowVolumes shadows_;
   FogSkyLight sky_light_;
   std::unique_ptr<FogSurfaceLight> surface_light_;  // refers to sky_light_
+  std::unique_ptr<FogBehindSurfaces> behind_;       // refers to layer_ and sky_light_
 
   // The sky light scattered toward the camera along rays of elevation row i, up to
   // distance slice k: slices at length_i·(k/K)², length_i where the ray leaves the layer,

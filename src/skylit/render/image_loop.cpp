@@ -68,8 +68,8 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
     const Vec3& eye = scene.scene().camera.position;
     if (!options.exact_sky_light)
       sky_light = std::make_unique<SurfaceCache>(
-          *hits, [&](const SurfacePoint& p) { return integrator.sky_light_at(p, normalize(eye - p.position)); },
-          [&](const SurfacePoint& p) { return integrator.sky_light_for_one_pixel(p, normalize(eye - p.position)); });
+          *hits, [&](const SurfacePoint& p) { return integrator.sky_light_at(p, eye); },
+          [&](const SurfacePoint& p) { return integrator.sky_light_for_one_pixel(p, eye); });
     if (scene.lamps() && scene.fog()) glow = std::make_unique<LampGlowImage>(camera, *hits, *scene.lamps());
   });
   const ImageCaches caches{sky_light.get(), glow.get()};

@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "skylit/media/fog_behind_surface.h"
 #include "skylit/render/primary_hits.h"
 #include "skylit/spectrum/radiometry.h"
 
@@ -32,6 +33,9 @@ struct CachedSkyLight {
   // The harmonic mean distance to the obstacles the point's sky-light integral met
   // (SkyLight::diffuse_irradiance): how far the value may stand for other points.
   double obstacle_distance_m = std::numeric_limits<double>::infinity();
+  // In a multiply scattering fog: what the surface changes in the fog's light in front of
+  // it, seen from the camera (media/fog_behind_surface.h); as smooth along a surface.
+  FogHiddenBehind fog_hidden{};
 };
 
 // Whether a cached point can stand in for `point`: the same material on the same plane

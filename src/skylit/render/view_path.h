@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "skylit/media/fog_behind_surface.h"
 #include "skylit/spectrum/medium_stretch.h"
 
 namespace skylit {
@@ -28,21 +29,25 @@ struct ViewPath {
   // transmittance in the gain.
   Transmittance fog_forward_gain{0.0f};
   Radiance fog_open_radiance{0.0f};
+  // The air's transmittance up to a surface in the fog (for what the surface changes in
+  // the fog's light in front of it, FogHiddenBehind).
+  Transmittance fog_air_transmittance{1.0f};
   MediumStretch clouds;
   // Sky rays: the air between the camera and the first cloud they enter.
   MediumStretch air_to_clouds;
 
   // What the camera sees of the light leaving the ray's end toward it (a surface's, or
   // the sky's and the sun's). Clouds are farthest from the camera; the fog lies near the
-  // ground, in the air.
-  Radiance seen_from_camera(const Radiance& leaving) const {
+  // ground, in the air. `hidden`: a surface's change to the fog's light in front of it.
+  Radiance seen_from_camera(const Radiance& leaving, const FogHiddenBehind& hidden = {}) const {
     if (!to_sky) {
       const Radiance seen = near.seen_through(air_beyond.seen_through(clouds.seen_through(leaving)) * fog_beyond);
-      if (fog_forward_gain.is_black()) return seen;
-      Spectrum with_spike =
-          (seen + (leaving - fog_open_radiance) * (fog_forward_gain * clouds.transmittance)).spectrum();
-      for (int k = 0; k < kSpectralBins; ++k) with_spike[k] = std::max(0.0f, with_spike[k]);
-      return Radiance(with_spike);
+      if (fog_forward_gain.is_black() && hidden.gain.is_black()) return seen;
+      Spectrum with_fog = (seen + (leaving - fog_open_radiance) * (fog_forward_gain * clouds.transmittance) +
+                           (leaving * hidden.gain - hidden.field) * (fog_air_transmittance * clouds.transmittance))
+                              .spectrum();
+      for (int k = 0; k < kSpectralBins; ++k) with_fog[k] = std::max(0.0f, with_fog[k]);
+      return Radiance(with_fog);
     }
     // The sky's radiance holds the air along the whole ray; the clouds replace what lies
     // beyond them and are seen through the air before them (medium_stretch.h).
