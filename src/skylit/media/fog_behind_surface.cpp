@@ -43,8 +43,9 @@ FogBehindSurfaces::FogBehindSurfaces(const FogLayer& layer, const FogDiffuseFiel
     Ring& ring = rings_[static_cast<size_t>(r)];
     ring.cos_angle = std::cos(angle);
     ring.sin_angle = std::sin(angle);
-    ring.weight = spike_free * field.smooth_phase(ring.cos_angle) * kPi * w[static_cast<size_t>(r)] * ring.sin_angle *
-                  2 * kPi / kAround;
+    // (A truncated series may dip below 0 far from its peak.)
+    ring.weight = spike_free * std::max(0.0, field.smooth_phase(ring.cos_angle)) * kPi * w[static_cast<size_t>(r)] *
+                  ring.sin_angle * 2 * kPi / kAround;
   }
   for (int a = 0; a < kAround; ++a) {
     const double psi = 2 * kPi * (a + 0.5) / kAround;
@@ -56,7 +57,8 @@ FogBehindSurfaces::FogBehindSurfaces(const FogLayer& layer, const FogDiffuseFiel
   radiance_.assign(levels * kElevations * kAzimuths, Spectrum(0.0f));
   std::array<Spectrum, FogDiffuseField::kModes> terms;
   std::array<FogDiffuseField::AzimuthTerms, kAzimuths> azimuths;
-  for (int j = 0; j < kAzimuths; ++j) azimuths[static_cast<size_t>(j)] = FogDiffuseField::azimuth_terms(j * kAzimuthStep);
+  for (int j = 0; j < kAzimuths; ++j)
+    azimuths[static_cast<size_t>(j)] = FogDiffuseField::azimuth_terms(j * kAzimuthStep);
   for (size_t k = 0; k < levels; ++k)
     for (int i = 0; i < kElevations; ++i) {
       field.radiance_terms_at_level(k, std::sin(radians(-90.0 + i * kElevationStepDeg)), terms);
@@ -92,8 +94,7 @@ Spectrum FogBehindSurfaces::field_radiance(FogDiffuseField::LevelWeight level, c
 }
 
 FogHiddenBehind FogBehindSurfaces::at(const Vec3& point, const Vec3& normal, const Vec3& toward_viewer,
-                                      double column_to_viewer_m, double length_in_fog_m, double extent_m,
-                                      bool fog_in_shadow) const {
+                                      double column_to_viewer_m, double length_in_fog_m, double extent_m) const {
   const double un = dot(toward_viewer, normal);
   const double density = layer_.density(point.z);
   const auto& sigma = layer_.unit_density_extinction_bins();
@@ -112,36 +113,33 @@ FogHiddenBehind FogBehindSurfaces::at(const Vec3& point, const Vec3& normal, con
   const Vec3 e2 = cross(toward_viewer, e1);
   const FogDiffuseField::LevelWeight level = field_.level_at(point.z);
   double gain = 0;
-  Spectrum field(0.0f);
+  Spectrum field(0.0f), field_in_shadow(0.0f);
   for (const Ring& ring : rings_)
     for (size_t i = 0; i < kAround; ++i) {
       const Vec3 omega = ring.cos_angle * toward_viewer + ring.sin_angle * (around_cos_[i] * e1 + around_sin_[i] * e2);
       const double on = dot(omega, normal);
       if (on <= 1e-6) continue;  // light that does not come through the plane
-      // ∫_0^S e^(σs)·e^(−σ_tr·s·(u·n)/(ω·n)) ds, times T(viewer, surface) = e^(−τ):
-      // (e^(kS − τ) − e^(−τ))/k, k = σ − σ_tr·(u·n)/(ω·n).
+      // ∫_0^S e^(σs)·e^(−σ_tr·s·(u·n)/(ω·n)) ds = (e^(kS) − 1)/k, k = σ − σ_tr·(u·n)/(ω·n)
+      // (T(viewer, surface) is the caller's).
       const double a = un / on;
       const double k = extinction * (1 - transport_scale_ * a);
       // As far as the plane point stays on the surface.
       const double sideways = length(u_along_plane - a * (omega - on * normal));
       const double reach = sideways * stretch > extent_m ? extent_m / sideways : stretch;
-      const double along = std::abs(k * reach) < 1e-9 ? reach * std::exp(-depth_ref)
-                                                      : (std::exp(k * reach - depth_ref) - std::exp(-depth_ref)) / k;
+      const double along = std::abs(k * reach) < 1e-9 ? reach : std::expm1(k * reach) / k;
       const double weight = ring.weight * along;
       gain += weight;
+      const Spectrum light = field_radiance(level, omega) * static_cast<float>(weight);
+      field += light;
       // In a shadow the field's light from the sun's side is out of the view already.
-      if (fog_in_shadow && dot(omega, sunbeam_) > 0) continue;
-      field += field_radiance(level, omega) * static_cast<float>(weight);
+      if (dot(omega, sunbeam_) <= 0) field_in_shadow += light;
     }
-  // Per bin: ωσ·ρ, and its own transmittance against the reference bin's.
-  Spectrum gains, fields;
-  for (int b = 0; b < kSpectralBins; ++b) {
-    const double s = sigma[static_cast<size_t>(b)];
-    const double factor = albedo_ * s * density * std::exp(std::min(700.0, -(s - sigma_ref) * column_to_viewer_m));
-    gains[b] = static_cast<float>(factor * gain);
-    fields[b] = static_cast<float>(factor * field[b]);
-  }
-  return {Transmittance(gains), Radiance(fields)};
+  // Per bin: ωσ·ρ.
+  Spectrum factor;
+  for (int b = 0; b < kSpectralBins; ++b)
+    factor[b] = static_cast<float>(albedo_ * sigma[static_cast<size_t>(b)] * density);
+  return {Transmittance(factor * static_cast<float>(gain)), Radiance(factor * field),
+          Radiance(factor * field_in_shadow)};
 }
 
 }  // namespace skylit

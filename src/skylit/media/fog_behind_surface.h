@@ -19,14 +19,14 @@
 //     ΔL = Σ_ω (1 − f)·p'(ω·u)·dω·W(ω)·(L_surface − L_field(ω)),
 //     W(ω) = ωσ·∫_0^S T(viewer, s)·e^(−σ_tr·s·(u·n)/(ω·n)) ds
 // in closed form with the fog's density at the surface: T(viewer, s) = T(viewer,
-// surface)·e^(σs) for s up to the optical depth to the viewer. The surface is a disc of
-// the radius R it extends to about the point (measured by the caller): along ω, the
-// plane point the light leaves from lies s·|u_t − (u·n)/(ω·n)·ω_t| from the point (t:
-// the parts along the plane), so s stops where that reaches R. A small target hides
-// little more than the light along the view itself (the spike's). The field at the
-// surface's altitude stands
-// for the field where the light leaves the plane; a glossy surface is taken to leave
-// toward ω what it leaves toward the viewer.
+// surface)·e^(σs) for s up to the optical depth to the viewer, T(viewer, surface) left to
+// the caller. The surface is a disc of the radius R it extends to about the point
+// (measured by the caller): along ω, the plane point the light leaves from lies
+// s·|u_t − (u·n)/(ω·n)·ω_t| from the point (t: the parts along the plane), so s stops
+// where that reaches R. A small target hides little more than the light along the view
+// itself (the spike's). The field at the surface's altitude stands for the field where
+// the light leaves the plane. The surface's own light toward ω is what it leaves alike
+// toward every direction (the caller's: not the sun's highlight nor a mirror's view).
 //
 // In a building's shadow FogMedium has already taken the field's light from the sun's
 // side out of the view (FogDiffuseField::sun_side_terms); there only the surface's own
@@ -44,11 +44,16 @@
 namespace skylit {
 
 // What the camera sees more of a surface leaving radiance L through the fog in front of
-// it: L·gain − field (the open field's light from behind the surface's plane, replaced
-// by the surface's), both already through the fog to the viewer.
+// it: (L·gain − field)·T, T the fog's transmittance from the surface to the viewer (the
+// caller's: held without it, these interpolate across a surface seen over a range of
+// depths), field the open field's light from behind the surface's plane: all of it, or
+// where the fog in front of the surface lies in a shadow of the sun, the part from
+// outside the sun's side (the view has lost the rest already).
 struct FogHiddenBehind {
   Transmittance gain{0.0f};
   Radiance field{0.0f};
+  Radiance field_in_shadow{0.0f};
+  const Radiance& field_for(bool fog_in_shadow) const { return fog_in_shadow ? field_in_shadow : field; }
 };
 
 class FogBehindSurfaces {
@@ -60,10 +65,9 @@ class FogBehindSurfaces {
 
   // At a surface `point` with `normal`, seen from `toward_viewer` (unit, u·n > 0) through
   // a fog column `column_to_viewer_m` (∫ρ ds from the viewer) of which `length_in_fog_m`
-  // lies in the layer; `extent_m`: how far the surface reaches about the point;
-  // `fog_in_shadow`: the fog in front of the surface is in a shadow of the sun.
+  // lies in the layer; `extent_m`: how far the surface reaches about the point.
   FogHiddenBehind at(const Vec3& point, const Vec3& normal, const Vec3& toward_viewer, double column_to_viewer_m,
-                     double length_in_fog_m, double extent_m, bool fog_in_shadow) const;
+                     double length_in_fog_m, double extent_m) const;
 
   // Quadrature about the view: rings in the angle from u, directions around each ring.
   static constexpr int kRings = 16, kAround = 16;
@@ -75,7 +79,7 @@ class FogBehindSurfaces {
 
   const FogLayer& layer_;
   const FogDiffuseField& field_;
-  double albedo_;       // ω
+  double albedo_;           // ω
   double transport_scale_;  // 1 − ωg: σ_tr/σ
   Vec3 sunbeam_, sun_horizontal_;
   int reference_bin_;  // σ's bin for the shape of W (the fog is nearly grey)

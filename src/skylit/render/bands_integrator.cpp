@@ -61,6 +61,7 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
     path.fog_whole = along.near.transmittance * along.beyond;
     path.fog_forward_gain = along.forward_gain * path.near.transmittance;  // 0 for the sky
     path.fog_air_transmittance = path.near.transmittance;
+    path.fog_end_in_shadow = along.end_in_shadow;
     path.fog_open_radiance = along.open_radiance;
     if (along.seen_distance > along.entry_distance) {
       // The air cut where the ray enters the fog and where the fog hides the rest; each
@@ -174,7 +175,7 @@ CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& sky_light, const Su
   CachedSkyLight out{diffuse, sky_light.specular_radiance(point.position, point.normal, to_viewer, material),
                      reflected_sun_->from_rough(point.position, point.normal), obstacle_distance_m};
   if (const FogMedium* fog = scene_.fog(); fog && fog->hides_light_behind_surfaces())
-    out.fog_hidden = fog->hidden_behind(Ray{viewer, -to_viewer}, length(point.position - viewer), point.normal,
+    out.fog_hidden = fog->hidden_behind(Ray{viewer, -to_viewer}, length(point.position - viewer), point.plane(),
                                         surface_extent(point));
   return out;
 }
@@ -185,7 +186,7 @@ double BandsIntegrator::surface_extent(const SurfacePoint& point) const {
   // find it there, facing the same way (a wall's foot on the ground still reaches as far
   // as the wall goes up and sideways: the ground hides the rest, as the field's own ground
   // does).
-  const Vec3& n = point.normal;
+  const Vec3& n = point.plane();
   const Vec3 t1 = normalize(std::abs(n.z) < 0.9 ? cross(n, Vec3{0, 0, 1}) : cross(n, Vec3{1, 0, 0}));
   const Vec3 t2 = cross(n, t1);
   double reached = 0;
@@ -232,7 +233,8 @@ Irradiance BandsIntegrator::irradiance(const SurfacePoint& point, const CachedSk
   return e;
 }
 
-Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const {
+Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light,
+                                Radiance* alike_everywhere) const {
   const PointMaterial point_material = scene_.material_at(point);
   const Material& material = point_material.get();
   const Vec3 to_viewer = -ray.direction;
@@ -245,6 +247,10 @@ Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const
   Radiance radiance = lambertian_radiance(diffuse_albedo(material, dot(point.normal, to_viewer)), irradiance);
   // Glossy part: the sky's (cached) and the sun's highlight.
   radiance += sky_light.specular_radiance * share;
+  // What it leaves about alike toward every direction (FogHiddenBehind): not the sun's
+  // highlight nor what the mirror shows, which leave toward the camera alone.
+  if (alike_everywhere)
+    *alike_everywhere = point.emissive ? radiance + emitted_radiance(point.emission_cd_m2) : radiance;
   if (has_point_light_lobe(material))
     radiance += point_light_reflection(material, point.normal, to_sun_, to_viewer).reflect(sun);
   if (const SceneLamps* lamps = scene_.lamps()) radiance += lamps->reflected(point, material, to_viewer);
@@ -286,7 +292,9 @@ Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const 
   } else {
     sky_light = sky_light_at(hit.point, ray.origin);
   }
-  return glow + path().seen_from_camera(shade(ray, hit.point, *sky_light), sky_light->fog_hidden);
+  Radiance alike_everywhere;
+  const Radiance leaving = shade(ray, hit.point, *sky_light, &alike_everywhere);
+  return glow + path().seen_from_camera(leaving, sky_light->fog_hidden, alike_everywhere);
 }
 
 }  // namespace skylit

@@ -145,7 +145,10 @@ class BandsIntegrator {
   // shadow or behind the surface).
   Irradiance sun_reaching(const SurfacePoint& point) const;
   // The light a surface sends toward the camera, before the air and fog on the way.
-  Radiance shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light) const;
+  // `alike_everywhere`, if given: the part of it the surface leaves about alike toward
+  // every direction (all but the sun's highlight and the mirror's view).
+  Radiance shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light,
+                 Radiance* alike_everywhere = nullptr) const;
   // The lamps' glow in fog along the ray: from the glow image if given, else exactly.
   Radiance lamp_glow(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const;
   // The sky light's share that gets through the clouds and the fog to a point, on a

@@ -211,6 +211,7 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
     if (!lit_parts.empty()) {
       in_scattered -= sun_side_light_in_shadow(ray, lit_parts, inside.lo, camera ? &*camera : nullptr);
       for (int b = 0; b < kSpectralBins; ++b) in_scattered[b] = std::max(in_scattered[b], 0.0f);
+      out.end_in_shadow = std::isfinite(distance) && inside.hi >= distance && lit_parts.back().end >= inside_end;
     }
   }
   out.near.in_scattered = Radiance(in_scattered);
@@ -240,19 +241,9 @@ FogHiddenBehind FogMedium::hidden_behind(const Ray& ray, double distance, const 
   if (!behind_ || !std::isfinite(distance)) return {};
   const RaySpan inside = layer_.clip(ray.origin.z, ray.direction.z, 0.0, distance);
   if (inside.empty()) return {};
-  // Whether the fog just in front of the surface lies in a shadow of the sun (then the
-  // view has lost the field's sun-side light there, FogMedium::along).
-  constexpr double kFrontM = 0.5;
-  bool in_shadow = false;
-  if (!row_sun_side_.empty()) {
-    const double from = std::max(inside.lo, distance - kFrontM);
-    double lit = 0;
-    for (const Interval& part : shadows_.sunlit_intervals(ray, from, distance)) lit += part.end - part.begin;
-    in_shadow = lit < 0.5 * (distance - from);
-  }
   return behind_->at(ray.origin + ray.direction * distance, normal, -ray.direction,
                      layer_.column(ray.origin.z, ray.direction.z, inside.lo, inside.hi), inside.hi - inside.lo,
-                     extent_m, in_shadow);
+                     extent_m);
 }
 
 Transmittance FogMedium::sun_transmittance(const Vec3& point) const {

@@ -52,6 +52,9 @@ class FogMedium {
     // (docs/fog.md, "Surfaces seen through the fog").
     Transmittance forward_gain{0.0f};
     Radiance open_radiance{0.0f};
+    // With multiple scattering, for a ray that ends on a surface: the fog just before it
+    // lies in a shadow of the sun (FogHiddenBehind::field_for).
+    bool end_in_shadow = false;
     MediumStretch whole() const { return {near.transmittance * beyond, near.in_scattered}; }
   };
   static constexpr double kSeenDepth = 10.0;

@@ -72,6 +72,7 @@ class PreparedScene {
                        object.material_of(hit.triangle)};
     const bool front = dot(point.normal, ray.direction) <= 0;
     if (!front) point.normal = -point.normal;
+    point.plane_normal = point.normal;
     if (!object.corner_normals.empty()) shade_smooth(object, hit, ray, front, point);
     return point;
   }

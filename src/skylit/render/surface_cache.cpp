@@ -85,15 +85,18 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
       sum.diffuse_irradiance += e->value.diffuse_irradiance * static_cast<float>(w);
       sum.specular_radiance += e->value.specular_radiance * static_cast<float>(w);
       sum.rough_reflected_sun += e->value.rough_reflected_sun * static_cast<float>(w);
-      sum.fog_hidden.gain += e->value.fog_hidden.gain * static_cast<float>(w);
-      sum.fog_hidden.field += e->value.fog_hidden.field * static_cast<float>(w);
+      if (!e->value.fog_hidden.gain.is_black()) {  // only in a multiply scattering fog
+        sum.fog_hidden.gain += e->value.fog_hidden.gain * static_cast<float>(w);
+        sum.fog_hidden.field += e->value.fog_hidden.field * static_cast<float>(w);
+        sum.fog_hidden.field_in_shadow += e->value.fog_hidden.field_in_shadow * static_cast<float>(w);
+      }
       total += w;
     }
   }
   if (total <= 0) return std::nullopt;
   const float scale = static_cast<float>(1.0 / total);
   CachedSkyLight out{sum.diffuse_irradiance * scale, sum.specular_radiance * scale, sum.rough_reflected_sun * scale};
-  out.fog_hidden = {sum.fog_hidden.gain * scale, sum.fog_hidden.field * scale};
+  out.fog_hidden = {sum.fog_hidden.gain * scale, sum.fog_hidden.field * scale, sum.fog_hidden.field_in_shadow * scale};
   return out;
 }
 

@@ -19,6 +19,10 @@ struct SurfacePoint {
   bool emissive = false;                  // the surface gives off emission_cd_m2
   std::array<float, 3> color{};           // linear sRGB reflectance of the body
   std::array<float, 3> emission_cd_m2{};  // emitted luminance per linear sRGB channel
+  // The triangle's own normal, facing the camera, where `normal` is a smooth or mapped
+  // one (zero where not known: then `normal` is the plane's).
+  Vec3 plane_normal{};
+  const Vec3& plane() const { return plane_normal == Vec3{} ? normal : plane_normal; }
 };
 
 }  // namespace skylit
