@@ -61,7 +61,6 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
     path.fog_whole = along.near.transmittance * along.beyond;
     path.fog_forward_gain = along.forward_gain * path.near.transmittance;  // 0 for the sky
     path.fog_air_transmittance = path.near.transmittance;
-    path.fog_end_in_shadow = along.end_in_shadow;
     path.fog_open_radiance = along.open_radiance;
     if (along.seen_distance > along.entry_distance) {
       // The air cut where the ray enters the fog and where the fog hides the rest; each
@@ -294,7 +293,13 @@ Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const 
   }
   Radiance alike_everywhere;
   const Radiance leaving = shade(ray, hit.point, *sky_light, &alike_everywhere);
-  return glow + path().seen_from_camera(leaving, sky_light->fog_hidden, alike_everywhere);
+  if (sky_light->fog_hidden.gain.is_black()) return glow + path().seen_from_camera(leaving);
+  // The fog just before a surface the sun does not reach lies in a shadow: the view has
+  // lost the field's sun-side light there (the surface's own sun test, not the shadow
+  // volumes along the view, which flicker where a face lies along the sunbeam).
+  ViewPath with_hidden = path();
+  with_hidden.fog_end_in_shadow = scene_.fog()->takes_sun_side_out_in_shadows() && sun_reaching(hit.point).is_black();
+  return glow + with_hidden.seen_from_camera(leaving, sky_light->fog_hidden, alike_everywhere);
 }
 
 }  // namespace skylit

@@ -211,7 +211,6 @@ FogMedium::Along FogMedium::along(const Ray& ray, double distance) const {
     if (!lit_parts.empty()) {
       in_scattered -= sun_side_light_in_shadow(ray, lit_parts, inside.lo, camera ? &*camera : nullptr);
       for (int b = 0; b < kSpectralBins; ++b) in_scattered[b] = std::max(in_scattered[b], 0.0f);
-      out.end_in_shadow = std::isfinite(distance) && inside.hi >= distance && lit_parts.back().end >= inside_end;
     }
   }
   out.near.in_scattered = Radiance(in_scattered);

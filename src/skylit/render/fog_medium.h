@@ -52,9 +52,6 @@ class FogMedium {
     // (docs/fog.md, "Surfaces seen through the fog").
     Transmittance forward_gain{0.0f};
     Radiance open_radiance{0.0f};
-    // With multiple scattering, for a ray that ends on a surface: the fog just before it
-    // lies in a shadow of the sun (FogHiddenBehind::field_for).
-    bool end_in_shadow = false;
     MediumStretch whole() const { return {near.transmittance * beyond, near.in_scattered}; }
   };
   static constexpr double kSeenDepth = 10.0;
@@ -66,6 +63,9 @@ class FogMedium {
   // (media/fog_behind_surface.h). Nothing in the paper's mode.
   FogHiddenBehind hidden_behind(const Ray& ray, double distance, const Vec3& normal, double extent_m) const;
   bool hides_light_behind_surfaces() const { return behind_ != nullptr; }
+  // Whether views lose the field's sun-side light in the buildings' shadows (a sun
+  // lights the fog and the field is multiply scattered).
+  bool takes_sun_side_out_in_shadows() const { return !row_sun_side_.empty(); }
 
   // The fog's transmittance toward the sun from a point (0 if the sun is down).
   Transmittance sun_transmittance(const Vec3& point) const;

@@ -32,7 +32,7 @@ struct ViewPath {
   // The air's transmittance up to a surface in the fog (for what the surface changes in
   // the fog's light in front of it, FogHiddenBehind).
   Transmittance fog_air_transmittance{1.0f};
-  bool fog_end_in_shadow = false;  // FogMedium::Along::end_in_shadow
+  bool fog_end_in_shadow = false;  // the fog just before a surface lies in a shadow of the sun
   MediumStretch clouds;
   // Sky rays: the air between the camera and the first cloud they enter.
   MediumStretch air_to_clouds;
