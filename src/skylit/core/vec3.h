@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <utility>
 
 #include "skylit/core/angles.h"
 
@@ -49,6 +50,12 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 inline double length(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline Vec3 normalize(const Vec3& a) { return a / length(a); }
+// Two unit vectors that make a right-handed orthonormal frame (e1, e2, n) with the unit
+// vector n: e1 across n from the z axis, or from the x axis when n lies near z.
+inline std::pair<Vec3, Vec3> perpendicular_pair(const Vec3& n) {
+  const Vec3 e1 = normalize(std::abs(n.z) < 0.9 ? cross(n, Vec3{0, 0, 1}) : cross(n, Vec3{1, 0, 0}));
+  return {e1, cross(n, e1)};
+}
 
 // Unit vector toward a direction given as altitude above the horizon and azimuth
 // clockwise from north (east = 90°), both in degrees.

@@ -108,9 +108,7 @@ FogHiddenBehind FogBehindSurfaces::at(const Vec3& point, const Vec3& normal, con
   const double extinction = sigma_ref * density;
   const double stretch = std::min(length_in_fog_m, column_to_viewer_m / density);
   // A frame about the view.
-  const Vec3 e1 = normalize(std::abs(toward_viewer.z) < 0.9 ? cross(toward_viewer, Vec3{0, 0, 1})
-                                                            : cross(toward_viewer, Vec3{1, 0, 0}));
-  const Vec3 e2 = cross(toward_viewer, e1);
+  const auto [e1, e2] = perpendicular_pair(toward_viewer);
   const FogDiffuseField::LevelWeight level = field_.level_at(point.z);
   double gain = 0;
   Spectrum field(0.0f), field_in_shadow(0.0f);

@@ -186,8 +186,7 @@ double BandsIntegrator::surface_extent(const SurfacePoint& point) const {
   // as the wall goes up and sideways: the ground hides the rest, as the field's own ground
   // does).
   const Vec3& n = point.plane();
-  const Vec3 t1 = normalize(std::abs(n.z) < 0.9 ? cross(n, Vec3{0, 0, 1}) : cross(n, Vec3{1, 0, 0}));
-  const Vec3 t2 = cross(n, t1);
+  const auto [t1, t2] = perpendicular_pair(n);
   double reached = 0;
   for (double radius = 0.25; radius <= kLargestSurfaceExtentM; radius *= 2) {
     const double height = 0.1 * radius;
@@ -233,7 +232,7 @@ Irradiance BandsIntegrator::irradiance(const SurfacePoint& point, const CachedSk
 }
 
 Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light,
-                                Radiance* alike_everywhere) const {
+                                LeavingParts* parts) const {
   const PointMaterial point_material = scene_.material_at(point);
   const Material& material = point_material.get();
   const Vec3 to_viewer = -ray.direction;
@@ -248,8 +247,10 @@ Radiance BandsIntegrator::shade(const Ray& ray, const SurfacePoint& point, const
   radiance += sky_light.specular_radiance * share;
   // What it leaves about alike toward every direction (FogHiddenBehind): not the sun's
   // highlight nor what the mirror shows, which leave toward the camera alone.
-  if (alike_everywhere)
-    *alike_everywhere = point.emissive ? radiance + emitted_radiance(point.emission_cd_m2) : radiance;
+  if (parts) {
+    parts->alike_everywhere = point.emissive ? radiance + emitted_radiance(point.emission_cd_m2) : radiance;
+    parts->sun_reaches = !sun.is_black();
+  }
   if (has_point_light_lobe(material))
     radiance += point_light_reflection(material, point.normal, to_sun_, to_viewer).reflect(sun);
   if (const SceneLamps* lamps = scene_.lamps()) radiance += lamps->reflected(point, material, to_viewer);
@@ -291,15 +292,14 @@ Radiance BandsIntegrator::radiance(const Ray& ray, const PrimaryHit& hit, const 
   } else {
     sky_light = sky_light_at(hit.point, ray.origin);
   }
-  Radiance alike_everywhere;
-  const Radiance leaving = shade(ray, hit.point, *sky_light, &alike_everywhere);
+  LeavingParts parts;
+  const Radiance leaving = shade(ray, hit.point, *sky_light, &parts);
   if (sky_light->fog_hidden.gain.is_black()) return glow + path().seen_from_camera(leaving);
   // The fog just before a surface the sun does not reach lies in a shadow: the view has
   // lost the field's sun-side light there (the surface's own sun test, not the shadow
   // volumes along the view, which flicker where a face lies along the sunbeam).
-  ViewPath with_hidden = path();
-  with_hidden.fog_end_in_shadow = scene_.fog()->takes_sun_side_out_in_shadows() && sun_reaching(hit.point).is_black();
-  return glow + with_hidden.seen_from_camera(leaving, sky_light->fog_hidden, alike_everywhere);
+  const bool fog_in_shadow = scene_.fog()->takes_sun_side_out_in_shadows() && !parts.sun_reaches;
+  return glow + path().seen_from_camera(leaving, {sky_light->fog_hidden, parts.alike_everywhere, fog_in_shadow});
 }
 
 }  // namespace skylit

@@ -145,10 +145,15 @@ class BandsIntegrator {
   // shadow or behind the surface).
   Irradiance sun_reaching(const SurfacePoint& point) const;
   // The light a surface sends toward the camera, before the air and fog on the way.
-  // `alike_everywhere`, if given: the part of it the surface leaves about alike toward
-  // every direction (all but the sun's highlight and the mirror's view).
+  // `parts`, if given: the part of it the surface leaves about alike toward every
+  // direction (all but the sun's highlight and the mirror's view), and whether the sun
+  // reaches it.
+  struct LeavingParts {
+    Radiance alike_everywhere{0.0f};
+    bool sun_reaches = false;
+  };
   Radiance shade(const Ray& ray, const SurfacePoint& point, const CachedSkyLight& sky_light,
-                 Radiance* alike_everywhere = nullptr) const;
+                 LeavingParts* parts = nullptr) const;
   // The lamps' glow in fog along the ray: from the glow image if given, else exactly.
   Radiance lamp_glow(const Ray& ray, const PrimaryHit& hit, const SampleContext& context) const;
   // The sky light's share that gets through the clouds and the fog to a point, on a

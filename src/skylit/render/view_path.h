@@ -10,6 +10,13 @@
 
 namespace skylit {
 
+// What a surface changes in the fog's light in front of it (ViewPath::seen_from_camera).
+struct SurfaceFrontInFog {
+  FogHiddenBehind hidden;
+  Radiance alike_everywhere{0.0f};  // the part of the surface's light sent toward every direction
+  bool fog_in_shadow = false;       // the fog just before the surface lies in a shadow of the sun
+};
+
 struct ViewPath {
   bool to_sky = false;  // the ray meets no object
   // From the camera to where the fog hides the rest (FogMedium::Along): the air, and
@@ -32,24 +39,22 @@ struct ViewPath {
   // The air's transmittance up to a surface in the fog (for what the surface changes in
   // the fog's light in front of it, FogHiddenBehind).
   Transmittance fog_air_transmittance{1.0f};
-  bool fog_end_in_shadow = false;  // the fog just before a surface lies in a shadow of the sun
   MediumStretch clouds;
   // Sky rays: the air between the camera and the first cloud they enter.
   MediumStretch air_to_clouds;
 
   // What the camera sees of the light leaving the ray's end toward it (a surface's, or
   // the sky's and the sun's). Clouds are farthest from the camera; the fog lies near the
-  // ground, in the air. `hidden`: a surface's change to the fog's light in front of it,
-  // `alike_everywhere` the part of `leaving` the surface sends toward every direction.
-  Radiance seen_from_camera(const Radiance& leaving, const FogHiddenBehind& hidden = {},
-                            const Radiance& alike_everywhere = Radiance(0.0f)) const {
+  // ground, in the air. `front`: what a surface changes in the fog's light in front of it.
+  Radiance seen_from_camera(const Radiance& leaving, const SurfaceFrontInFog& front = {}) const {
     if (!to_sky) {
       const Radiance seen = near.seen_through(air_beyond.seen_through(clouds.seen_through(leaving)) * fog_beyond);
+      const FogHiddenBehind& hidden = front.hidden;
       if (fog_forward_gain.is_black() && hidden.gain.is_black()) return seen;
       // The hidden light is held without the fog's transmittance to the camera, which
       // is the pixel's own (fog_whole).
       Spectrum with_fog = (seen + (leaving - fog_open_radiance) * (fog_forward_gain * clouds.transmittance) +
-                           (alike_everywhere * hidden.gain - hidden.field_for(fog_end_in_shadow)) *
+                           (front.alike_everywhere * hidden.gain - hidden.field_for(front.fog_in_shadow)) *
                                (fog_whole * fog_air_transmittance * clouds.transmittance))
                               .spectrum();
       for (int k = 0; k < kSpectralBins; ++k) with_fog[k] = std::max(0.0f, with_fog[k]);
