@@ -16,6 +16,7 @@ struct Vec3 {
   constexpr Vec3(double x_, double y_, double z_) : x(x_), y(y_), z(z_) {}
 
   constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
   constexpr Vec3 operator-() const { return {-x, -y, -z}; }
   constexpr Vec3& operator+=(const Vec3& o) {
     x += o.x;

@@ -1,5 +1,5 @@
 // A point light's shadow volumes (point_light_shadow_volumes.h): frusta from the light,
-// tested group by group behind cones.
+// found by the directions of their faces.
 #include "skylit/geometry/point_light_shadow_volumes.h"
 
 #include <algorithm>
@@ -14,8 +14,9 @@ namespace skylit {
 
 namespace {
 
-// The hierarchy's leaves hold at most this many frusta.
-constexpr uint32_t kFrustaPerLeaf = 4;
+// Cells along each side of the cube map's faces: 64 makes cells about 1.3° wide at
+// their widest (measured on the Delft night scene: 32 and 128 were slower).
+constexpr int kCellsPerSide = 64;
 
 // The frustum behind a convex face seen from a point light at `light`, as its planes
 // appended to `planes`, or false if it has none (degenerate, or edge-on to the light):
@@ -70,133 +71,35 @@ std::vector<ShadowCasterFaces> shadow_caster_faces(const std::vector<const Trian
   return out;
 }
 
-// A casting face's frustum (planes [first_plane, first_plane + sides + 1) of the
-// constructor's list) with the bounding sphere of its corners.
-struct PointLightShadowVolumes::Caster {
-  uint32_t first_plane, sides;
-  Vec3 centre;
-  double radius;
-  Vec3 direction;  // unit, from the light toward the centre (ordering only)
-  double top_z;    // the highest corner's z when the light is above every corner, else +∞
-};
-
 PointLightShadowVolumes::PointLightShadowVolumes(const std::vector<const TriangleMesh*>& meshes, const Vec3& light,
                                                  const Vec3& aim, double max_gamma_deg, double reach_m)
     : PointLightShadowVolumes(shadow_caster_faces(meshes), light, aim, max_gamma_deg, reach_m) {}
 
 PointLightShadowVolumes::PointLightShadowVolumes(const std::vector<ShadowCasterFaces>& meshes, const Vec3& light,
                                                  const Vec3& aim, double max_gamma_deg, double reach_m)
-    : light_(light) {
+    : light_(light), cells_(light, kCellsPerSide) {
   if (!is_finite(light)) throw std::invalid_argument("PointLightShadowVolumes: the light's position must be finite");
   scale_ = std::max(1.0, max_abs(light));
-  std::vector<Caster> casters;
-  std::vector<HalfSpace> planes;
   for (const ShadowCasterFaces& mesh : meshes) {
     // A closed surface is left through faces facing the light, as for the sun.
     const int keep = mesh.casting_side;
     for (const ConvexFace& face : mesh.faces) {
       if (keep != 0 && !(keep * dot(face.normal, light - face.corners[0]) > 0)) continue;
       Vec3 centre{0, 0, 0};
-      double top = -std::numeric_limits<double>::infinity();
-      for (const Vec3& c : face.corners) {
-        centre += c;
-        top = std::max(top, c.z);
-      }
+      for (const Vec3& c : face.corners) centre += c;
       centre = centre / static_cast<double>(face.corners.size());
       double radius = 0;
       for (const Vec3& c : face.corners) radius = std::max(radius, length(c - centre));
       if (outside_cone(centre, radius, light, aim, max_gamma_deg)) continue;
-      const double distance = length(centre - light);
-      if (distance - radius > reach_m) continue;
-      // Lit from above, the frustum runs down from the face: nothing in it is higher
-      // than its highest corner.
-      Caster caster{static_cast<uint32_t>(planes.size()),
-                    static_cast<uint32_t>(face.corners.size()),
-                    centre,
-                    radius,
-                    distance > 0 ? (centre - light) / distance : Vec3{0, 0, 1},
-                    top < light.z ? top : std::numeric_limits<double>::infinity()};
-      if (!make_frustum(face, centre, light, planes)) continue;
-      casters.push_back(caster);
+      if (length(centre - light) - radius > reach_m) continue;
+      const auto first = static_cast<uint32_t>(planes_.size());
+      if (!make_frustum(face, centre, light, planes_)) continue;
+      cells_.add(static_cast<uint32_t>(frusta_.size()), face);
+      frusta_.push_back({first, static_cast<uint32_t>(face.corners.size())});
       for (const Vec3& c : face.corners) scale_ = std::max(scale_, max_abs(c));
     }
   }
-  if (casters.empty()) return;
-  nodes_.reserve(2 * casters.size() / kFrustaPerLeaf + 1);
-  build(casters, 0, static_cast<uint32_t>(casters.size()));
-  // The planes in the hierarchy's order.
-  frusta_.reserve(casters.size());
-  planes_.reserve(planes.size());
-  for (const Caster& caster : casters) {
-    frusta_.push_back({static_cast<uint32_t>(planes_.size()), caster.sides});
-    planes_.insert(planes_.end(), planes.begin() + caster.first_plane,
-                   planes.begin() + caster.first_plane + caster.sides + 1);
-  }
-}
-
-uint32_t PointLightShadowVolumes::build(std::vector<Caster>& casters, uint32_t begin, uint32_t end) {
-  // The node's bounding sphere: around the mean of its casters' centres.
-  Vec3 centre{0, 0, 0};
-  double top_z = -std::numeric_limits<double>::infinity();
-  double lo[3] = {2, 2, 2}, hi[3] = {-2, -2, -2};  // the directions' bounding box
-  for (uint32_t i = begin; i < end; ++i) {
-    centre += casters[i].centre;
-    top_z = std::max(top_z, casters[i].top_z);
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], casters[i].direction[k]);
-      hi[k] = std::max(hi[k], casters[i].direction[k]);
-    }
-  }
-  centre = centre / static_cast<double>(end - begin);
-  double radius = 0;
-  for (uint32_t i = begin; i < end; ++i)
-    radius = std::max(radius, length(casters[i].centre - centre) + casters[i].radius);
-  const double distance = length(centre - light_);
-  // Padded so that rounding never drops a frustum the exact clip would keep.
-  radius = radius * (1 + 1e-9) + kRelativeShadowBoundPadding * scale_;
-  Node node{Vec3{0, 0, 1}, 2.0, 0.0, 0.0, top_z + kRelativeShadowBoundPadding * scale_, begin, end, 0};
-  if (distance > radius) {
-    node.axis = (centre - light_) / distance;
-    node.sin_half = radius / distance;
-    node.cos_half = std::sqrt(std::max(0.0, 1 - node.sin_half * node.sin_half));
-    node.nearest_m = distance - radius;
-  }
-  const uint32_t index = static_cast<uint32_t>(nodes_.size());
-  nodes_.push_back(node);
-  if (end - begin <= kFrustaPerLeaf) return index;
-  // Split at the median along the widest spread of the casters' directions, so that
-  // children see narrow cones.
-  const double spread[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
-  const int axis = spread[0] >= spread[1] && spread[0] >= spread[2] ? 0 : (spread[1] >= spread[2] ? 1 : 2);
-  const uint32_t middle = begin + (end - begin) / 2;
-  std::nth_element(casters.begin() + begin, casters.begin() + middle, casters.begin() + end,
-                   [axis](const Caster& a, const Caster& b) { return a.direction[axis] < b.direction[axis]; });
-  build(casters, begin, middle);
-  const uint32_t second = build(casters, middle, end);
-  nodes_[index].second = second;
-  return index;
-}
-
-bool PointLightShadowVolumes::may_meet(const Node& node, const Vec3& plane_normal, double plane_normal_length,
-                                       const Vec3& near, const Vec3& far, double far_distance, double lowest_z) const {
-  // The piece passes above every frustum (ground surfaces under a lamp).
-  if (lowest_z > node.top_z) return false;
-  if (!(node.sin_half < 1)) return true;
-  // Every point of the piece is nearer to the light than the node's casters.
-  if (far_distance < node.nearest_m) return false;
-  if (!(plane_normal_length > 0)) return true;
-  // The plane of the view ray and the light misses the cone.
-  const double off_plane = dot(node.axis, plane_normal);
-  if (std::abs(off_plane) > node.sin_half * plane_normal_length) return false;
-  // The cone meets the plane but perhaps not the arc of the piece's directions: when the
-  // axis's projection lies outside the arc's wedge (by more than rounding), the arc's
-  // nearest direction to the axis is an end's.
-  const double near_length = length(near), far_length = length(far);
-  const bool outside_wedge = dot(cross(near, node.axis), plane_normal) < -1e-9 * near_length * plane_normal_length ||
-                             dot(cross(node.axis, far), plane_normal) < -1e-9 * far_length * plane_normal_length;
-  if (!outside_wedge) return true;
-  const double cos_margin = node.cos_half - 1e-9;
-  return dot(node.axis, near) >= cos_margin * near_length || dot(node.axis, far) >= cos_margin * far_length;
+  cells_.finish();
 }
 
 std::vector<Interval> PointLightShadowVolumes::lit_intervals(const Ray& ray, double t_min, double t_max) const {
@@ -207,39 +110,48 @@ std::vector<Interval> PointLightShadowVolumes::lit_intervals(const Ray& ray, dou
 
 void PointLightShadowVolumes::lit_intervals(const Ray& ray, double t_min, double t_max,
                                             std::vector<Interval>& out) const {
+  // Which frusta this query has clipped: a face spans many cells. Marked with the
+  // query's number, so that the marks need no clearing.
+  thread_local std::vector<uint32_t> clipped;
+  thread_local uint32_t query = 0;
   auto collect_shadows = [&](const Vec3& o, const Vec3& dir, std::vector<Interval>& shadows) {
-    // The piece's ends seen from the light, and the normal of the plane the view ray and
-    // the light span (oriented from `near` toward `far`).
-    // With no finite start, or a piece (nearly) in line with the light, whose plane
-    // rounding would tilt, every node is visited.
-    const bool bounded = std::isfinite(t_max);
-    const Vec3 near = std::isfinite(t_min) ? o + dir * t_min - light_ : Vec3{0, 0, 0};
-    const Vec3 far = bounded ? o + dir * t_max - light_ : dir;
-    // The piece's farthest point from the light is an end (distance is convex along it).
-    const double far_distance =
-        bounded && std::isfinite(t_min) ? std::max(length(near), length(far)) : std::numeric_limits<double>::infinity();
-    const Vec3 normal = cross(near, far);
-    double normal_length = length(normal);
-    if (!(normal_length > 1e-9 * length(near) * length(far))) normal_length = 0;
-    const double lowest_z =
-        bounded && std::isfinite(t_min) ? light_.z + std::min(near.z, far.z) : -std::numeric_limits<double>::infinity();
-    uint32_t stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& node = nodes_[stack[--top]];
-      if (!may_meet(node, normal, normal_length, near, far, far_distance, lowest_z)) continue;
-      if (node.second == 0) {
-        for (uint32_t i = node.begin; i < node.end; ++i) {
-          double lo = t_min, hi = t_max;
-          if (clip_to_half_spaces(&planes_[frusta_[i].first_plane], frusta_[i].sides + 1, o, dir, lo, hi))
-            shadows.push_back({lo, hi});
-        }
-        continue;
-      }
-      stack[top++] = node.second;
-      stack[top++] = static_cast<uint32_t>(&node - nodes_.data()) + 1;
+    const auto clip = [&](uint32_t i) {
+      double lo = t_min, hi = t_max;
+      if (clip_to_half_spaces(&planes_[frusta_[i].first_plane], frusta_[i].sides + 1, o, dir, lo, hi))
+        shadows.push_back({lo, hi});
+    };
+    // An unbounded piece has no farthest point to compare: every frustum.
+    if (!std::isfinite(t_min) || !std::isfinite(t_max)) {
+      for (uint32_t i = 0; i < frusta_.size(); ++i) clip(i);
+      return;
     }
+    if (clipped.size() < frusta_.size()) clipped.resize(frusta_.size(), 0);
+    if (++query == 0) {
+      std::fill(clipped.begin(), clipped.end(), 0);
+      query = 1;
+    }
+    for (const uint32_t i : cells_.everywhere()) {
+      clipped[i] = query;
+      clip(i);
+    }
+    const std::vector<uint32_t>& items = cells_.items();
+    const std::vector<float>& nearest = cells_.nearest_m();
+    cells_.walk(o, dir, t_min, t_max, [&](const LightDirectionCells::Cell& cell, double t_a, double t_b) {
+      // The piece's part in the cell: its farthest point from the light is an end
+      // (distance is convex along it), its lowest an end too.
+      const Vec3 a = o + dir * t_a - light_, b = o + dir * t_b - light_;
+      // Padded so that rounding never drops a frustum the exact clip would keep.
+      const double padding = kRelativeShadowBoundPadding * scale_;
+      const double farthest = std::max(length(a), length(b)) + padding;
+      if (light_.z + std::min(a.z, b.z) > cell.top_z + padding) return;
+      // Nearest first: the faces from the first beyond the piece on lie behind it.
+      for (uint32_t k = cell.begin; k < cell.end && nearest[k] <= farthest; ++k) {
+        const uint32_t i = items[k];
+        if (clipped[i] == query) continue;
+        clipped[i] = query;
+        clip(i);
+      }
+    });
   };
   lit_intervals_from_shadows(ray, t_min, t_max, scale_, frusta_.empty(), collect_shadows, out);
 }

@@ -5,12 +5,11 @@
 //
 // The triangles are first gathered into convex coplanar faces (convex_faces.h). Each
 // casting face's volume is the frustum bounded by the planes through the light and its
-// edges and by its own plane. The frusta sit in a hierarchy of cones from
-// the light (each around the bounding sphere of its triangles, and no nearer to the
-// light than that sphere): a view ray's piece is checked against a cone by the arc of
-// directions under which the light sees the piece, and by its farthest point from the
-// light, so a query visits the few frusta near the piece rather than all of them (a
-// city block gives a lamp tens of thousands). docs/geometry.md, "Shadow volumes".
+// edges and by its own plane. The faces are listed on a cube map of the light's
+// directions (light_direction_cells.h): a view ray's piece, walked cell by cell, clips
+// only the frusta of the cells where it passes beyond the nearest face, so a query
+// meets the few faces that may shadow it rather than all of them (a city block gives
+// a lamp tens of thousands). docs/geometry.md, "Shadow volumes".
 #pragma once
 
 #include <cstddef>
@@ -21,6 +20,7 @@
 #include "skylit/core/vec3.h"
 #include "skylit/geometry/convex_faces.h"
 #include "skylit/geometry/intervals.h"
+#include "skylit/geometry/light_direction_cells.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/geometry/shadow_volume.h"
 #include "skylit/geometry/triangle_mesh.h"
@@ -63,35 +63,15 @@ class PointLightShadowVolumes {
   size_t volume_count() const { return frusta_.size(); }
 
  private:
-  // A node of the hierarchy: its frusta all lie inside a cone from the light, no nearer
-  // to it than `nearest_m`. A leaf holds frusta [begin, end); an inner node's children
-  // are the next node and node `second`.
-  struct Node {
-    Vec3 axis;                  // unit, from the light toward the node's bounding sphere
-    double sin_half, cos_half;  // of the cone's half-angle; sin_half ≥ 1: the light is inside the sphere
-    double nearest_m;           // from the light to the sphere
-    double top_z;               // no frustum rises above it (+∞ unless the light is above all corners)
-    uint32_t begin, end;        // leaves: the frusta
-    uint32_t second;            // inner nodes: the second child (0 on leaves)
-  };
-  struct Caster;
-  uint32_t build(std::vector<Caster>& casters, uint32_t begin, uint32_t end);
-  // Whether the piece of o + t·dir between `near` and `far` (its ends less the light;
-  // `far` a direction only when the piece is unbounded; `far_distance` the piece's
-  // largest distance from the light, `lowest_z` its lowest height) may meet the node's
-  // frusta.
-  bool may_meet(const Node& node, const Vec3& plane_normal, double plane_normal_length, const Vec3& near,
-                const Vec3& far, double far_distance, double lowest_z) const;
-
   Vec3 light_;
   double scale_ = 1;  // largest coordinate magnitude of the light and the casting triangles, >= 1 m
   // A frustum: planes [first_plane, first_plane + sides] of planes_, the cap last.
   struct Frustum {
     uint32_t first_plane, sides;
   };
-  std::vector<Frustum> frusta_;  // in the hierarchy's order
+  std::vector<Frustum> frusta_;
   std::vector<HalfSpace> planes_;
-  std::vector<Node> nodes_;  // depth first; the root first
+  LightDirectionCells cells_;  // frusta by the directions of their faces
 };
 
 }  // namespace skylit

@@ -1,0 +1,151 @@
+// The cube map of a lamp's directions (light_direction_cells.h) as PointLightShadowVolumes
+// uses it: a piece walked cell by cell gets exactly the shadows that clipping every
+// frustum gives, and the walk itself visits the cells of the piece's directions in order.
+#include "skylit/geometry/light_direction_cells.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "skylit/geometry/point_light_shadow_volumes.h"
+#include "skylit/geometry/primitives.h"
+
+namespace skylit {
+namespace {
+
+// A dense block: rotated boxes, a street of walls in 1 m panels, a pitched roof, a large
+// ground and a board 5 cm from the lamp (whose directions span a half sphere), around the
+// origin or shifted by survey coordinates.
+std::vector<TriangleMesh> dense_block(const Vec3& offset, std::mt19937& rng) {
+  std::uniform_real_distribution<double> uni(0, 1);
+  std::vector<TriangleMesh> meshes;
+  meshes.reserve(64);
+  for (int i = 0; i < 60; ++i)
+    meshes.push_back(make_box_centered(offset + Vec3{120 * uni(rng) - 60, 120 * uni(rng) - 60, 0},
+                                       {1 + 10 * uni(rng), 1 + 10 * uni(rng), 2 + 25 * uni(rng)}, 90 * uni(rng)));
+  TriangleMesh walls;
+  for (const double x : {-7.0, 7.0})
+    for (int u = 0; u < 40; ++u)
+      for (int k = 0; k < 8; ++k) {
+        const auto n = static_cast<uint32_t>(walls.vertices.size());
+        const double y = u - 20.0, z = 1.5 * k;
+        walls.vertices.insert(walls.vertices.end(), {offset + Vec3{x, y, z}, offset + Vec3{x, y + 1, z},
+                                                     offset + Vec3{x, y + 1, z + 1.5}, offset + Vec3{x, y, z + 1.5}});
+        walls.triangles.push_back({n, n + 1, n + 2});
+        walls.triangles.push_back({n, n + 2, n + 3});
+      }
+  meshes.push_back(walls);
+  TriangleMesh roof;  // a pitched roof over a shed, open below
+  roof.vertices = {offset + Vec3{10, -4, 4}, offset + Vec3{16, -4, 4}, offset + Vec3{16, -4 + 3, 6},
+                   offset + Vec3{10, -1, 6}, offset + Vec3{10, 2, 4},  offset + Vec3{16, 2, 4}};
+  roof.triangles = {{0, 1, 2}, {0, 2, 3}, {3, 2, 5}, {3, 5, 4}};
+  meshes.push_back(roof);
+  TriangleMesh ground;
+  ground.vertices = {offset + Vec3{-500, -500, 0}, offset + Vec3{500, -500, 0}, offset + Vec3{500, 500, 0},
+                     offset + Vec3{-500, 500, 0}};
+  ground.triangles = {{0, 1, 2}, {0, 2, 3}};
+  meshes.push_back(ground);
+  TriangleMesh board;  // just beside the lamp
+  board.vertices = {offset + Vec3{1.05, -1, 7}, offset + Vec3{1.05, 1, 7}, offset + Vec3{1.05, 1, 9},
+                    offset + Vec3{1.05, -1, 9}};
+  board.triangles = {{0, 1, 2}, {0, 2, 3}};
+  meshes.push_back(board);
+  return meshes;
+}
+
+TEST(LightDirectionCells, PiecesGetTheShadowsOfEveryFrustum) {
+  // Pieces of random view rays, bounded (walked over the cells) against the same rays
+  // with no end (every frustum clipped), cut to the piece: the same lit intervals to
+  // 1e-9 m, for lamps in the street, over a roof, at a wall's foot and 5 cm from a
+  // board, near the origin and 300 km from it.
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> uni(0, 1);
+  int compared = 0, boundaries = 0;
+  for (const Vec3 offset : {Vec3{0, 0, 0}, Vec3{3e5, 5.8e6, 40}}) {
+    const std::vector<TriangleMesh> meshes = dense_block(offset, rng);
+    std::vector<const TriangleMesh*> pointers;
+    pointers.reserve(meshes.size());
+    for (const auto& m : meshes) pointers.push_back(&m);
+    for (const Vec3 lamp : {Vec3{0, 0, 8}, Vec3{13, -1, 7.5}, Vec3{6.9, 3, 0.3}, Vec3{1, 0, 8}}) {
+      const PointLightShadowVolumes volumes(pointers, offset + lamp);
+      for (int r = 0; r < 300; ++r) {
+        const Vec3 origin = offset + Vec3{160 * uni(rng) - 80, 160 * uni(rng) - 80, 0.2 + 30 * uni(rng)};
+        // Half the rays aimed near the lamp, where the directions turn fastest.
+        const Vec3 target = r % 2 == 0 ? offset + lamp + Vec3{uni(rng) - 0.5, uni(rng) - 0.5, uni(rng) - 0.5}
+                                       : offset + Vec3{60 * uni(rng) - 30, 60 * uni(rng) - 30, 10 * uni(rng)};
+        const Ray ray{origin, normalize(target - origin)};
+        const double t_min = 40 * uni(rng), t_max = t_min + 150 * uni(rng);
+        const std::vector<Interval> walked = volumes.lit_intervals(ray, t_min, t_max);
+        std::vector<Interval> every;
+        for (const Interval& i : volumes.lit_intervals(ray, t_min, std::numeric_limits<double>::infinity()))
+          if (i.begin < t_max - 1e-9) every.push_back({i.begin, std::min(i.end, t_max)});
+        ASSERT_EQ(walked.size(), every.size()) << "offset " << offset.x << " lamp " << lamp.x << " ray " << r;
+        for (size_t k = 0; k < walked.size(); ++k) {
+          EXPECT_NEAR(walked[k].begin, every[k].begin, 1e-9) << "ray " << r;
+          EXPECT_NEAR(walked[k].end, every[k].end, 1e-9) << "ray " << r;
+        }
+        boundaries += static_cast<int>(2 * walked.size());
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 2400);
+  EXPECT_GT(boundaries, 2000);  // the pieces do cross shadows
+}
+
+TEST(LightDirectionCells, TheWalkVisitsTheCellsOfThePiecesDirectionsInOrder) {
+  // One small face in every cell of the cube map (a sphere of facets around the light):
+  // a piece's walk returns consecutive parts covering it exactly, and each part's
+  // middle lies within its cell's radius of the cell's facet.
+  const Vec3 light{2, -3, 5};
+  constexpr int kSide = 8;
+  LightDirectionCells cells(light, kSide);
+  std::vector<Vec3> facet_directions;
+  for (int f = 0; f < 6; ++f)
+    for (int j = 0; j < kSide; ++j)
+      for (int i = 0; i < kSide; ++i) {
+        const int axis = f / 2;
+        const double sign = f % 2 == 0 ? 1.0 : -1.0;
+        Vec3 centre{0, 0, 0};
+        centre[axis] = sign;
+        centre[(axis + 1) % 3] = 2.0 * (i + 0.5) / kSide - 1.0;
+        centre[(axis + 2) % 3] = 2.0 * (j + 0.5) / kSide - 1.0;
+        const Vec3 w = normalize(centre);
+        // A tiny square facing the light, 10 m away, well inside its cell.
+        const auto [a, b] = perpendicular_pair(w);
+        ConvexFace face{{light + 10 * w - 0.01 * a - 0.01 * b, light + 10 * w + 0.01 * a - 0.01 * b,
+                         light + 10 * w + 0.01 * a + 0.01 * b, light + 10 * w - 0.01 * a + 0.01 * b},
+                        -w};
+        cells.add(static_cast<uint32_t>(facet_directions.size()), face);
+        facet_directions.push_back(w);
+      }
+  cells.finish();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> uni(-1, 1);
+  int parts = 0;
+  for (int r = 0; r < 200; ++r) {
+    const Vec3 origin = light + Vec3{20 * uni(rng), 20 * uni(rng), 20 * uni(rng)};
+    const Vec3 dir = normalize(Vec3{uni(rng), uni(rng), uni(rng)});
+    const double t_min = 5 * uni(rng), t_max = t_min + 40;
+    double covered_to = t_min;
+    cells.walk(origin, dir, t_min, t_max, [&](const LightDirectionCells::Cell& cell, double t_a, double t_b) {
+      EXPECT_NEAR(t_a, covered_to, 1e-9) << "ray " << r;
+      EXPECT_LE(t_a, t_b + 1e-12) << "ray " << r;
+      covered_to = t_b;
+      ASSERT_EQ(cell.end - cell.begin, 1U) << "ray " << r;
+      // The part's middle lies within the cell's radius of the direction of its facet.
+      const Vec3 middle = normalize(origin + dir * (0.5 * (t_a + t_b)) - light);
+      const uint32_t listed = cells.items()[cell.begin];
+      EXPECT_GT(dot(facet_directions[listed], middle), std::cos(1.01 * std::sqrt(2.0) / kSide)) << "ray " << r;
+      ++parts;
+    });
+    EXPECT_NEAR(covered_to, t_max, 1e-9) << "ray " << r;
+  }
+  EXPECT_GT(parts, 1000);  // the pieces do cross many cells
+}
+
+}  // namespace
+}  // namespace skylit
