@@ -56,11 +56,28 @@ std::vector<TriangleMesh> dense_block(const Vec3& offset, std::mt19937& rng) {
   return meshes;
 }
 
+// Whether the piece [t_min, t_max] of `ray` gets the same lit intervals walked over the
+// cells as the ray with no end (every frustum clipped) cut to the piece, to 1e-9 m;
+// counts the piece's ends of light in `boundaries`.
+bool walk_agrees_with_every_frustum(const PointLightShadowVolumes& volumes, const Ray& ray, double t_min, double t_max,
+                                    int& boundaries) {
+  const std::vector<Interval> walked = volumes.lit_intervals(ray, t_min, t_max);
+  std::vector<Interval> every;
+  for (const Interval& i : volumes.lit_intervals(ray, t_min, std::numeric_limits<double>::infinity()))
+    if (i.begin < t_max - 1e-9) every.push_back({i.begin, std::min(i.end, t_max)});
+  boundaries += static_cast<int>(2 * walked.size());
+  if (walked.size() != every.size()) return false;
+  for (size_t k = 0; k < walked.size(); ++k)
+    if (!(std::abs(walked[k].begin - every[k].begin) <= 1e-9 && std::abs(walked[k].end - every[k].end) <= 1e-9))
+      return false;
+  return true;
+}
+
 TEST(LightDirectionCells, PiecesGetTheShadowsOfEveryFrustum) {
-  // Pieces of random view rays, bounded (walked over the cells) against the same rays
-  // with no end (every frustum clipped), cut to the piece: the same lit intervals to
-  // 1e-9 m, for lamps in the street, over a roof, at a wall's foot and 5 cm from a
-  // board, near the origin and 300 km from it.
+  // Pieces of view rays, bounded (walked over the cells) against the same rays with no
+  // end (every frustum clipped), cut to the piece: the same lit intervals to 1e-9 m, for
+  // lamps in the street, over a roof, at a wall's foot and 5 cm from a board, near the
+  // origin and 300 km from it.
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> uni(0, 1);
   int compared = 0, boundaries = 0;
@@ -71,29 +88,61 @@ TEST(LightDirectionCells, PiecesGetTheShadowsOfEveryFrustum) {
     for (const auto& m : meshes) pointers.push_back(&m);
     for (const Vec3 lamp : {Vec3{0, 0, 8}, Vec3{13, -1, 7.5}, Vec3{6.9, 3, 0.3}, Vec3{1, 0, 8}}) {
       const PointLightShadowVolumes volumes(pointers, offset + lamp);
-      for (int r = 0; r < 300; ++r) {
-        const Vec3 origin = offset + Vec3{160 * uni(rng) - 80, 160 * uni(rng) - 80, 0.2 + 30 * uni(rng)};
-        // Half the rays aimed near the lamp, where the directions turn fastest.
-        const Vec3 target = r % 2 == 0 ? offset + lamp + Vec3{uni(rng) - 0.5, uni(rng) - 0.5, uni(rng) - 0.5}
-                                       : offset + Vec3{60 * uni(rng) - 30, 60 * uni(rng) - 30, 10 * uni(rng)};
-        const Ray ray{origin, normalize(target - origin)};
-        const double t_min = 40 * uni(rng), t_max = t_min + 150 * uni(rng);
-        const std::vector<Interval> walked = volumes.lit_intervals(ray, t_min, t_max);
-        std::vector<Interval> every;
-        for (const Interval& i : volumes.lit_intervals(ray, t_min, std::numeric_limits<double>::infinity()))
-          if (i.begin < t_max - 1e-9) every.push_back({i.begin, std::min(i.end, t_max)});
-        ASSERT_EQ(walked.size(), every.size()) << "offset " << offset.x << " lamp " << lamp.x << " ray " << r;
-        for (size_t k = 0; k < walked.size(); ++k) {
-          EXPECT_NEAR(walked[k].begin, every[k].begin, 1e-9) << "ray " << r;
-          EXPECT_NEAR(walked[k].end, every[k].end, 1e-9) << "ray " << r;
+      for (int r = 0; r < 360; ++r) {
+        Vec3 origin = offset + Vec3{160 * uni(rng) - 80, 160 * uni(rng) - 80, 0.2 + 30 * uni(rng)};
+        // A third of the rays aimed near the lamp, where the directions turn fastest; a
+        // third random; a third in a plane through the lamp and a cube axis (a horizontal
+        // ray at the lamp's height, say), where one of a cube face's coordinates stays put.
+        Vec3 target = r % 3 == 0 ? offset + lamp + Vec3{uni(rng) - 0.5, uni(rng) - 0.5, uni(rng) - 0.5}
+                                 : offset + Vec3{60 * uni(rng) - 30, 60 * uni(rng) - 30, 10 * uni(rng)};
+        if (r % 3 == 2) {
+          const int axis = (r / 3) % 3;
+          origin[axis] = offset[axis] + lamp[axis];
+          target[axis] = origin[axis];
         }
-        boundaries += static_cast<int>(2 * walked.size());
+        const Ray ray{origin, normalize(target - origin)};
+        const double t_min = 40 * uni(rng), t_max = t_min + 1 + 150 * uni(rng);  // longer than rounding
+        EXPECT_TRUE(walk_agrees_with_every_frustum(volumes, ray, t_min, t_max, boundaries))
+            << "offset " << offset.x << " lamp " << lamp.x << " ray " << r;
         ++compared;
       }
     }
   }
-  EXPECT_EQ(compared, 2400);
+  EXPECT_EQ(compared, 2880);
   EXPECT_GT(boundaries, 2000);  // the pieces do cross shadows
+}
+
+TEST(LightDirectionCells, PiecesInAPlaneThroughTheLampAndACubeAxis) {
+  // In a plane through the lamp and a cube axis (a horizontal ray at the lamp's height)
+  // one coordinate of a cube face stays put along the piece, and the cells' edges ahead
+  // along it have no crossing but a spurious one behind: small boards around the lamp at
+  // its height, near the origin and 300 km from it, against every frustum.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> uni(0, 1);
+  int boundaries = 0;
+  for (const Vec3 offset : {Vec3{0, 0, 0}, Vec3{3e5, 5.8e6, 40}}) {
+    const Vec3 lamp = offset + Vec3{0.3, -0.7, 5.25};
+    std::vector<TriangleMesh> meshes;
+    meshes.reserve(80);
+    for (int i = 0; i < 80; ++i)
+      meshes.push_back(make_box_centered(offset + Vec3{60 * uni(rng) - 30, 60 * uni(rng) - 30, 4 + 2 * uni(rng)},
+                                         {0.2 + uni(rng), 0.2 + uni(rng), 0.5 + uni(rng)}, 90 * uni(rng)));
+    std::vector<const TriangleMesh*> pointers;
+    pointers.reserve(meshes.size());
+    for (const auto& m : meshes) pointers.push_back(&m);
+    const PointLightShadowVolumes volumes(pointers, lamp);
+    for (int r = 0; r < 1500; ++r) {
+      Vec3 o = offset + Vec3{80 * uni(rng) - 40, 80 * uni(rng) - 40, 2 + 8 * uni(rng)};
+      Vec3 d{uni(rng) - 0.5, uni(rng) - 0.5, 0.2 * (uni(rng) - 0.5)};
+      const int axis = r % 3;
+      o[axis] = lamp[axis];
+      d[axis] = 0;
+      const double t_min = 40 * uni(rng), t_max = t_min + 1 + 80 * uni(rng);  // longer than rounding
+      EXPECT_TRUE(walk_agrees_with_every_frustum(volumes, Ray{o, normalize(d)}, t_min, t_max, boundaries))
+          << "offset " << offset.x << " ray " << r;
+    }
+  }
+  EXPECT_GT(boundaries, 1000);  // the pieces do cross shadows
 }
 
 TEST(LightDirectionCells, TheWalkVisitsTheCellsOfThePiecesDirectionsInOrder) {

@@ -84,7 +84,7 @@ void LightDirectionCells::add(uint32_t item, const ConvexFace& face) {
     double u_lo = 1, u_hi = -1, v_lo = 1, v_hi = -1;
     for (const Vec3& x : part) {
       const double along = c.sign * x[c.axis];
-      // A face through (or within rounding of) the light: its directions have no bound.
+      // A corner of the clipped face at the light itself: its directions have no bound.
       if (!(along > 1e-12 * length(x))) {
         everywhere_.push_back(item);
         return;

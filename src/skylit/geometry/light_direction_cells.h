@@ -39,7 +39,7 @@ class LightDirectionCells {
 
   // Lists `face` as item `item` in every cell its directions may fall in (the cells
   // its projection's bounding box meets, widened by far more than rounding), or in
-  // every query's list when it passes within rounding of the light.
+  // every query's list when part of it lies at the light's own position.
   void add(uint32_t item, const ConvexFace& face);
   // Turns what add() gathered into the cells' lists; add() is not called after it.
   void finish();
@@ -64,9 +64,7 @@ class LightDirectionCells {
   };
   static CubeFace cube_face(int f);
   int cell_index(double unit) const;  // the row or column of u ∈ [−1, 1]
-  const Cell& cell(int f, int i, int j) const {
-    return cells_[static_cast<size_t>((f * n_ + j) * n_ + i)];
-  }
+  const Cell& cell(int f, int i, int j) const { return cells_[static_cast<size_t>((f * n_ + j) * n_ + i)]; }
   // The cells of cube face f along the piece's part in it.
   template <typename Visit>
   void walk_face(int f, const Vec3& p, const Vec3& dir, double lo, double hi, Visit& visit) const;
@@ -128,20 +126,22 @@ void LightDirectionCells::walk_face(int f, const Vec3& p, const Vec3& dir, doubl
     const double along = c.sign * (p[c.axis] + t * dir[c.axis]);
     return along > 0 ? (p[other] + t * dir[other]) / along : 0.0;
   };
-  // The cell of a point a little inside the interval's start.
-  const double start = lo + 1e-9 * (hi - lo);
-  int i = cell_index(coordinate(c.u_axis, start)), j = cell_index(coordinate(c.v_axis, start));
+  // The cell of the interval's start (on a cell's edge, the one ahead if the piece moves
+  // up in u or v, and if it moves down the first crossing below lies at the start).
+  int i = cell_index(coordinate(c.u_axis, lo)), j = cell_index(coordinate(c.v_axis, lo));
   const int di = coordinate(c.u_axis, hi) >= coordinate(c.u_axis, lo) ? 1 : -1;
   const int dj = coordinate(c.v_axis, hi) >= coordinate(c.v_axis, lo) ? 1 : -1;
   // Where the piece crosses the cell's edge ahead along u (or v), u = edge:
-  // p_u + t·d_u = edge·s·(p_a + t·d_a). The line's one solution is a crossing only on
-  // the face's side of the light (s·x_a > 0); else, or running along the edge, never.
+  // p_u + t·d_u = edge·s·(p_a + t·d_a). The line's one solution is a crossing only
+  // within the face's interval: u is monotonic there, so an edge ahead is crossed after
+  // lo if at all. Its other solutions lie where s·x_a ≤ 0, outside [lo, hi]: before lo
+  // they would read as a crossing behind (when u is constant, in a plane through the
+  // light and a cube axis, every edge's solution is that point) and are never crossed.
   const auto crossing = [&](int other, int index, int step) {
     const double edge = 2.0 * (step > 0 ? index + 1 : index) / n_ - 1.0;
     const double num = edge * c.sign * p[c.axis] - p[other], den = dir[other] - edge * c.sign * dir[c.axis];
     const double t = num / den;
-    if (!std::isfinite(t) || !(c.sign * (p[c.axis] + t * dir[c.axis]) > 0)) return hi;
-    return t;
+    return std::isfinite(t) && t >= lo && c.sign * (p[c.axis] + t * dir[c.axis]) > 0 ? t : hi;
   };
   double t = lo;
   double next_u = std::max(t, crossing(c.u_axis, i, di)), next_v = std::max(t, crossing(c.v_axis, j, dj));

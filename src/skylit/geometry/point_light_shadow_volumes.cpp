@@ -14,8 +14,8 @@ namespace skylit {
 
 namespace {
 
-// Cells along each side of the cube map's faces: 64 makes cells about 1.3° wide at
-// their widest (measured on the Delft night scene: 32 and 128 were slower).
+// Cells along each side of the cube map's faces: 64 makes cells 1.8° wide at a cube
+// face's centre (measured on the Delft night scene: 32 and 128 were slower).
 constexpr int kCellsPerSide = 64;
 
 // The frustum behind a convex face seen from a point light at `light`, as its planes
