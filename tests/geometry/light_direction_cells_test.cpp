@@ -74,8 +74,8 @@ double lit_difference(const std::vector<Interval>& a, const std::vector<Interval
 // (shadow_volume.h), and a shadow running past t_max is a sliver on the piece but not
 // on the ray with no end: so the two may differ by twice that, no more. Counts the
 // piece's ends of light in `boundaries`.
-bool walk_agrees_with_every_frustum(const PointLightShadowVolumes& volumes, const Ray& ray, double t_min,
-                                    double t_max, int& boundaries) {
+bool walk_agrees_with_every_frustum(const PointLightShadowVolumes& volumes, const Ray& ray, double t_min, double t_max,
+                                    int& boundaries) {
   const std::vector<Interval> walked = volumes.lit_intervals(ray, t_min, t_max);
   std::vector<Interval> every;
   for (const Interval& i : volumes.lit_intervals(ray, t_min, std::numeric_limits<double>::infinity()))
