@@ -31,8 +31,7 @@ Hidden brute_force(const FogLayer& layer, const FogDiffuseField& field, const Ve
   const double transport = (1 - albedo * chi[1]) * sigma;
   const double spike_free = 1 - field.forward_fraction();
   const double un = dot(toward_viewer, normal);
-  const Vec3 t1 = normalize(std::abs(normal.z) < 0.9 ? cross(normal, Vec3{0, 0, 1}) : cross(normal, Vec3{1, 0, 0}));
-  const Vec3 t2 = cross(normal, t1);
+  const auto [t1, t2] = perpendicular_pair(normal);
   const Vec3 sun_h = normalize(Vec3{sunbeam.x, sunbeam.y, 0});
   const Vec3 side{-sun_h.y, sun_h.x, 0};
   constexpr int kPolar = 180, kAround = 360, kSteps = 400;
