@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "skylit/render/camera.h"
+#include "skylit/spectrum/cie.h"
 
 namespace skylit {
 namespace {
@@ -122,6 +123,45 @@ TEST(SurfaceCache, CornersBeyondTheirObstaclesReachAreRefinedWhereTheyDisagree) 
   const SurfaceCache uniform_near(hits, uniform(20)), uniform_far(hits, uniform(5000));
   EXPECT_EQ(uniform_near.fine_points() + uniform_near.pixel_points(),
             uniform_far.fine_points() + uniform_far.pixel_points());
+}
+
+TEST(SurfaceCache, SkyLightOutshoneByThePixelsOtherLightNeedsNoFinerLevel) {
+  // The sky light steps by a factor of 3 across the line x = 0 (an obstacle's edge of
+  // visibility, as along a kerb or a ditch): alone, the cells across it are refined down
+  // to the pixels; where the pixel's other light (lamps, the glow in front) outshines it
+  // a hundredfold, the coarse grid covers all, and the interpolated values stay between
+  // the corners'. The least other light among a cell's corners counts: one dark corner
+  // is enough to refine.
+  const PrimaryHits hits = hits_of_tiled_plane(1e5, 1);
+  const auto stepped = [](const SurfacePoint& p) {
+    CachedSkyLight v = value_at(p);
+    v.diffuse_irradiance = Irradiance(p.position.x < 0 ? 0.001f : 0.003f);
+    return v;
+  };
+  const double sky_lx = illuminance(Irradiance(0.003f));
+  const SurfaceCache alone(hits, stepped);
+  EXPECT_GT(alone.fine_points() + alone.pixel_points(), 50);
+  const auto outshining = [&](int, int, const SurfacePoint&, const CachedSkyLight&) { return 100 * sky_lx; };
+  const SurfaceCache outshone(hits, stepped, {}, outshining);
+  EXPECT_EQ(outshone.fine_points() + outshone.pixel_points(), 0);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::optional<CachedSkyLight> v = outshone.interpolate(x + 0.5, y + 0.5, *hits.surface(x, y));
+      ASSERT_TRUE(v);
+      EXPECT_GE(v->diffuse_irradiance[0], 0.001f * 0.999f);
+      EXPECT_LE(v->diffuse_irradiance[0], 0.003f * 1.001f);
+    }
+  // As bright as the sky light only: the step (a spread of 2/3 of the highest) still
+  // exceeds kCornerSpread of sky and other light together.
+  const SurfaceCache matched(hits, stepped, {},
+                             [&](int, int, const SurfacePoint&, const CachedSkyLight&) { return sky_lx; });
+  EXPECT_EQ(matched.fine_points() + matched.pixel_points(), alone.fine_points() + alone.pixel_points());
+  // Other light on one side of the image only (x ≥ 32 px): the cells straddling it, and
+  // the dark side, are refined as without it.
+  const SurfaceCache half(hits, stepped, {}, [&](int x, int, const SurfacePoint&, const CachedSkyLight&) {
+    return x >= kWidth / 2 ? 100 * sky_lx : 0.0;
+  });
+  EXPECT_GT(half.fine_points() + half.pixel_points(), 0);
 }
 
 }  // namespace

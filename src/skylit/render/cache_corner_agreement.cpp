@@ -13,10 +13,10 @@ bool within_obstacle_reach(const SurfacePoint& cached, double obstacle_distance_
   return length(cached.position - point.position) <= kObstacleReach * obstacle_distance_m;
 }
 
-bool corners_agree(std::span<const double> corner_illuminance_lx, double spread) {
+bool corners_agree(std::span<const double> corner_illuminance_lx, double spread, double other_lx) {
   if (corner_illuminance_lx.empty()) return true;
   const auto [low, high] = std::minmax_element(corner_illuminance_lx.begin(), corner_illuminance_lx.end());
-  return *high - *low <= spread * *high;
+  return *high - *low <= spread * (*high + other_lx);
 }
 
 }  // namespace skylit

@@ -11,12 +11,31 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "skylit/core/angles.h"
 #include "skylit/render/film.h"
 #include "skylit/render/seen_lamps.h"
+#include "skylit/spectrum/cie.h"
 
 namespace skylit {
 
 namespace {
+
+// SurfaceCache::OtherLight with lamps: what pixel (x, y) shows besides its surface's sky
+// light, as sky illuminance on the surface. The fog's glow in front counts π times its
+// luminance: what a white surface seen without loss would show under that much sky
+// light (a darker surface, or fog that dims it, only makes the glow count more, so this
+// is the least it counts); the lamps' illuminance on the surface counts as it is. The
+// lamps are tested only until the whole outshines the point's own sky light
+// kOutshoneSky times: beyond, its corners agree however their sky light spreads.
+constexpr double kOutshoneSky = 100;
+
+double light_besides_sky_lx(const SceneLamps& lamps, const LampGlowImage* glow, int x, int y, const SurfacePoint& point,
+                            const CachedSkyLight& value) {
+  const double enough_lx = kOutshoneSky * illuminance(value.diffuse_irradiance);
+  const double glow_lx = glow ? kPi * luminance(glow->centre_glow(x, y)) : 0;
+  if (glow_lx >= enough_lx) return glow_lx;
+  return glow_lx + lamps.illuminance_at_least(point, enough_lx - glow_lx);
+}
 
 // Neighbouring pixel centres that differ by more than this fraction (in X, Y or Z) mark
 // an edge, where the pixel gets its full grid of samples.
@@ -66,11 +85,17 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
     hits =
         std::make_unique<PrimaryHits>(camera, width, height, [&](const Ray& ray) { return integrator.first_hit(ray); });
     const Vec3& eye = scene.scene().camera.position;
+    // The glow first: the sky-light cache judges its corners against it.
+    if (scene.lamps() && scene.fog()) glow = std::make_unique<LampGlowImage>(camera, *hits, *scene.lamps());
+    SurfaceCache::OtherLight other;
+    if (const SceneLamps* lamps = scene.lamps())
+      other = [lamps, &glow](int x, int y, const SurfacePoint& p, const CachedSkyLight& value) {
+        return light_besides_sky_lx(*lamps, glow.get(), x, y, p, value);
+      };
     if (!options.exact_sky_light)
       sky_light = std::make_unique<SurfaceCache>(
           *hits, [&](const SurfacePoint& p) { return integrator.sky_light_at(p, eye); },
-          [&](const SurfacePoint& p) { return integrator.sky_light_for_one_pixel(p, eye); });
-    if (scene.lamps() && scene.fog()) glow = std::make_unique<LampGlowImage>(camera, *hits, *scene.lamps());
+          [&](const SurfacePoint& p) { return integrator.sky_light_for_one_pixel(p, eye); }, other);
   });
   const ImageCaches caches{sky_light.get(), glow.get()};
 
