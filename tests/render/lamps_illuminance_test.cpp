@@ -1,5 +1,5 @@
 // SceneLamps::illuminance_at_least, which the sky-light cache weighs its corners against
-// (render/surface_cache.h, OtherLight): the lamps' illuminance from the intensity maps,
+// (CachedSkyLight::other_lx, render/image_loop.cpp): the lamps' illuminance from the intensity maps,
 // against irradiance_on's from the luminaires' own tables with every lamp tested for
 // occlusion, at the surface points a view of the Fig. 9 street sees.
 #include <gtest/gtest.h>

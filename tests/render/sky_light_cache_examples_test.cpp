@@ -57,7 +57,7 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
         integrator.sky_light().diffuse_irradiance(p.position, p.normal, &value.obstacle_distance_m);
     return value;
   };
-  const SurfaceCache cache(hits, diffuse);
+  const SurfaceCache cache(hits, [&](const SurfacePoint& p, int, int) { return diffuse(p); });
   const std::unique_ptr<SkyLight> converged =
       against_converged ? integrator.sky_light_with(kConvergedDirections) : nullptr;
   const int rows = (height - 1) / stride + 1;

@@ -32,7 +32,7 @@ PrimaryHits hits_of_tiled_plane(double tile_m, int materials,
 }
 
 // A value that differs from point to point, so a look-up shows which point it came from.
-CachedSkyLight value_at(const SurfacePoint& p) {
+CachedSkyLight value_at(const SurfacePoint& p, int = 0, int = 0) {
   return {Irradiance(static_cast<float>(1000 + p.position.x + 0.01 * p.position.y)), Radiance(0.0f)};
 }
 
@@ -41,7 +41,7 @@ TEST(SurfaceCache, PixelsOfSurfacesSmallerThanTheGridsGetTheirCentresValue) {
   // materials: the coarse and fine grids cover almost nothing.
   const PrimaryHits hits = hits_of_tiled_plane(1.9, 64);
   std::atomic<int> computed{0};
-  const SurfaceCache cache(hits, [&](const SurfacePoint& p) {
+  const SurfaceCache cache(hits, [&](const SurfacePoint& p, int, int) {
     ++computed;
     return value_at(p);
   });
@@ -98,7 +98,7 @@ TEST(SurfaceCache, CornersBeyondTheirObstaclesReachAreRefinedWhereTheyDisagree) 
   const Camera grazing{{0, 0, 3}, {0, 60, 0}, {0, 0, 1}, 50.0};
   const PrimaryHits hits = hits_of_tiled_plane(1e5, 1, grazing);
   auto changing = [](double obstacle_m) {
-    return [obstacle_m](const SurfacePoint& p) {
+    return [obstacle_m](const SurfacePoint& p, int, int) {
       CachedSkyLight v = value_at(p);
       v.diffuse_irradiance = Irradiance(static_cast<float>(1000 + 3 * p.position.y));
       v.obstacle_distance_m = obstacle_m;
@@ -113,7 +113,7 @@ TEST(SurfaceCache, CornersBeyondTheirObstaclesReachAreRefinedWhereTheyDisagree) 
   EXPECT_EQ(near_from_above.fine_points() + near_from_above.pixel_points(),
             far_from_above.fine_points() + far_from_above.pixel_points());
   auto uniform = [](double obstacle_m) {
-    return [obstacle_m](const SurfacePoint& p) {
+    return [obstacle_m](const SurfacePoint& p, int, int) {
       CachedSkyLight v = value_at(p);
       v.diffuse_irradiance = Irradiance(500.0f);
       v.obstacle_distance_m = obstacle_m;
@@ -133,16 +133,18 @@ TEST(SurfaceCache, SkyLightOutshoneByThePixelsOtherLightNeedsNoFinerLevel) {
   // the corners'. The least other light among a cell's corners counts: one dark corner
   // is enough to refine.
   const PrimaryHits hits = hits_of_tiled_plane(1e5, 1);
-  const auto stepped = [](const SurfacePoint& p) {
-    CachedSkyLight v = value_at(p);
-    v.diffuse_irradiance = Irradiance(p.position.x < 0 ? 0.001f : 0.003f);
-    return v;
-  };
   const double sky_lx = illuminance(Irradiance(0.003f));
-  const SurfaceCache alone(hits, stepped);
+  const auto stepped = [](auto other_lx) {
+    return [other_lx](const SurfacePoint& p, int x, int) {
+      CachedSkyLight v = value_at(p);
+      v.diffuse_irradiance = Irradiance(p.position.x < 0 ? 0.001f : 0.003f);
+      v.other_lx = other_lx(x);
+      return v;
+    };
+  };
+  const SurfaceCache alone(hits, stepped([](int) { return 0.0; }));
   EXPECT_GT(alone.fine_points() + alone.pixel_points(), 50);
-  const auto outshining = [&](int, int, const SurfacePoint&, const CachedSkyLight&) { return 100 * sky_lx; };
-  const SurfaceCache outshone(hits, stepped, {}, outshining);
+  const SurfaceCache outshone(hits, stepped([&](int) { return 100 * sky_lx; }));
   EXPECT_EQ(outshone.fine_points() + outshone.pixel_points(), 0);
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
@@ -153,14 +155,11 @@ TEST(SurfaceCache, SkyLightOutshoneByThePixelsOtherLightNeedsNoFinerLevel) {
     }
   // As bright as the sky light only: the step (a spread of 2/3 of the highest) still
   // exceeds kCornerSpread of sky and other light together.
-  const SurfaceCache matched(hits, stepped, {},
-                             [&](int, int, const SurfacePoint&, const CachedSkyLight&) { return sky_lx; });
+  const SurfaceCache matched(hits, stepped([&](int) { return sky_lx; }));
   EXPECT_EQ(matched.fine_points() + matched.pixel_points(), alone.fine_points() + alone.pixel_points());
   // Other light on one side of the image only (x ≥ 32 px): the cells straddling it, and
   // the dark side, are refined as without it.
-  const SurfaceCache half(hits, stepped, {}, [&](int x, int, const SurfacePoint&, const CachedSkyLight&) {
-    return x >= kWidth / 2 ? 100 * sky_lx : 0.0;
-  });
+  const SurfaceCache half(hits, stepped([&](int x) { return x >= kWidth / 2 ? 100 * sky_lx : 0.0; }));
   EXPECT_GT(half.fine_points() + half.pixel_points(), 0);
 }
 

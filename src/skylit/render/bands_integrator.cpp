@@ -1,16 +1,34 @@
 #include "skylit/render/bands_integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "skylit/core/angles.h"
 #include "skylit/material/reflection.h"
+#include "skylit/spectrum/cie.h"
 
 namespace skylit {
+
+namespace {
+
+// BandsIntegrator::sky_light_bound_lx's part for the obstacles: the most the open sky
+// puts on any of 4,096 planes of all orientations (it changes slowly with the plane), and
+// the sun's (or the moon's) normal illuminance above any building.
+double obstacles_bound_lx(const SkyModel& sky) {
+  double most_lx = 0;
+  for (const SkyElement& e : fibonacci_sphere(4096))
+    most_lx = std::max(most_lx, illuminance(sky.sky_irradiance(e.direction)));
+  constexpr double kAboveAnyBuildingM = 10'000;
+  return most_lx + illuminance(sky.direct_sun(kAboveAnyBuildingM));
+}
+
+}  // namespace
 
 BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
     : scene_(scene),
       sky_(scene.sky()),
+      obstacles_bound_lx_(obstacles_bound_lx(scene.sky())),
       to_sun_(scene.to_sun()),
       fog_light_(scene.fog() ? scene.fog()->surface_light() : nullptr),
       obstacle_materials_(obstacle_materials(scene.scene().materials)) {
@@ -34,6 +52,13 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       });
   sky_light_ = sky_light_with(SkyLight::kDefaultDirections);
   one_pixel_sky_light_ = sky_light_with(kOnePixelDirections);
+  // Past the obstacle levels, the integral lights its obstacles as the point.
+  faint_sky_light_ = std::make_unique<SkyLight>(
+      sky_, scene.tracer(),
+      [this, past_the_levels = obstacle_sky_->levels()](const Ray& ray, const Hit& hit) {
+        return element_obstacle_light(ray, hit, past_the_levels);
+      },
+      fibonacci_sphere(kOnePixelDirections), fog_light_);
   reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
                                                   [this](const Vec3& position, const Vec3& normal) {
                                                     return sun_reaching(SurfacePoint{position, normal, 0, 0});
@@ -123,6 +148,10 @@ Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const Sur
 Irradiance BandsIntegrator::open_sky_irradiance(const SurfacePoint& point) const {
   return sky_light_->lights_in_fog(point.position.z) ? Irradiance(fog_light_->irradiance(point.position, point.normal))
                                                      : sky_.sky_irradiance(point.normal);
+}
+
+double BandsIntegrator::sky_light_bound_lx(const SurfacePoint& point) const {
+  return illuminance(open_sky_irradiance(point)) + obstacles_bound_lx_;
 }
 
 Irradiance BandsIntegrator::obstacle_sky(const Ray& ray, const Hit& hit, const SurfacePoint& point, int level) const {

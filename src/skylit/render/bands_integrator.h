@@ -97,6 +97,21 @@ class BandsIntegrator {
     return sky_light_at(*one_pixel_sky_light_, point, viewer);
   }
 
+  // The same for a point whose sky light is a small part of what its pixel shows (the
+  // image cache's choice, render/image_loop.cpp): kOnePixelDirections, and its obstacles
+  // lit as the point itself (ObstacleLight::lit_as_the_point), without patches of their
+  // own sky (render/obstacle_sky_light.h).
+  CachedSkyLight faint_sky_light_at(const SurfacePoint& point, const Vec3& viewer) const {
+    return sky_light_at(*faint_sky_light_, point, viewer);
+  }
+
+  // The most diffuse sky light (lx) that could reach the surface at `point`: the open
+  // sky's (or the fog's field's) on its plane, and what obstacles could send instead of
+  // the sky they hide, which is at most all the light on their own planes: the most the
+  // open sky puts on any plane, and the sun's (or the moon's) normal illuminance high
+  // above the scene. No lamp light is in the sky-light integrals' obstacles.
+  double sky_light_bound_lx(const SurfacePoint& point) const;
+
   // Obstruction directions for sky light that stands for one pixel or less: the image
   // cache's per-pixel level (a pixel centre that no grid point covers, shared only by
   // that pixel's antialiasing samples) and a sample whose surface the cache has no
@@ -204,10 +219,12 @@ class BandsIntegrator {
 
   const PreparedScene& scene_;
   const SkyModel& sky_;
+  double obstacles_bound_lx_ = 0;  // sky_light_bound_lx's obstacles' part
   Vec3 to_sun_;
   const FogSurfaceLight* fog_light_;  // with the fog's multiple scattering; else null
   std::unique_ptr<SkyLight> sky_light_;
   std::unique_ptr<SkyLight> one_pixel_sky_light_;  // kOnePixelDirections
+  std::unique_ptr<SkyLight> faint_sky_light_;      // the same, obstacles lit as the point
   // Per level of kObstacleLevelDirections: the integrals whose values obstacle_sky_ keeps.
   std::vector<std::unique_ptr<SkyLight>> obstacle_sky_lights_;
   std::unique_ptr<ObstacleSkyLight> obstacle_sky_;

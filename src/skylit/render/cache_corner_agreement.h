@@ -60,8 +60,8 @@ inline constexpr double kDepthSpan = 0.1;
 bool within_obstacle_reach(const SurfacePoint& cached, double obstacle_distance_m, const SurfacePoint& point);
 
 // Whether corners of these sky-light illuminances agree within `spread` of the largest
-// plus `other_lx`: the least, among the corners, of the pixel's other light
-// (SurfaceCache::OtherLight). What an error in the sky light changes in the image is
+// plus `other_lx`: the least, among the corners, of their pixels' other light
+// (CachedSkyLight::other_lx). What an error in the sky light changes in the image is
 // judged against all the pixel shows: at night a street lamp's light, or the glow of
 // the fog in front, outshines the sky a hundred- to a thousandfold, and the sky light's
 // fast changes there (a kerb, a ditch, a pole's foot) need no finer level.

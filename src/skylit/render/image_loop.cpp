@@ -20,21 +20,34 @@ namespace skylit {
 
 namespace {
 
-// SurfaceCache::OtherLight with lamps: what pixel (x, y) shows besides its surface's sky
-// light, as sky illuminance on the surface. The fog's glow in front counts π times its
-// luminance: what a white surface seen without loss would show under that much sky
-// light (a darker surface, or fog that dims it, only makes the glow count more, so this
-// is the least it counts); the lamps' illuminance on the surface counts as it is. The
-// lamps are tested only until the whole outshines the point's own sky light
+// The sky light the image cache keeps for the surface point seen through pixel (x, y),
+// with what else the pixel shows (CachedSkyLight::other_lx), which the cache judges its
+// corners against. With lamps that is the lamps' illuminance on the surface and the
+// fog's glow in front of it, counted as π times its luminance: the sky illuminance that
+// would show as bright on a white surface seen without loss (a darker surface, or fog
+// that dims it, only makes the glow count more, so this is the least it counts). The
+// lamps are tested until the whole outshines the most sky light the point could have
 // kOutshoneSky times: beyond, its corners agree however their sky light spreads.
+//
+// Where the other light outshines that most sky light kFaintSky times, the sky light is
+// under 5 % of the pixel, and it is found with the one-pixel level's fewer directions
+// (BandsIntegrator::kOnePixelDirections), which differ from the full set's by a few per
+// cent of the sky light: a few thousandths of the pixel at most.
 constexpr double kOutshoneSky = 100;
+constexpr double kFaintSky = 20;
 
-double light_besides_sky_lx(const SceneLamps& lamps, const LampGlowImage* glow, int x, int y, const SurfacePoint& point,
-                            const CachedSkyLight& value) {
-  const double enough_lx = kOutshoneSky * illuminance(value.diffuse_irradiance);
-  const double glow_lx = glow ? kPi * luminance(glow->centre_glow(x, y)) : 0;
-  if (glow_lx >= enough_lx) return glow_lx;
-  return glow_lx + lamps.illuminance_at_least(point, enough_lx - glow_lx);
+CachedSkyLight cached_sky_light(const BandsIntegrator& integrator, const SceneLamps* lamps, const LampGlowImage* glow,
+                                const Vec3& eye, int x, int y, const SurfacePoint& point, bool one_pixel) {
+  if (!lamps) return one_pixel ? integrator.sky_light_for_one_pixel(point, eye) : integrator.sky_light_at(point, eye);
+  const double most_sky_lx = integrator.sky_light_bound_lx(point);
+  const double enough_lx = kOutshoneSky * most_sky_lx;
+  double other_lx = glow ? kPi * luminance(glow->centre_glow(x, y)) : 0;
+  if (other_lx < enough_lx) other_lx += lamps->illuminance_at_least(point, enough_lx - other_lx);
+  CachedSkyLight value = other_lx >= kFaintSky * most_sky_lx ? integrator.faint_sky_light_at(point, eye)
+                         : one_pixel                         ? integrator.sky_light_for_one_pixel(point, eye)
+                                                             : integrator.sky_light_at(point, eye);
+  value.other_lx = other_lx;
+  return value;
 }
 
 // Neighbouring pixel centres that differ by more than this fraction (in X, Y or Z) mark
@@ -87,15 +100,12 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
     const Vec3& eye = scene.scene().camera.position;
     // The glow first: the sky-light cache judges its corners against it.
     if (scene.lamps() && scene.fog()) glow = std::make_unique<LampGlowImage>(camera, *hits, *scene.lamps());
-    SurfaceCache::OtherLight other;
-    if (const SceneLamps* lamps = scene.lamps())
-      other = [lamps, &glow](int x, int y, const SurfacePoint& p, const CachedSkyLight& value) {
-        return light_besides_sky_lx(*lamps, glow.get(), x, y, p, value);
+    auto cached = [&](bool one_pixel) {
+      return [&, one_pixel](const SurfacePoint& p, int x, int y) {
+        return cached_sky_light(integrator, scene.lamps(), glow.get(), eye, x, y, p, one_pixel);
       };
-    if (!options.exact_sky_light)
-      sky_light = std::make_unique<SurfaceCache>(
-          *hits, [&](const SurfacePoint& p) { return integrator.sky_light_at(p, eye); },
-          [&](const SurfacePoint& p) { return integrator.sky_light_for_one_pixel(p, eye); }, other);
+    };
+    if (!options.exact_sky_light) sky_light = std::make_unique<SurfaceCache>(*hits, cached(false), cached(true));
   });
   const ImageCaches caches{sky_light.get(), glow.get()};
 

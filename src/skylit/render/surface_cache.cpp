@@ -59,7 +59,7 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
       if (!e || !same_surface(e->point, point)) continue;
       corners[static_cast<size_t>(2 * dy + dx)] = e;
       corner_lx[count++] = e->diffuse_lx;
-      other_lx = std::min(other_lx, e->other_lx);
+      other_lx = std::min(other_lx, e->value.other_lx);
       all_within_reach = all_within_reach && within_reach(e->point, point);
       all_within_obstacle_reach =
           all_within_obstacle_reach && within_obstacle_reach(e->point, e->value.obstacle_distance_m, point);
@@ -126,7 +126,7 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, co
   return best->value;
 }
 
-void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute, const OtherLight& other) {
+void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute) {
   // Slots in scan order, then the values in parallel: deterministic.
   for (int gy = 0; gy < grid_height_; ++gy)
     for (int gx = 0; gx < grid_width_; ++gx) {
@@ -135,13 +135,12 @@ void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& 
       slot = kNone;
       if (const SurfacePoint* p = hits.surface(pixel_x(gx), pixel_y(gy))) {
         slot = static_cast<int32_t>(stored_.size());
-        stored_.push_back({*p, {}, 0, 0, pixel_x(gx), pixel_y(gy)});
+        stored_.push_back({*p, {}, 0, pixel_x(gx), pixel_y(gy)});
       }
     }
   tbb::parallel_for(size_t{0}, stored_.size(), [&](size_t i) {
-    stored_[i].value = compute(stored_[i].point);
+    stored_[i].value = compute(stored_[i].point, stored_[i].x, stored_[i].y);
     stored_[i].diffuse_lx = illuminance(stored_[i].value.diffuse_irradiance);
-    if (other) stored_[i].other_lx = other(stored_[i].x, stored_[i].y, stored_[i].point, stored_[i].value);
   });
 }
 
@@ -162,14 +161,13 @@ std::vector<std::vector<int>> uncovered_pixels(const PrimaryHits& hits, const Co
 
 }  // namespace
 
-SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, const Compute& compute_one_pixel,
-                           const OtherLight& other)
+SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, const Compute& compute_one_pixel)
     : coarse_(hits.width(), hits.height(), kCoarseSpacing),
       fine_(hits.width(), hits.height(), kFineSpacing),
       pixel_(hits.width(), hits.height(), kPixelSpacing) {
   for (int gy = 0; gy < coarse_.grid_height(); ++gy)
     for (int gx = 0; gx < coarse_.grid_width(); ++gx) coarse_.want(gx, gy);
-  coarse_.compute_wanted(hits, compute, other);
+  coarse_.compute_wanted(hits, compute);
   // The fine grid around every pixel whose surface the coarse grid does not cover.
   const auto not_by_coarse =
       uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) { return coarse_.interpolate(x, y, p); });
@@ -182,13 +180,13 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
         for (int dx = 0; dx <= 1; ++dx)
           fine_.want(std::min(gx + dx, fine_.grid_width() - 1), std::min(gy + dy, fine_.grid_height() - 1));
     }
-  fine_.compute_wanted(hits, compute, other);
+  fine_.compute_wanted(hits, compute);
   // The centres of the pixels that neither grid covers.
   const auto not_by_grids = uncovered_pixels(
       hits, [&](double x, double y, const SurfacePoint& p) { return from_grids(x, y, p).has_value(); });
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y]) pixel_.want(x, static_cast<int>(y));
-  pixel_.compute_wanted(hits, compute_one_pixel ? compute_one_pixel : compute, other);
+  pixel_.compute_wanted(hits, compute_one_pixel ? compute_one_pixel : compute);
 }
 
 std::optional<CachedSkyLight> SurfaceCache::from_grids(double x, double y, const SurfacePoint& point) const {

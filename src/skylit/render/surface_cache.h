@@ -36,6 +36,11 @@ struct CachedSkyLight {
   // In a multiply scattering fog: what the surface changes in the fog's light in front of
   // it, seen from the camera (media/fog_behind_surface.h); as smooth along a surface.
   FogHiddenBehind fog_hidden{};
+  // What the point's pixel shows besides this sky light, as the sky illuminance (lx) on
+  // the surface that would show as bright, or less (render/image_loop.cpp: the lamps and
+  // their glow; 0 by day). The cache judges its corners' spread against their sky light
+  // plus the least of this among them (render/cache_corner_agreement.h).
+  double other_lx = 0;
 };
 
 // Whether a cached point can stand in for `point`: the same material on the same plane
@@ -45,12 +50,8 @@ bool same_surface(const SurfacePoint& cached, const SurfacePoint& point);
 
 class SurfaceCache {
  public:
-  using Compute = std::function<CachedSkyLight(const SurfacePoint&)>;
-  // What the pixel (x, y) shows besides its surface's sky light, as the sky illuminance
-  // (lx) on the surface that would show as bright, or less; given the point's computed
-  // value. The corners' spread is judged against their sky light plus this
-  // (render/cache_corner_agreement.h).
-  using OtherLight = std::function<double(int x, int y, const SurfacePoint&, const CachedSkyLight&)>;
+  // The value at the surface point seen through pixel (x, y)'s centre.
+  using Compute = std::function<CachedSkyLight(const SurfacePoint&, int x, int y)>;
 
   // Coarse and fine grid spacings in pixels; the last level is every pixel's centre.
   static constexpr int kCoarseSpacing = 16, kFineSpacing = 4, kPixelSpacing = 1;
@@ -59,9 +60,7 @@ class SurfaceCache {
   // grid where the coarse one does not cover a pixel's surface, and the pixel's own
   // centre where neither does, the last with `compute_one_pixel` if given (a value that
   // stands for one pixel may be found more coarsely); in parallel.
-  // `other`, if given: each computed point's OtherLight.
-  SurfaceCache(const PrimaryHits& hits, const Compute& compute, const Compute& compute_one_pixel = {},
-               const OtherLight& other = {});
+  SurfaceCache(const PrimaryHits& hits, const Compute& compute, const Compute& compute_one_pixel = {});
 
   // The value for a surface point seen at image position (x, y) in pixels: interpolated
   // from the coarse grid or else the fine one; else the nearest fine grid point within 8
@@ -95,7 +94,7 @@ class SurfaceCache {
     std::optional<CachedSkyLight> nearest(double x, double y, const SurfacePoint& point, int cells) const;
     void want(int gx, int gy) { slots_[index(gx, gy)] = kWanted; }
     // Computes the wanted points that see a surface, in parallel.
-    void compute_wanted(const PrimaryHits& hits, const Compute& compute, const OtherLight& other);
+    void compute_wanted(const PrimaryHits& hits, const Compute& compute);
     int computed() const { return static_cast<int>(stored_.size()); }
 
    private:
@@ -106,7 +105,6 @@ class SurfaceCache {
       SurfacePoint point;
       CachedSkyLight value;
       double diffuse_lx = 0;  // the value's diffuse illuminance, for corners_agree
-      double other_lx = 0;    // the pixel's other light (OtherLight)
       int x = 0, y = 0;       // the pixel
     };
     size_t index(int gx, int gy) const { return static_cast<size_t>(gy) * grid_width_ + gx; }

@@ -17,7 +17,7 @@ SurfaceIlluminance surface_illuminance(const PreparedScene& scene, const BandsIn
     return CachedSkyLight{integrator.sky_light().diffuse_irradiance(p.position, p.normal), Radiance(0.0f),
                           integrator.facades().from_rough(p.position, p.normal)};
   };
-  const SurfaceCache sky(hits, light_at);
+  const SurfaceCache sky(hits, [&](const SurfacePoint& p, int, int) { return light_at(p); });
   const std::size_t pixels = static_cast<std::size_t>(width) * height;
   SurfaceIlluminance lux{std::vector<float>(pixels, 0.0f), std::vector<float>(pixels, 0.0f)};
   tbb::parallel_for(0, height, [&](int y) {
