@@ -1,10 +1,10 @@
 // The image cache's sky light on a street lit by lamps in fog at dusk
-// (render/image_loop.cpp, cached_sky_light): the cache judges its corners against all
-// the pixel shows (the lamps, the glow in front), and where that outshines the most sky
-// light the point could have twentyfold it finds the sky light with fewer directions and
+// (render/image_loop.cpp, cached_sky_light): the cache judges its corners against the
+// sky light and the glow in front, and where the glow outshines the most sky light the
+// point could have fiftyfold it finds the diffuse sky light with fewer directions and
 // the obstacles lit as the point itself. What that changes in the image is measured
 // against the exact sky light at every sample, on Fig. 9 when the sky and the lamps
-// compete (the sun 5° and 8° below the horizon). About 7 s.
+// compete (the sun 5° and 8° below the horizon). About 8 s.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,12 +46,12 @@ Deviation cached_against_exact(const std::string& sun_altitude) {
   return d;
 }
 
-// Measured (2026-12-05, 160 × 90): −5° mean ratio 1.00004, 99th percentile 3.49 %; −8°
-// 1.00001, 0.49 %. At 192 × 108 the 99th percentiles are 3.60 % and 0.52 %, the same as
-// with the cache judged against the sky light alone: the cache's own interpolation
-// error, which this does not touch. With the cheaper integral taken everywhere (what a
-// wrong bound, or a glow counted too bright, would do) 11.9 % and 4.5 %, the mean
-// 0.9986: the bounds fail it.
+// Measured (2026-12-05, 160 × 90): −5° mean ratio 1.00004, 99th percentile 3.52 %; −8°
+// 1.00000, 0.49 % (with the houses' plaster in aluminium 0.84 %). With the cache judged
+// against the sky light alone and the full integrals everywhere, 1.00006, 3.59 % and
+// 1.00000, 0.49 %: the deviation is the cache's own interpolation error, which this does
+// not touch. With the cheaper integral taken everywhere (what a wrong bound, or a glow
+// counted too bright, would do) 0.9986, 11.9 % and 0.9999, 4.5 %: the bounds fail it.
 TEST(NightSkyLightCache, LampsAndGlowOutshiningTheSkyCostNothingVisibleAtDusk) {
   const Deviation dusk = cached_against_exact("-5");
   EXPECT_NEAR(dusk.mean_ratio, 1.0, 5e-4);

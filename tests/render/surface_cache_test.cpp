@@ -157,10 +157,14 @@ TEST(SurfaceCache, SkyLightOutshoneByThePixelsOtherLightNeedsNoFinerLevel) {
   // exceeds kCornerSpread of sky and other light together.
   const SurfaceCache matched(hits, stepped([&](int) { return sky_lx; }));
   EXPECT_EQ(matched.fine_points() + matched.pixel_points(), alone.fine_points() + alone.pixel_points());
-  // Other light on one side of the image only (x ≥ 32 px): the cells straddling it, and
-  // the dark side, are refined as without it.
-  const SurfaceCache half(hits, stepped([&](int x) { return x >= kWidth / 2 ? 100 * sky_lx : 0.0; }));
-  EXPECT_GT(half.fine_points() + half.pixel_points(), 0);
+  // Other light from pixel 16 on: the cells across the step (its corners at pixels 16
+  // and 32) are covered by the coarse grid (so the cache hands each point its pixel, not
+  // its grid index); from pixel 17 on, their corners at 16 are dark, and the least other
+  // light among a cell's corners counts: refined as without it.
+  const SurfaceCache from_16(hits, stepped([&](int x) { return x >= 16 ? 100 * sky_lx : 0.0; }));
+  EXPECT_EQ(from_16.fine_points() + from_16.pixel_points(), 0);
+  const SurfaceCache from_17(hits, stepped([&](int x) { return x >= 17 ? 100 * sky_lx : 0.0; }));
+  EXPECT_GT(from_17.fine_points() + from_17.pixel_points(), 0);
 }
 
 }  // namespace

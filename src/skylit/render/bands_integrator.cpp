@@ -12,15 +12,29 @@ namespace skylit {
 
 namespace {
 
-// BandsIntegrator::sky_light_bound_lx's part for the obstacles: the most the open sky
-// puts on any of 4,096 planes of all orientations (it changes slowly with the plane), and
-// the sun's (or the moon's) normal illuminance above any building.
-double obstacles_bound_lx(const SkyModel& sky) {
-  double most_lx = 0;
-  for (const SkyElement& e : fibonacci_sphere(4096))
-    most_lx = std::max(most_lx, illuminance(sky.sky_irradiance(e.direction)));
+// BandsIntegrator::sky_light_bound_lx's part for the obstacles, ρ·E*, per wavelength bin:
+// E₀ the most the open sky puts on any of 4,096 planes of all orientations (it changes
+// slowly with the plane) and the sun's (or the moon's) normal irradiance above any
+// building; ρ the largest diffuse albedo of the materials obstacles are seen with (at
+// normal incidence, where a coating reflects least), at most the sky-light integrals' own
+// 0.99 (SkyLight::diffuse_irradiance). Per bin, as vegetation reflects half the near
+// infrared's light and little of the green's.
+double obstacles_bound_lx(const SkyModel& sky, const std::vector<Material>& obstacle_materials) {
+  Spectrum open;
+  for (const SkyElement& e : fibonacci_sphere(4096)) {
+    const Spectrum on_plane = sky.sky_irradiance(e.direction).spectrum();
+    for (int k = 0; k < kSpectralBins; ++k) open[k] = std::max(open[k], on_plane[k]);
+  }
   constexpr double kAboveAnyBuildingM = 10'000;
-  return most_lx + illuminance(sky.direct_sun(kAboveAnyBuildingM));
+  open += sky.direct_sun(kAboveAnyBuildingM).spectrum();
+  Spectrum albedo;
+  for (const Material& m : obstacle_materials) {
+    const Spectrum a = diffuse_albedo(m, 1.0).spectrum();
+    for (int k = 0; k < kSpectralBins; ++k) albedo[k] = std::max(albedo[k], std::min(a[k], 0.99f));
+  }
+  Spectrum sent;
+  for (int k = 0; k < kSpectralBins; ++k) sent[k] = albedo[k] * open[k] / (1 - albedo[k]);
+  return illuminance(Irradiance(sent));
 }
 
 }  // namespace
@@ -28,10 +42,10 @@ double obstacles_bound_lx(const SkyModel& sky) {
 BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
     : scene_(scene),
       sky_(scene.sky()),
-      obstacles_bound_lx_(obstacles_bound_lx(scene.sky())),
       to_sun_(scene.to_sun()),
       fog_light_(scene.fog() ? scene.fog()->surface_light() : nullptr),
-      obstacle_materials_(obstacle_materials(scene.scene().materials)) {
+      obstacle_materials_(obstacle_materials(scene.scene().materials)),
+      obstacles_bound_lx_(obstacles_bound_lx(scene.sky(), obstacle_materials_)) {
   // Obstacles of level i are lit by the integrals of level i; the surfaces seen look up level 0.
   const bool own_sky = scene.scene().render.obstacles_own_sky;
   const int levels = own_sky ? static_cast<int>(kObstacleLevelDirections.size()) : 0;
@@ -151,7 +165,9 @@ Irradiance BandsIntegrator::open_sky_irradiance(const SurfacePoint& point) const
 }
 
 double BandsIntegrator::sky_light_bound_lx(const SurfacePoint& point) const {
-  return illuminance(open_sky_irradiance(point)) + obstacles_bound_lx_;
+  // Under cloud bases the clouds' share lifts the sky light (cloud_sky_share.h).
+  const double clouds = std::max(1.0f, clouds_share(point.position, point.normal).max_value());
+  return clouds * (illuminance(open_sky_irradiance(point)) + obstacles_bound_lx_);
 }
 
 Irradiance BandsIntegrator::obstacle_sky(const Ray& ray, const Hit& hit, const SurfacePoint& point, int level) const {
@@ -194,13 +210,13 @@ Radiance BandsIntegrator::sky_seen_from(const Vec3& point, const Vec3& direction
   return sky_.sky_radiance_near_ground(direction) * sky_share(point, direction);
 }
 
-CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& sky_light, const SurfacePoint& point,
-                                             const Vec3& viewer) const {
+CachedSkyLight BandsIntegrator::sky_light_at(const SkyLight& diffuse_from, const SkyLight& glossy_from,
+                                             const SurfacePoint& point, const Vec3& viewer) const {
   const Material& material = material_of(point);
   const Vec3 to_viewer = normalize(viewer - point.position);
   double obstacle_distance_m = 0;
-  const Irradiance diffuse = sky_light.diffuse_irradiance(point.position, point.normal, &obstacle_distance_m);
-  CachedSkyLight out{diffuse, sky_light.specular_radiance(point.position, point.normal, to_viewer, material),
+  const Irradiance diffuse = diffuse_from.diffuse_irradiance(point.position, point.normal, &obstacle_distance_m);
+  CachedSkyLight out{diffuse, glossy_from.specular_radiance(point.position, point.normal, to_viewer, material),
                      reflected_sun_->from_rough(point.position, point.normal), obstacle_distance_m};
   if (const FogMedium* fog = scene_.fog(); fog && fog->hides_light_behind_surfaces())
     out.fog_hidden = fog->hidden_behind(Ray{viewer, -to_viewer}, length(point.position - viewer), point.plane(),

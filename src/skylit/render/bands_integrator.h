@@ -88,28 +88,32 @@ class BandsIntegrator {
   // onto it by rough glossy facades, and what it changes in the fog's light in front of
   // it (what the surface cache holds).
   CachedSkyLight sky_light_at(const SurfacePoint& point, const Vec3& viewer) const {
-    return sky_light_at(*sky_light_, point, viewer);
+    return sky_light_at(*sky_light_, *sky_light_, point, viewer);
   }
 
   // The same with kOnePixelDirections: for a value that stands for one pixel at most (the
   // cache's per-pixel level).
   CachedSkyLight sky_light_for_one_pixel(const SurfacePoint& point, const Vec3& viewer) const {
-    return sky_light_at(*one_pixel_sky_light_, point, viewer);
+    return sky_light_at(*one_pixel_sky_light_, *one_pixel_sky_light_, point, viewer);
   }
 
   // The same for a point whose sky light is a small part of what its pixel shows (the
-  // image cache's choice, render/image_loop.cpp): kOnePixelDirections, and its obstacles
-  // lit as the point itself (ObstacleLight::lit_as_the_point), without patches of their
-  // own sky (render/obstacle_sky_light.h).
+  // image cache's choice, render/image_loop.cpp): the diffuse part with
+  // kOnePixelDirections and the obstacles lit as the point itself
+  // (ObstacleLight::lit_as_the_point), without patches of their own sky
+  // (render/obstacle_sky_light.h); the glossy part as sky_light_for_one_pixel's, since a
+  // metal shows the sky, not the lamps' diffuse light.
   CachedSkyLight faint_sky_light_at(const SurfacePoint& point, const Vec3& viewer) const {
-    return sky_light_at(*faint_sky_light_, point, viewer);
+    return sky_light_at(*faint_sky_light_, *one_pixel_sky_light_, point, viewer);
   }
 
-  // The most diffuse sky light (lx) that could reach the surface at `point`: the open
-  // sky's (or the fog's field's) on its plane, and what obstacles could send instead of
-  // the sky they hide, which is at most all the light on their own planes: the most the
-  // open sky puts on any plane, and the sun's (or the moon's) normal illuminance high
-  // above the scene. No lamp light is in the sky-light integrals' obstacles.
+  // The most diffuse sky light (lx) that could reach the surface at `point`, as it is
+  // shown (after the clouds' share): the open sky's (or the fog's field's) on its plane,
+  // and what obstacles could send in place of the sky they hide. No lamp light is in the
+  // sky-light integrals' obstacles; the light on them is at most E* = E₀ + ρ·E*, E₀ the
+  // most the open sky puts on any plane plus the sun's (or the moon's) normal
+  // illuminance high above the scene, ρ the scene's brightest diffuse albedo (light
+  // going to and fro between bright walls); they send at most ρ·E*.
   double sky_light_bound_lx(const SurfacePoint& point) const;
 
   // Obstruction directions for sky light that stands for one pixel or less: the image
@@ -150,7 +154,9 @@ class BandsIntegrator {
 
  private:
   const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
-  CachedSkyLight sky_light_at(const SkyLight& sky_light, const SurfacePoint& point, const Vec3& viewer) const;
+  // With the diffuse part from `diffuse_from`, the glossy part from `glossy_from`.
+  CachedSkyLight sky_light_at(const SkyLight& diffuse_from, const SkyLight& glossy_from, const SurfacePoint& point,
+                              const Vec3& viewer) const;
   // How far the plane of a surface point reaches about it (m), up to kLargestSurfaceExtentM:
   // how much of the fog's light from behind it the surface hides (FogMedium::hidden_behind).
   static constexpr double kLargestSurfaceExtentM = 512;
@@ -219,7 +225,6 @@ class BandsIntegrator {
 
   const PreparedScene& scene_;
   const SkyModel& sky_;
-  double obstacles_bound_lx_ = 0;  // sky_light_bound_lx's obstacles' part
   Vec3 to_sun_;
   const FogSurfaceLight* fog_light_;  // with the fog's multiple scattering; else null
   std::unique_ptr<SkyLight> sky_light_;
@@ -230,6 +235,7 @@ class BandsIntegrator {
   std::unique_ptr<ObstacleSkyLight> obstacle_sky_;
   std::unique_ptr<ReflectedSun> reflected_sun_;
   std::vector<Material> obstacle_materials_;  // per scene material: what obstacle rays see
+  double obstacles_bound_lx_;                 // sky_light_bound_lx's obstacles' part
 };
 
 }  // namespace skylit

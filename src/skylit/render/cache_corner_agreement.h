@@ -62,9 +62,9 @@ bool within_obstacle_reach(const SurfacePoint& cached, double obstacle_distance_
 // Whether corners of these sky-light illuminances agree within `spread` of the largest
 // plus `other_lx`: the least, among the corners, of their pixels' other light
 // (CachedSkyLight::other_lx). What an error in the sky light changes in the image is
-// judged against all the pixel shows: at night a street lamp's light, or the glow of
-// the fog in front, outshines the sky a hundred- to a thousandfold, and the sky light's
-// fast changes there (a kerb, a ditch, a pole's foot) need no finer level.
+// judged against all the pixel shows: at night the glow of street lamps in the fog in
+// front outshines the sky a hundred- to a thousandfold, and the sky light's fast changes
+// there (a kerb, a ditch, a pole's foot) need no finer level.
 bool corners_agree(std::span<const double> corner_illuminance_lx, double spread = kCornerSpread, double other_lx = 0);
 
 }  // namespace skylit

@@ -22,31 +22,30 @@ namespace {
 
 // The sky light the image cache keeps for the surface point seen through pixel (x, y),
 // with what else the pixel shows (CachedSkyLight::other_lx), which the cache judges its
-// corners against. With lamps that is the lamps' illuminance on the surface and the
-// fog's glow in front of it, counted as π times its luminance: the sky illuminance that
-// would show as bright on a white surface seen without loss (a darker surface, or fog
-// that dims it, only makes the glow count more, so this is the least it counts). The
-// lamps are tested until the whole outshines the most sky light the point could have
-// kOutshoneSky times: beyond, its corners agree however their sky light spreads.
+// corners against: the lamps' glow in the fog in front of the surface, counted as π
+// times its luminance, the sky illuminance that would show as bright on a white surface
+// seen without loss (a darker surface, or fog that dims it, only makes the glow count
+// more, so this is the least it counts, for any material's diffuse part). The glow
+// changes smoothly across the image but at the edges of objects and beams, which the
+// cache's corners see too; the lamps' light on surfaces does not count, as a pole's
+// shadow may cross a cell whose corners are all lit.
 //
-// Where the other light outshines that most sky light kFaintSky times, the sky light is
-// under 5 % of the pixel, and it is found with the one-pixel level's fewer directions
-// (BandsIntegrator::kOnePixelDirections), which differ from the full set's by a few per
-// cent of the sky light: a few thousandths of the pixel at most.
-constexpr double kOutshoneSky = 100;
-constexpr double kFaintSky = 20;
+// Where the glow outshines the most sky light the point could have kFaintSky times
+// (BandsIntegrator::sky_light_bound_lx), the sky light is under 2 % of the pixel, and its
+// diffuse part is found by the cheaper integral (BandsIntegrator::faint_sky_light_at),
+// off by a few per cent of it, up to about 20 % where obstacles seeing other skies hide
+// much of it: under 0.4 % of the pixel.
+constexpr double kFaintSky = 50;
 
-CachedSkyLight cached_sky_light(const BandsIntegrator& integrator, const SceneLamps* lamps, const LampGlowImage* glow,
-                                const Vec3& eye, int x, int y, const SurfacePoint& point, bool one_pixel) {
-  if (!lamps) return one_pixel ? integrator.sky_light_for_one_pixel(point, eye) : integrator.sky_light_at(point, eye);
-  const double most_sky_lx = integrator.sky_light_bound_lx(point);
-  const double enough_lx = kOutshoneSky * most_sky_lx;
-  double other_lx = glow ? kPi * luminance(glow->centre_glow(x, y)) : 0;
-  if (other_lx < enough_lx) other_lx += lamps->illuminance_at_least(point, enough_lx - other_lx);
-  CachedSkyLight value = other_lx >= kFaintSky * most_sky_lx ? integrator.faint_sky_light_at(point, eye)
-                         : one_pixel                         ? integrator.sky_light_for_one_pixel(point, eye)
-                                                             : integrator.sky_light_at(point, eye);
-  value.other_lx = other_lx;
+CachedSkyLight cached_sky_light(const BandsIntegrator& integrator, const LampGlowImage* glow, const Vec3& eye, int x,
+                                int y, const SurfacePoint& point, bool one_pixel) {
+  if (!glow) return one_pixel ? integrator.sky_light_for_one_pixel(point, eye) : integrator.sky_light_at(point, eye);
+  const double glow_lx = kPi * luminance(glow->centre_glow(x, y));
+  CachedSkyLight value = glow_lx >= kFaintSky * integrator.sky_light_bound_lx(point)
+                             ? integrator.faint_sky_light_at(point, eye)
+                         : one_pixel ? integrator.sky_light_for_one_pixel(point, eye)
+                                     : integrator.sky_light_at(point, eye);
+  value.other_lx = glow_lx;
   return value;
 }
 
@@ -102,7 +101,7 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
     if (scene.lamps() && scene.fog()) glow = std::make_unique<LampGlowImage>(camera, *hits, *scene.lamps());
     auto cached = [&](bool one_pixel) {
       return [&, one_pixel](const SurfacePoint& p, int x, int y) {
-        return cached_sky_light(integrator, scene.lamps(), glow.get(), eye, x, y, p, one_pixel);
+        return cached_sky_light(integrator, glow.get(), eye, x, y, p, one_pixel);
       };
     };
     if (!options.exact_sky_light) sky_light = std::make_unique<SurfaceCache>(*hits, cached(false), cached(true));

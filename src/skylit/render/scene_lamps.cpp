@@ -54,36 +54,6 @@ Irradiance SceneLamps::irradiance_on(const SurfacePoint& point) const {
   return sum;
 }
 
-double SceneLamps::illuminance_at_least(const SurfacePoint& point, double enough_lx) const {
-  struct Candidate {
-    Vec3 to_lamp;
-    double distance, lx;  // lx: unshadowed
-  };
-  thread_local std::vector<Candidate> candidates;
-  candidates.clear();
-  const Vec3 origin = offset_from_surface(point.position, point.normal);
-  const double most_opaque =
-      fog_ ? *std::max_element(fog_->unit_density_extinction_bins().begin(), fog_->unit_density_extinction_bins().end())
-           : 0;
-  for (size_t i = 0; i < lamps_.size(); ++i) {
-    const Vec3 to_lamp = position(i) - origin;
-    const double d = length(to_lamp);
-    if (!(d > 0)) continue;
-    const double cos_in = dot(point.normal, to_lamp) / d;
-    if (!(cos_in > 0)) continue;
-    double lx = lamps_[i].map->candela(-to_lamp) / (d * d) * cos_in;  // the spectra: one candela per candela
-    if (fog_ && lx > 0) lx *= std::exp(-most_opaque * fog_->column_between(position(i), point.position));
-    if (lx > 0) candidates.push_back({to_lamp / d, d, lx});
-  }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.lx > b.lx; });
-  double sum = 0;
-  for (const Candidate& c : candidates) {
-    if (sum >= enough_lx) break;
-    if (!tracer_.occluded(Ray{origin, c.to_lamp, 0.0, c.distance * (1 - 1e-6)})) sum += c.lx;
-  }
-  return sum;
-}
-
 Radiance SceneLamps::reflected(const SurfacePoint& point, const Material& material, const Vec3& to_viewer) const {
   // Each lamp that sends light to the point at all is a candidate, with the radiance
   // (cd/m², mean over bins; the spectra are one candela per candela) it would reflect

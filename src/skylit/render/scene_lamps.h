@@ -68,13 +68,6 @@ class SceneLamps {
   // each checked for occlusion: what an illuminance meter laid on it would read.
   Irradiance irradiance_on(const SurfacePoint& point) const;
 
-  // The lamps' illuminance (lx) on the surface at `point`, as irradiance_on reads it but
-  // through the fog at its most opaque bin's transmittance (exact in a grey fog, else
-  // less), and short of it once it passes `enough_lx`: occlusion is tested brightest lamp
-  // first, and the rest are left out from there. For a caller that only asks whether
-  // the lamps outshine something (render/cache_corner_agreement.h).
-  double illuminance_at_least(const SurfacePoint& point, double enough_lx) const;
-
   // A lamp's spectral irradiance (W m⁻² nm⁻¹) on a plane facing it at `point`, through
   // the fog but not checked for occlusion.
   Irradiance irradiance_from(size_t lamp, const Vec3& point) const;

@@ -37,8 +37,8 @@ struct CachedSkyLight {
   // it, seen from the camera (media/fog_behind_surface.h); as smooth along a surface.
   FogHiddenBehind fog_hidden{};
   // What the point's pixel shows besides this sky light, as the sky illuminance (lx) on
-  // the surface that would show as bright, or less (render/image_loop.cpp: the lamps and
-  // their glow; 0 by day). The cache judges its corners' spread against their sky light
+  // the surface that would show as bright, or less (render/image_loop.cpp: the lamps'
+  // glow in the fog in front of it; 0 by day). The cache judges its corners' spread against their sky light
   // plus the least of this among them (render/cache_corner_agreement.h).
   double other_lx = 0;
 };
