@@ -44,8 +44,7 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       sky_(scene.sky()),
       to_sun_(scene.to_sun()),
       fog_light_(scene.fog() ? scene.fog()->surface_light() : nullptr),
-      obstacle_materials_(obstacle_materials(scene.scene().materials)),
-      obstacles_bound_lx_(obstacles_bound_lx(scene.sky(), obstacle_materials_)) {
+      obstacle_materials_(obstacle_materials(scene.scene().materials)) {
   // Obstacles of level i are lit by the integrals of level i; the surfaces seen look up level 0.
   const bool own_sky = scene.scene().render.obstacles_own_sky;
   const int levels = own_sky ? static_cast<int>(kObstacleLevelDirections.size()) : 0;
@@ -66,13 +65,16 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       });
   sky_light_ = sky_light_with(SkyLight::kDefaultDirections);
   one_pixel_sky_light_ = sky_light_with(kOnePixelDirections);
-  // Past the obstacle levels, the integral lights its obstacles as the point.
-  faint_sky_light_ = std::make_unique<SkyLight>(
-      sky_, scene.tracer(),
-      [this, past_the_levels = obstacle_sky_->levels()](const Ray& ray, const Hit& hit) {
-        return element_obstacle_light(ray, hit, past_the_levels);
-      },
-      fibonacci_sphere(kOnePixelDirections), fog_light_);
+  if (scene.lamps() && scene.fog()) {  // what the image cache uses where the lamps' glow outshines the sky
+    obstacles_bound_lx_ = obstacles_bound_lx(sky_, obstacle_materials_);
+    // Past the obstacle levels, the integral lights its obstacles as the point.
+    faint_sky_light_ = std::make_unique<SkyLight>(
+        sky_, scene.tracer(),
+        [this, past_the_levels = obstacle_sky_->levels()](const Ray& ray, const Hit& hit) {
+          return element_obstacle_light(ray, hit, past_the_levels);
+        },
+        fibonacci_sphere(kOnePixelDirections), fog_light_);
+  }
   reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
                                                   [this](const Vec3& position, const Vec3& normal) {
                                                     return sun_reaching(SurfacePoint{position, normal, 0, 0});

@@ -102,7 +102,7 @@ class BandsIntegrator {
   // kOnePixelDirections and the obstacles lit as the point itself
   // (ObstacleLight::lit_as_the_point), without patches of their own sky
   // (render/obstacle_sky_light.h); the glossy part as sky_light_for_one_pixel's, since a
-  // metal shows the sky, not the lamps' diffuse light.
+  // metal shows the sky, not the lamps' diffuse light. In scenes with lamps in fog only.
   CachedSkyLight faint_sky_light_at(const SurfacePoint& point, const Vec3& viewer) const {
     return sky_light_at(*faint_sky_light_, *one_pixel_sky_light_, point, viewer);
   }
@@ -113,7 +113,11 @@ class BandsIntegrator {
   // sky-light integrals' obstacles; the light on them is at most E* = E₀ + ρ·E*, E₀ the
   // most the open sky puts on any plane plus the sun's (or the moon's) normal
   // illuminance high above the scene, ρ the scene's brightest diffuse albedo (light
-  // going to and fro between bright walls); they send at most ρ·E*.
+  // going to and fro between bright walls); they send at most ρ·E*. Left out: a glass or
+  // metal obstacle mirroring a brighter part of the sky than the one it hides, and an
+  // obstacle under a cloud base that lifts its sky light more than the point's (each
+  // puts the sky light above the bound by a fraction of it). In scenes with lamps in fog
+  // only.
   double sky_light_bound_lx(const SurfacePoint& point) const;
 
   // Obstruction directions for sky light that stands for one pixel or less: the image
@@ -229,13 +233,15 @@ class BandsIntegrator {
   const FogSurfaceLight* fog_light_;  // with the fog's multiple scattering; else null
   std::unique_ptr<SkyLight> sky_light_;
   std::unique_ptr<SkyLight> one_pixel_sky_light_;  // kOnePixelDirections
-  std::unique_ptr<SkyLight> faint_sky_light_;      // the same, obstacles lit as the point
+  std::unique_ptr<SkyLight> faint_sky_light_;      // the same, obstacles lit as the point (below)
   // Per level of kObstacleLevelDirections: the integrals whose values obstacle_sky_ keeps.
   std::vector<std::unique_ptr<SkyLight>> obstacle_sky_lights_;
   std::unique_ptr<ObstacleSkyLight> obstacle_sky_;
   std::unique_ptr<ReflectedSun> reflected_sun_;
   std::vector<Material> obstacle_materials_;  // per scene material: what obstacle rays see
-  double obstacles_bound_lx_;                 // sky_light_bound_lx's obstacles' part
+  // With lamps in fog only (what the image cache's glow needs): sky_light_bound_lx's
+  // obstacles' part, and the integral of faint_sky_light_at.
+  double obstacles_bound_lx_ = 0;
 };
 
 }  // namespace skylit
