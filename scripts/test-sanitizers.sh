@@ -54,6 +54,8 @@ heavy=(
   FogSkyLight.NoNanForExtremeInputs
   WeatherConditions.ClearHoursOfTheSharedFileMatchTheModel
   SkyLightCacheExamples.Fig7AtSmallSizesStaysNearTheExactSkyLight
+  # four renders of Fig. 9, two with the exact sky light at every sample (8 s in Release)
+  NightSkyLightCache.LampsAndGlowOutshiningTheSkyCostNothingVisibleAtDusk
   SkyLightCacheExamples.Fig7CacheAddsLittleToTheQuadraturesOwnError
   # the atmosphere's Monte Carlo reference (test code; about 25 s of CPU in Release for
   # each estimator), which whichever of these runs first in a shard computes
