@@ -50,13 +50,9 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   const int levels = own_sky ? static_cast<int>(kObstacleLevelDirections.size()) : 0;
   std::vector<int> lookup_directions{SkyLight::kDefaultDirections};
   for (int level = 0; level < levels; ++level) {
-    const ObstacleRadiance next_level = [this, level](const Ray& ray, const Hit& hit) {
-      return element_obstacle_light(ray, hit, level + 1);
-    };
-    obstacle_sky_lights_.push_back(
-        std::make_unique<SkyLight>(sky_, scene.tracer(), next_level,
-                                   fibonacci_sphere(kObstacleLevelDirections[static_cast<size_t>(level)]), fog_light_));
-    lookup_directions.push_back(kObstacleLevelDirections[static_cast<size_t>(level)]);
+    const int directions = kObstacleLevelDirections[static_cast<size_t>(level)];
+    obstacle_sky_lights_.push_back(sky_light_looking_up(level + 1, directions));
+    lookup_directions.push_back(directions);
   }
   lookup_directions.pop_back();
   obstacle_sky_ = std::make_unique<ObstacleSkyLight>(
@@ -68,12 +64,7 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   if (scene.lamps() && scene.fog()) {  // what the image cache uses where the lamps' glow outshines the sky
     obstacles_bound_lx_ = obstacles_bound_lx(sky_, obstacle_materials_);
     // Past the obstacle levels, the integral lights its obstacles as the point.
-    faint_sky_light_ = std::make_unique<SkyLight>(
-        sky_, scene.tracer(),
-        [this, past_the_levels = obstacle_sky_->levels()](const Ray& ray, const Hit& hit) {
-          return element_obstacle_light(ray, hit, past_the_levels);
-        },
-        fibonacci_sphere(kOnePixelDirections), fog_light_);
+    faint_sky_light_ = sky_light_looking_up(obstacle_sky_->levels(), kOnePixelDirections);
   }
   reflected_sun_ = std::make_unique<ReflectedSun>(scene.scene(), scene.tracer(), to_sun_,
                                                   [this](const Vec3& position, const Vec3& normal) {
@@ -82,7 +73,13 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
 }
 
 std::unique_ptr<SkyLight> BandsIntegrator::sky_light_with(int directions) const {
-  const auto obstacle = [this](const Ray& ray, const Hit& hit) { return element_obstacle_light(ray, hit, 0); };
+  return sky_light_looking_up(0, directions);
+}
+
+std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int directions) const {
+  const auto obstacle = [this, level](const Ray& ray, const Hit& hit) {
+    return element_obstacle_light(ray, hit, level);
+  };
   return std::make_unique<SkyLight>(sky_, scene_.tracer(), obstacle, fibonacci_sphere(directions), fog_light_);
 }
 

@@ -158,6 +158,10 @@ class BandsIntegrator {
 
  private:
   const Material& material_of(const SurfacePoint& point) const { return scene_.material(point.material); }
+  // A sky-light integral of `directions` directions whose obstacles are lit by the
+  // obstacle sky light's `level` (element_obstacle_light; past the last level, as the
+  // point itself).
+  std::unique_ptr<SkyLight> sky_light_looking_up(int level, int directions) const;
   // With the diffuse part from `diffuse_from`, the glossy part from `glossy_from`.
   CachedSkyLight sky_light_at(const SkyLight& diffuse_from, const SkyLight& glossy_from, const SurfacePoint& point,
                               const Vec3& viewer) const;

@@ -38,8 +38,9 @@ struct CachedSkyLight {
   FogHiddenBehind fog_hidden{};
   // What the point's pixel shows besides this sky light, as the sky illuminance (lx) on
   // the surface that would show as bright, or less (render/image_loop.cpp: the lamps'
-  // glow in the fog in front of it; 0 by day). The cache judges its corners' spread against their sky light
-  // plus the least of this among them (render/cache_corner_agreement.h).
+  // glow in the fog in front of it; 0 without lamps in fog). The cache judges its
+  // corners' spread against their sky light plus the least of this among them
+  // (render/cache_corner_agreement.h).
   double other_lx = 0;
 };
 
