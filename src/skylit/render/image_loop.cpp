@@ -39,9 +39,8 @@ constexpr double kFaintSky = 50;
 
 CachedSkyLight cached_sky_light(const BandsIntegrator& integrator, const LampGlowImage* glow, const Vec3& eye, int x,
                                 int y, const SurfacePoint& point, bool one_pixel) {
-  if (!glow) return one_pixel ? integrator.sky_light_for_one_pixel(point, eye) : integrator.sky_light_at(point, eye);
-  const double glow_lx = kPi * luminance(glow->centre_glow(x, y));
-  CachedSkyLight value = glow_lx >= kFaintSky * integrator.sky_light_bound_lx(point)
+  const double glow_lx = glow ? kPi * luminance(glow->centre_glow(x, y)) : 0;
+  CachedSkyLight value = glow && glow_lx >= kFaintSky * integrator.sky_light_bound_lx(point)
                              ? integrator.faint_sky_light_at(point, eye)
                          : one_pixel ? integrator.sky_light_for_one_pixel(point, eye)
                                      : integrator.sky_light_at(point, eye);
