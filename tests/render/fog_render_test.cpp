@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <utility>
 
 #include "skylit/geometry/primitives.h"
@@ -14,6 +15,14 @@
 
 namespace skylit {
 namespace {
+
+// A committed ray tracer holding `meshes`: what a surface in the fog sees around it.
+std::unique_ptr<RayTracer> tracer_of(const std::vector<const TriangleMesh*>& meshes) {
+  auto tracer = std::make_unique<RayTracer>();
+  for (const TriangleMesh* mesh : meshes) tracer->add_mesh(*mesh);
+  tracer->commit();
+  return tracer;
+}
 
 Scene street_scene() {
   Scene scene;
@@ -58,7 +67,8 @@ TEST(FogRender, FogAddsNoMoreLightThanItsSources) {
   const Vec3 to_sun = direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg);
   const SkyModel sky(atmosphere, to_sun, 1.6);
   const std::vector<const TriangleMesh*> meshes{&scene.objects[0].mesh, &scene.objects[1].mesh};
-  const FogMedium fog(*scene.fog, meshes, sky, scene.camera.position);
+  const std::unique_ptr<RayTracer> tracer = tracer_of(meshes);
+  const FogMedium fog(*scene.fog, meshes, *tracer, sky, scene.camera.position);
   const FogSkyLight sky_light(fog.layer(), sky);
   const Irradiance sun = sky.direct_sun(fog.layer().top_m());
   for (const Vec3 dir : {normalize(Vec3{0, 1, 0}), normalize(Vec3{0.5, 1, 0.05}), normalize(Vec3{-1, 0.2, 0.3}),
@@ -119,7 +129,9 @@ TEST(FogRender, ShadowsTakeTheBeamsAndTheFieldsSunSideLight) {
   // the same to rounding. From its own camera it reads its table, which holds the
   // field's sun-side light by distance and interpolates it (within 2 %).
   for (const Vec3& camera : {Vec3{0, 0, 500}, origin}) {
-    const FogMedium shaded(*scene.fog, with_block, sky, camera), open(*scene.fog, without, sky, camera);
+    const std::unique_ptr<RayTracer> with_block_tracer = tracer_of(with_block), without_tracer = tracer_of(without);
+    const FogMedium shaded(*scene.fog, with_block, *with_block_tracer, sky, camera),
+        open(*scene.fog, without, *without_tracer, sky, camera);
     ASSERT_LT(open.sun_depth_scale(), 0.9);  // the beams carry the forward spike's light
     const Spectrum difference =
         (open.along(ray, length).near.in_scattered - shaded.along(ray, length).near.in_scattered).spectrum();
@@ -147,8 +159,9 @@ TEST(FogRender, CameraTableMatchesDirectIntegrationInDenseFog) {
   const SkyModel sky(atmosphere, direction_from_altitude_azimuth(scene.sun.altitude_deg, scene.sun.azimuth_deg), 1.6);
   const std::vector<const TriangleMesh*> no_meshes;
   const Vec3 camera = scene.camera.position;
-  const FogMedium tabulated(*scene.fog, no_meshes, sky, camera),
-      direct(*scene.fog, no_meshes, sky, camera + Vec3{0, 0, 50});
+  const std::unique_ptr<RayTracer> tracer = tracer_of(no_meshes);
+  const FogMedium tabulated(*scene.fog, no_meshes, *tracer, sky, camera),
+      direct(*scene.fog, no_meshes, *tracer, sky, camera + Vec3{0, 0, 50});
   double worst = 0;
   for (const double elevation_deg : {0.0, 0.03, -0.2, 2.0, 10.0, 45.0}) {
     const Ray ray{camera, direction_from_altitude_azimuth(elevation_deg, 20)};

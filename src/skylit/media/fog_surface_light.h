@@ -27,15 +27,17 @@
 //
 // What it leaves out, and why: the field is that of a horizontally uniform layer, so the
 // fog between buildings is lit as if nothing shaded it (the fog's glow in a street
-// canyon is that of the open layer); the forward spike's sunlight is in the direct beam,
-// so a surface that the beam does not reach loses the aureole within a few degrees of
-// the sun with it.
+// canyon is that of the open layer) but for the sunlight the fog in a building's shadow
+// does not scatter toward a shaded point (fog_shadowed_sunlight.h, first order); the
+// forward spike's sunlight is in the direct beam, so a surface that the beam does not
+// reach loses the aureole within a few degrees of the sun with it.
 #pragma once
 
 #include <array>
 #include <vector>
 
 #include "skylit/core/vec3.h"
+#include "skylit/media/fog_shadowed_sunlight.h"
 #include "skylit/media/fog_sky_light.h"
 #include "skylit/spectrum/spectrum.h"
 
@@ -47,8 +49,13 @@ class FogSurfaceLight {
   static constexpr int kIncidentElevations = 256;
 
   // `sky_light` must have the multiple-scattering field (diffuse_field() not null); it
-  // is referred to, not copied.
-  explicit FogSurfaceLight(const FogSkyLight& sky_light);
+  // is referred to, not copied, as is `shadowed` (null: no buildings' shadows to take
+  // out, or no sun).
+  explicit FogSurfaceLight(const FogSkyLight& sky_light, const FogShadowedSunlight* shadowed = nullptr);
+
+  // What a surface point in a building's shadow misses of the field's sunlight by
+  // direction (media/fog_shadowed_sunlight.h); null where there is nothing to miss.
+  const FogShadowedSunlight* shadowed_sunlight() const { return shadowed_; }
 
   // Whether a point at altitude z gets its sky light here (below the layer's top; under
   // a raised layer the field at its bottom stands for the light coming out of it).
@@ -92,6 +99,7 @@ class FogSurfaceLight {
   Spectrum incoming_at_level(size_t level, const Vec3& from, const FogDiffuseField::AzimuthTerms& cosines) const;
 
   const FogSkyLight& sky_light_;
+  const FogShadowedSunlight* shadowed_;
   const FogDiffuseField& field_;
   double depth_scale_;
   std::vector<Spectrum> irradiance_;  // [level][normal elevation][term]

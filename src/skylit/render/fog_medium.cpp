@@ -9,6 +9,7 @@
 
 #include "skylit/geometry/intervals.h"
 #include "skylit/media/fog_sun_integral.h"
+#include "skylit/sky/band_sources.h"
 
 namespace skylit {
 
@@ -21,8 +22,8 @@ double FogMedium::row_elevation(int row) {
   return 0.5 * kPi * u * std::abs(u);
 }
 
-FogMedium::FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes, const SkyModel& sky,
-                     const Vec3& camera)
+FogMedium::FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes,
+                     const RayTracer& tracer, const SkyModel& sky, const Vec3& camera)
     : layer_(settings),
       to_sun_(sky.to_sun()),
       sun_above_fog_(sky.direct_sun(std::max(0.0, layer_.top_m())).spectrum()),
@@ -34,7 +35,14 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       row_length_(kElevationRows),
       row_depth_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))) {
   if (const FogDiffuseField* field = sky_light_.diffuse_field()) {
-    surface_light_ = std::make_unique<FogSurfaceLight>(sky_light_);
+    if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
+      std::vector<Vec3> directions;
+      for (const SkyElement& e : fibonacci_sphere(FogShadowedSunlight::kDefaultDirections))
+        directions.push_back(e.direction);
+      shadowed_sunlight_ = std::make_unique<FogShadowedSunlight>(layer_, *field, shadows_, tracer, to_sun_,
+                                                                 sun_above_fog_, std::move(directions));
+    }
+    surface_light_ = std::make_unique<FogSurfaceLight>(sky_light_, shadowed_sunlight_.get());
     behind_ = std::make_unique<FogBehindSurfaces>(layer_, *field, -to_sun_);
   }
   // The multiple-scattering source has azimuthal terms: the table keeps each one.

@@ -25,8 +25,10 @@ class FogMedium {
   // `camera` is where the view rays start: the sky light the fog scatters toward it
   // depends only on a ray's elevation and length (the layer is level and the sky light
   // in it depends only on altitude), so it is tabulated once for the camera.
-  FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes, const SkyModel& sky,
-            const Vec3& camera);
+  // `tracer` holds the same meshes (what a surface in a shadow sees of the fog around
+  // it); it must outlive this.
+  FogMedium(const FogSettings& settings, const std::vector<const TriangleMesh*>& meshes, const RayTracer& tracer,
+            const SkyModel& sky, const Vec3& camera);
   // The surface light refers to the sky light held here: not copied, not moved.
   FogMedium(const FogMedium&) = delete;
   FogMedium& operator=(const FogMedium&) = delete;
@@ -91,7 +93,9 @@ class FogMedium {
   Spectrum sun_above_fog_;  // the sun's direct normal irradiance at the layer's top
   SunShadowVolumes shadows_;
   FogSkyLight sky_light_;
-  std::unique_ptr<FogSurfaceLight> surface_light_;  // refers to sky_light_
+  // With multiple scattering and the sun up; refers to layer_, shadows_, sky_light_'s field.
+  std::unique_ptr<FogShadowedSunlight> shadowed_sunlight_;
+  std::unique_ptr<FogSurfaceLight> surface_light_;  // refers to sky_light_ and shadowed_sunlight_
   std::unique_ptr<FogBehindSurfaces> behind_;       // refers to layer_ and sky_light_
 
   // The sky light scattered toward the camera along rays of elevation row i, up to

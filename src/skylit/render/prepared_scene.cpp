@@ -34,7 +34,7 @@ PreparedScene::PreparedScene(const Scene& scene)
   // The scene's meshes, for the fog's and the lamps' shadow volumes.
   std::vector<const TriangleMesh*> meshes;
   for (const SceneObject& object : scene.objects) meshes.push_back(&object.mesh);
-  if (scene.fog) fog_ = std::make_unique<FogMedium>(*scene.fog, meshes, sky_, scene.camera.position);
+  if (scene.fog) fog_ = std::make_unique<FogMedium>(*scene.fog, meshes, tracer_, sky_, scene.camera.position);
   if (!scene.lights.empty())
     lamps_ = std::make_unique<SceneLamps>(scene.lights, tracer_, meshes, fog_ ? &fog_->layer() : nullptr);
 }

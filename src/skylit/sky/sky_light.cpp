@@ -270,6 +270,15 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
       }
     }
   }
+  // In a building's shadow the fog along many of the point's directions lies in the
+  // shadow too and scatters no sunlight toward it (media/fog_shadowed_sunlight.h). Only
+  // at the outermost level: the obstacles' own sky light (integrals nested in this one)
+  // keeps the open field's, a correction of a correction (docs/fog.md).
+  if (in_fog && depth == 1)
+    if (const FogShadowedSunlight* shadowed = fog_->shadowed_sunlight(); shadowed && shadowed->shaded(point, normal)) {
+      const Spectrum missing = shadowed->missing_irradiance(point, normal);
+      for (int k = 0; k < kSpectralBins; ++k) irradiance[k] = std::max(0.0f, irradiance[k] - missing[k]);
+    }
   // Σ w·ρ/π ≤ ρ times the hidden share of the hemisphere, below 1 for any albedo below 1;
   // the bound keeps a white room's geometric series finite.
   if (lit_as_the_point)
