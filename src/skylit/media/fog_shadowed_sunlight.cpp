@@ -14,8 +14,9 @@ namespace skylit {
 namespace {
 constexpr double kFarM = 50e3;  // a level ray inside the layer: far enough to be opaque
 // Largest change per step of the sun's scaled depth and of the altitude (as a share of
-// the density's vertical scale): the sunlight and the density are taken at each step's
-// middle, the viewer's dimming is exact.
+// the density's vertical scale), up to kMaxSteps a part: the sunlight is taken at each
+// step's middle; the fog's column along the step, and so the dimming toward the point,
+// is exact.
 constexpr double kSunDepthPitch = 0.25, kAltitudePitch = 0.25;
 constexpr int kMaxSteps = 32;
 }  // namespace
@@ -64,7 +65,7 @@ Spectrum FogShadowedSunlight::missing_radiance(const Vec3& point, const Vec3& di
     const double rise = std::abs(direction.z) * (part.end - part.begin);
     const double steps_needed = std::max(rise / (kAltitudePitch * vertical_scale),
                                          scale * sigma_max * densest * rise / (kSunDepthPitch * to_sun_.z));
-    const int steps = std::clamp(static_cast<int>(std::ceil(steps_needed)), 1, kMaxSteps);
+    const int steps = !(steps_needed < kMaxSteps) ? kMaxSteps : std::max(1, static_cast<int>(std::ceil(steps_needed)));
     const double ds = (part.end - part.begin) / steps;
     double column_before = layer_.column(point.z, direction.z, 0.0, part.begin);
     for (int i = 0; i < steps; ++i) {

@@ -36,11 +36,8 @@ std::array<double, kModes> clamped_cosine_terms(double a, double b) {
 
 }  // namespace
 
-FogSurfaceLight::FogSurfaceLight(const FogSkyLight& sky_light, const FogShadowedSunlight* shadowed)
-    : sky_light_(sky_light),
-      shadowed_(shadowed),
-      field_(*sky_light.diffuse_field()),
-      depth_scale_(sky_light.sun_depth_scale()) {
+FogSurfaceLight::FogSurfaceLight(const FogSkyLight& sky_light)
+    : sky_light_(sky_light), field_(*sky_light.diffuse_field()), depth_scale_(sky_light.sun_depth_scale()) {
   // The kernel at each normal elevation and incident elevation, with the quadrature's
   // weight dμ = cos e·de folded in. The incident light arrives from elevation e and so
   // travels with upward cosine −sin e.

@@ -37,7 +37,6 @@
 #include <vector>
 
 #include "skylit/core/vec3.h"
-#include "skylit/media/fog_shadowed_sunlight.h"
 #include "skylit/media/fog_sky_light.h"
 #include "skylit/spectrum/spectrum.h"
 
@@ -49,13 +48,8 @@ class FogSurfaceLight {
   static constexpr int kIncidentElevations = 256;
 
   // `sky_light` must have the multiple-scattering field (diffuse_field() not null); it
-  // is referred to, not copied, as is `shadowed` (null: no buildings' shadows to take
-  // out, or no sun).
-  explicit FogSurfaceLight(const FogSkyLight& sky_light, const FogShadowedSunlight* shadowed = nullptr);
-
-  // What a surface point in a building's shadow misses of the field's sunlight by
-  // direction (media/fog_shadowed_sunlight.h); null where there is nothing to miss.
-  const FogShadowedSunlight* shadowed_sunlight() const { return shadowed_; }
+  // is referred to, not copied.
+  explicit FogSurfaceLight(const FogSkyLight& sky_light);
 
   // Whether a point at altitude z gets its sky light here (below the layer's top; under
   // a raised layer the field at its bottom stands for the light coming out of it).
@@ -99,7 +93,6 @@ class FogSurfaceLight {
   Spectrum incoming_at_level(size_t level, const Vec3& from, const FogDiffuseField::AzimuthTerms& cosines) const;
 
   const FogSkyLight& sky_light_;
-  const FogShadowedSunlight* shadowed_;
   const FogDiffuseField& field_;
   double depth_scale_;
   std::vector<Spectrum> irradiance_;  // [level][normal elevation][term]

@@ -80,7 +80,12 @@ std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int d
   const auto obstacle = [this, level](const Ray& ray, const Hit& hit) {
     return element_obstacle_light(ray, hit, level);
   };
-  return std::make_unique<SkyLight>(sky_, scene_.tracer(), obstacle, fibonacci_sphere(directions), fog_light_);
+  // The points' own integrals (level 0) lose the sunlight the fog in the shadows around a
+  // shaded point does not scatter; the obstacles' keep the open field's, a correction
+  // of a correction (docs/fog.md).
+  const FogShadowedSunlight* shadowed = level == 0 && scene_.fog() ? scene_.fog()->shadowed_sunlight() : nullptr;
+  return std::make_unique<SkyLight>(sky_, scene_.tracer(), obstacle, fibonacci_sphere(directions), fog_light_,
+                                    shadowed);
 }
 
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {

@@ -42,7 +42,7 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       shadowed_sunlight_ = std::make_unique<FogShadowedSunlight>(layer_, *field, shadows_, tracer, to_sun_,
                                                                  sun_above_fog_, std::move(directions));
     }
-    surface_light_ = std::make_unique<FogSurfaceLight>(sky_light_, shadowed_sunlight_.get());
+    surface_light_ = std::make_unique<FogSurfaceLight>(sky_light_);
     behind_ = std::make_unique<FogBehindSurfaces>(layer_, *field, -to_sun_);
   }
   // The multiple-scattering source has azimuthal terms: the table keeps each one.

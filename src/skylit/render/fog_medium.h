@@ -14,6 +14,7 @@
 #include "skylit/geometry/sun_shadow_volumes.h"
 #include "skylit/media/fog_behind_surface.h"
 #include "skylit/media/fog_layer.h"
+#include "skylit/media/fog_shadowed_sunlight.h"
 #include "skylit/media/fog_sky_light.h"
 #include "skylit/media/fog_surface_light.h"
 #include "skylit/spectrum/medium_stretch.h"
@@ -82,6 +83,9 @@ class FogMedium {
   // direction (what lights them in place of the sky times sky_light_share); null in the
   // paper's mode.
   const FogSurfaceLight* surface_light() const { return surface_light_.get(); }
+  // With multiple scattering and the sun up, what a shaded surface misses of the fog's
+  // sunlight by direction (media/fog_shadowed_sunlight.h); else null.
+  const FogShadowedSunlight* shadowed_sunlight() const { return shadowed_sunlight_.get(); }
 
   const FogLayer& layer() const { return layer_; }
   // The factor on the optical depth toward the sun of the beams (FogSkyLight).
@@ -95,7 +99,7 @@ class FogMedium {
   FogSkyLight sky_light_;
   // With multiple scattering and the sun up; refers to layer_, shadows_, sky_light_'s field.
   std::unique_ptr<FogShadowedSunlight> shadowed_sunlight_;
-  std::unique_ptr<FogSurfaceLight> surface_light_;  // refers to sky_light_ and shadowed_sunlight_
+  std::unique_ptr<FogSurfaceLight> surface_light_;  // refers to sky_light_
   std::unique_ptr<FogBehindSurfaces> behind_;       // refers to layer_ and sky_light_
 
   // The sky light scattered toward the camera along rays of elevation row i, up to

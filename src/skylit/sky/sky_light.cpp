@@ -12,12 +12,14 @@
 namespace skylit {
 
 SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
-                   std::vector<SkyElement> elements, const FogSurfaceLight* fog)
+                   std::vector<SkyElement> elements, const FogSurfaceLight* fog,
+                   const FogShadowedSunlight* shadowed_fog_sunlight)
     : sky_(sky),
       tracer_(tracer),
       obstacle_radiance_(std::move(obstacle_radiance)),
       elements_(std::move(elements)),
-      fog_(fog) {
+      fog_(fog),
+      shadowed_fog_sunlight_(fog ? shadowed_fog_sunlight : nullptr) {
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
   if (fog_) {
     std::vector<Vec3> directions;
@@ -271,14 +273,12 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
     }
   }
   // In a building's shadow the fog along many of the point's directions lies in the
-  // shadow too and scatters no sunlight toward it (media/fog_shadowed_sunlight.h). Only
-  // at the outermost level: the obstacles' own sky light (integrals nested in this one)
-  // keeps the open field's, a correction of a correction (docs/fog.md).
-  if (in_fog && depth == 1)
-    if (const FogShadowedSunlight* shadowed = fog_->shadowed_sunlight(); shadowed && shadowed->shaded(point, normal)) {
-      const Spectrum missing = shadowed->missing_irradiance(point, normal);
-      for (int k = 0; k < kSpectralBins; ++k) irradiance[k] = std::max(0.0f, irradiance[k] - missing[k]);
-    }
+  // shadow too and scatters no sunlight toward it (media/fog_shadowed_sunlight.h); given
+  // to the points' own integrals only (the constructor).
+  if (in_fog && shadowed_fog_sunlight_ && shadowed_fog_sunlight_->shaded(point, normal)) {
+    const Spectrum missing = shadowed_fog_sunlight_->missing_irradiance(point, normal);
+    for (int k = 0; k < kSpectralBins; ++k) irradiance[k] = std::max(0.0f, irradiance[k] - missing[k]);
+  }
   // Σ w·ρ/π ≤ ρ times the hidden share of the hemisphere, below 1 for any albedo below 1;
   // the bound keeps a white room's geometric series finite.
   if (lit_as_the_point)

@@ -19,6 +19,7 @@
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/material/material.h"
+#include "skylit/media/fog_shadowed_sunlight.h"
 #include "skylit/media/fog_surface_light.h"
 #include "skylit/sky/band_sources.h"
 
@@ -56,10 +57,14 @@ class SkyLight {
   // `fog`, when given (a fog layer with multiple scattering), lights the points it
   // covers instead of the sky: the diffuse irradiance there is the fog field's, each
   // hidden direction seen through the fog (media/fog_surface_light.h); it is referred
-  // to, not copied.
+  // to, not copied. `shadowed_fog_sunlight`, when given with it, takes out of a shaded
+  // point's diffuse irradiance the sunlight the fog in the shadows around it does not
+  // scatter (media/fog_shadowed_sunlight.h): for the integrals of the points seen, not
+  // for the obstacles' own, so that an obstacle's light does not depend on which
+  // integral asked for it first.
   SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
            std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections),
-           const FogSurfaceLight* fog = nullptr);
+           const FogSurfaceLight* fog = nullptr, const FogShadowedSunlight* shadowed_fog_sunlight = nullptr);
 
   // Irradiance (W m⁻² nm⁻¹) on a surface at `point` with unit `normal` (facing the side
   // being lit), from the sky, the far ground, and the obstacles that hide them; inside a
@@ -110,6 +115,7 @@ class SkyLight {
   std::vector<SkyElement> elements_;
   std::vector<Radiance> element_radiance_;
   const FogSurfaceLight* fog_;
+  const FogShadowedSunlight* shadowed_fog_sunlight_;
   std::unique_ptr<FogSurfaceLight::Directions> fog_elements_;  // with `fog_`: its light from each element
   // The elements in an order that keeps neighbouring directions together (bands of
   // height, by azimuth within each), so that the rays of one point go to the tracer in
