@@ -31,16 +31,24 @@ FogShadowedSunlight::FogShadowedSunlight(const FogLayer& layer, const FogDiffuse
       to_sun_(normalize(to_sun)),
       sun_above_fog_(sun_above_fog),
       directions_(std::move(directions)),
-      solid_angle_(directions_.empty() ? 0.0 : 4.0 * kPi / static_cast<double>(directions_.size())) {}
+      solid_angle_(directions_.empty() ? 0.0 : 4.0 * kPi / static_cast<double>(directions_.size())),
+      sun_lights_fog_(to_sun_.z > 0 && !sun_above_fog_.is_black()) {
+  const auto& sigma = layer_.unit_density_extinction_bins();
+  sigma_max_ = *std::max_element(sigma.begin(), sigma.end());
+  const double eta = std::abs(layer_.inverse_scale_height_per_m());
+  const double thickness = layer_.top_m() - layer_.bottom_m();
+  vertical_scale_ = eta > 0 ? std::min(thickness, 1.0 / eta) : thickness;
+  densest_ = std::max(layer_.density(layer_.bottom_m()), layer_.density(layer_.top_m()));
+}
 
 bool FogShadowedSunlight::shaded(const Vec3& point, const Vec3& normal) const {
-  if (to_sun_.z <= 0) return false;  // no beam anywhere: nothing of it to miss
+  if (!sun_lights_fog_) return false;  // no beam anywhere: nothing of it to miss
   return dot(normal, to_sun_) <= 0 || tracer_.occluded(Ray{offset_from_surface(point, normal), to_sun_});
 }
 
 Spectrum FogShadowedSunlight::missing_radiance(const Vec3& point, const Vec3& direction, double distance) const {
   Spectrum out(0.0f);
-  if (to_sun_.z <= 0 || sun_above_fog_.is_black()) return out;
+  if (!sun_lights_fog_) return out;
   const RaySpan inside = layer_.clip(point.z, direction.z, 0.0, std::min(distance, kFarM));
   if (inside.empty()) return out;
   thread_local std::vector<Interval> parts;
@@ -53,18 +61,13 @@ Spectrum FogShadowedSunlight::missing_radiance(const Vec3& point, const Vec3& di
   const double scale = field_.sun_depth_scale(), albedo = layer_.single_scattering_albedo();
   if (!(phase > 0) || !(albedo > 0)) return out;
   const auto& sigma = layer_.unit_density_extinction_bins();
-  const double sigma_max = *std::max_element(sigma.begin(), sigma.end());
   const int bins = layer_.is_grey() ? 1 : kSpectralBins;  // grey: one bin stands for all
-  const double eta = std::abs(layer_.inverse_scale_height_per_m());
-  const double thickness = layer_.top_m() - layer_.bottom_m();
-  const double vertical_scale = eta > 0 ? std::min(thickness, 1.0 / eta) : thickness;
-  const double densest = std::max(layer_.density(layer_.bottom_m()), layer_.density(layer_.top_m()));
 
   std::array<double, kSpectralBins> sum{};
   for (const Interval& part : parts) {
     const double rise = std::abs(direction.z) * (part.end - part.begin);
-    const double steps_needed = std::max(rise / (kAltitudePitch * vertical_scale),
-                                         scale * sigma_max * densest * rise / (kSunDepthPitch * to_sun_.z));
+    const double steps_needed = std::max(rise / (kAltitudePitch * vertical_scale_),
+                                         scale * sigma_max_ * densest_ * rise / (kSunDepthPitch * to_sun_.z));
     const int steps = !(steps_needed < kMaxSteps) ? kMaxSteps : std::max(1, static_cast<int>(std::ceil(steps_needed)));
     const double ds = (part.end - part.begin) / steps;
     double column_before = layer_.column(point.z, direction.z, 0.0, part.begin);
@@ -89,7 +92,7 @@ Spectrum FogShadowedSunlight::missing_radiance(const Vec3& point, const Vec3& di
 
 Spectrum FogShadowedSunlight::missing_irradiance(const Vec3& point, const Vec3& normal) const {
   Spectrum out(0.0f);
-  if (to_sun_.z <= 0 || sun_above_fog_.is_black()) return out;
+  if (!sun_lights_fog_) return out;
   const Vec3 origin = offset_from_surface(point, normal);
   thread_local std::vector<Ray> rays;
   thread_local std::vector<std::optional<Hit>> hits;

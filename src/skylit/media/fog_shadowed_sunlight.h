@@ -69,7 +69,11 @@ class FogShadowedSunlight {
   Vec3 to_sun_;
   Spectrum sun_above_fog_;
   std::vector<Vec3> directions_;
-  double solid_angle_;  // of each direction
+  double solid_angle_;   // of each direction
+  bool sun_lights_fog_;  // the sun above the horizon, its beam not spent above the layer
+  // The layer's, for the steps of missing_radiance: its most opaque bin's σ per unit
+  // density, the density's vertical scale (m), its largest density.
+  double sigma_max_ = 0, vertical_scale_ = 0, densest_ = 0;
 };
 
 }  // namespace skylit
