@@ -42,12 +42,11 @@ void SurfaceCache::Grid::cell(double x, double y, int& gx, int& gy, double& tx, 
       y, grid_height_, [this](int g) { return pixel_y(g); }, gy, ty);
 }
 
-std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point,
-                                                              bool* refused) const {
+SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double y, const SurfacePoint& point) const {
   int gx, gy;
   double tx, ty;
   cell(x, y, gx, gy, tx, ty);
-  std::array<const Stored*, 4> corners{};
+  Corners out;
   std::array<double, 4> corner_lx{};
   size_t count = 0;
   bool all_within_reach = true, all_within_obstacle_reach = true;
@@ -57,7 +56,10 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
     for (int dx = 0; dx <= 1; ++dx) {
       const Stored* e = stored(std::min(gx + dx, grid_width_ - 1), std::min(gy + dy, grid_height_ - 1));
       if (!e || !same_surface(e->point, point)) continue;
-      corners[static_cast<size_t>(2 * dy + dx)] = e;
+      out.stored[static_cast<size_t>(2 * dy + dx)] = e;
+      // Bilinear weights, kept off zero so that a lone compatible corner still counts.
+      out.weight[static_cast<size_t>(2 * dy + dx)] =
+          std::max(dx ? tx : 1.0 - tx, 1e-3) * std::max(dy ? ty : 1.0 - ty, 1e-3);
       corner_lx[count++] = e->diffuse_lx;
       other_lx = std::min(other_lx, e->value.other_lx);
       all_within_reach = all_within_reach && within_reach(e->point, point);
@@ -74,38 +76,41 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y
   const std::span<const double> lx(corner_lx.data(), count);
   const bool near_obstacles = spacing_ > 1 && depth_span > kDepthSpan && !all_within_obstacle_reach &&
                               !corners_agree(lx, kCloseSpread, other_lx);
-  const bool disagree =
+  out.refused =
       count > 0 && (near_obstacles || !(count == 4 || all_within_reach) || !corners_agree(lx, kCornerSpread, other_lx));
-  if (refused) *refused = disagree;
-  if (disagree) return std::nullopt;
+  out.usable = count > 0 && !out.refused;
+  return out;
+}
+
+std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point,
+                                                              bool* refused) const {
+  const Corners corners = usable_corners(x, y, point);
+  if (refused) *refused = corners.refused;
+  if (!corners.usable) return std::nullopt;
   CachedSkyLight sum;
   double total = 0;
-  for (int dy = 0; dy <= 1; ++dy) {
-    for (int dx = 0; dx <= 1; ++dx) {
-      const Stored* e = corners[static_cast<size_t>(2 * dy + dx)];
-      if (!e) continue;
-      // Bilinear weights, kept off zero so that a lone compatible corner still counts.
-      const double w = std::max(dx ? tx : 1.0 - tx, 1e-3) * std::max(dy ? ty : 1.0 - ty, 1e-3);
-      sum.diffuse_irradiance += e->value.diffuse_irradiance * static_cast<float>(w);
-      sum.specular_radiance += e->value.specular_radiance * static_cast<float>(w);
-      sum.rough_reflected_sun += e->value.rough_reflected_sun * static_cast<float>(w);
-      if (!e->value.fog_hidden.gain.is_black()) {  // only in a multiply scattering fog
-        sum.fog_hidden.gain += e->value.fog_hidden.gain * static_cast<float>(w);
-        sum.fog_hidden.field += e->value.fog_hidden.field * static_cast<float>(w);
-        sum.fog_hidden.field_in_shadow += e->value.fog_hidden.field_in_shadow * static_cast<float>(w);
-      }
-      total += w;
+  for (size_t i = 0; i < 4; ++i) {
+    const Stored* e = corners.stored[i];
+    if (!e) continue;
+    const double w = corners.weight[i];
+    sum.diffuse_irradiance += e->value.diffuse_irradiance * static_cast<float>(w);
+    sum.specular_radiance += e->value.specular_radiance * static_cast<float>(w);
+    sum.rough_reflected_sun += e->value.rough_reflected_sun * static_cast<float>(w);
+    if (e->fog_hidden) {  // only in a multiply scattering fog
+      sum.fog_hidden.gain += e->value.fog_hidden.gain * static_cast<float>(w);
+      sum.fog_hidden.field += e->value.fog_hidden.field * static_cast<float>(w);
+      sum.fog_hidden.field_in_shadow += e->value.fog_hidden.field_in_shadow * static_cast<float>(w);
     }
+    total += w;
   }
-  if (total <= 0) return std::nullopt;
   const float scale = static_cast<float>(1.0 / total);
   CachedSkyLight out{sum.diffuse_irradiance * scale, sum.specular_radiance * scale, sum.rough_reflected_sun * scale};
   out.fog_hidden = {sum.fog_hidden.gain * scale, sum.fog_hidden.field * scale, sum.fog_hidden.field_in_shadow * scale};
   return out;
 }
 
-std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, const SurfacePoint& point,
-                                                          int cells) const {
+const SurfaceCache::Grid::Stored* SurfaceCache::Grid::nearest(double x, double y, const SurfacePoint& point,
+                                                              int cells) const {
   int gx, gy;
   double tx, ty;
   cell(x, y, gx, gy, tx, ty);
@@ -122,8 +127,7 @@ std::optional<CachedSkyLight> SurfaceCache::Grid::nearest(double x, double y, co
       }
     }
   }
-  if (!best) return std::nullopt;
-  return best->value;
+  return best;
 }
 
 void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute) {
@@ -135,12 +139,13 @@ void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& 
       slot = kNone;
       if (const SurfacePoint* p = hits.surface(pixel_x(gx), pixel_y(gy))) {
         slot = static_cast<int32_t>(stored_.size());
-        stored_.push_back({*p, {}, 0, pixel_x(gx), pixel_y(gy)});
+        stored_.push_back({*p, {}, 0, false, pixel_x(gx), pixel_y(gy)});
       }
     }
   tbb::parallel_for(size_t{0}, stored_.size(), [&](size_t i) {
     stored_[i].value = compute(stored_[i].point, stored_[i].x, stored_[i].y);
     stored_[i].diffuse_lx = illuminance(stored_[i].value.diffuse_irradiance);
+    stored_[i].fog_hidden = !stored_[i].value.fog_hidden.gain.is_black();
   });
 }
 
@@ -170,7 +175,7 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
   coarse_.compute_wanted(hits, compute);
   // The fine grid around every pixel whose surface the coarse grid does not cover.
   const auto not_by_coarse =
-      uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) { return coarse_.interpolate(x, y, p); });
+      uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) { return coarse_.covers(x, y, p); });
   for (size_t y = 0; y < not_by_coarse.size(); ++y)
     for (const int x : not_by_coarse[y]) {
       int gx, gy;
@@ -182,8 +187,8 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
     }
   fine_.compute_wanted(hits, compute);
   // The centres of the pixels that neither grid covers.
-  const auto not_by_grids = uncovered_pixels(
-      hits, [&](double x, double y, const SurfacePoint& p) { return from_grids(x, y, p).has_value(); });
+  const auto not_by_grids =
+      uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) { return covered_by_grids(x, y, p); });
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y]) pixel_.want(x, static_cast<int>(y));
   pixel_.compute_wanted(hits, compute_one_pixel ? compute_one_pixel : compute);
@@ -196,13 +201,22 @@ std::optional<CachedSkyLight> SurfaceCache::from_grids(double x, double y, const
   // A sliver of a surface takes a neighbour's value; a point whose corners disagree
   // lies where the sky light changes fast, and gets its pixel's own.
   if (refused) return std::nullopt;
-  return fine_.nearest(x, y, point, 2);
+  if (const Grid::Stored* near = fine_.nearest(x, y, point, 2)) return near->value;
+  return std::nullopt;
+}
+
+bool SurfaceCache::covered_by_grids(double x, double y, const SurfacePoint& point) const {
+  if (coarse_.covers(x, y, point)) return true;
+  const Grid::Corners fine = fine_.usable_corners(x, y, point);
+  if (fine.usable) return true;
+  return !fine.refused && fine_.nearest(x, y, point, 2) != nullptr;
 }
 
 std::optional<CachedSkyLight> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {
   if (auto value = from_grids(x, y, point)) return value;
   if (auto value = pixel_.interpolate(x, y, point)) return value;
-  return pixel_.nearest(x, y, point, 2);
+  if (const Grid::Stored* near = pixel_.nearest(x, y, point, 2)) return near->value;
+  return std::nullopt;
 }
 
 }  // namespace skylit

@@ -10,6 +10,7 @@
 // surface point alone.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -77,6 +78,25 @@ class SurfaceCache {
  private:
   class Grid {
    public:
+    // Computed points are stored densely, the grid holding their slots: the per-pixel
+    // level has as many cells as the image but few computed points.
+    struct Stored {
+      SurfacePoint point;
+      CachedSkyLight value;
+      double diffuse_lx = 0;    // the value's diffuse illuminance, for corners_agree
+      bool fog_hidden = false;  // whether value.fog_hidden holds anything (a multiply scattering fog)
+      int x = 0, y = 0;         // the pixel
+    };
+    // A cell's corners on a point's surface and their bilinear weights (null where a
+    // corner is not on it); `usable` if there are such corners and their sky light
+    // agrees (render/cache_corner_agreement.h), `refused` if there are but they
+    // disagree (the point then needs a finer level, not a neighbour's value).
+    struct Corners {
+      std::array<const Stored*, 4> stored{};
+      std::array<double, 4> weight{};
+      bool usable = false, refused = false;
+    };
+
     Grid(int width, int height, int spacing);
     int grid_width() const { return grid_width_; }
     int grid_height() const { return grid_height_; }
@@ -84,30 +104,24 @@ class SurfaceCache {
     int pixel_y(int gy) const { return std::min(gy * spacing_, height_ - 1); }
     // The cell containing image position (x, y) and the position's place in it.
     void cell(double x, double y, int& gx, int& gy, double& tx, double& ty) const;
-    // Bilinear from the cell's corners on the same surface, if their sky light agrees
-    // (render/cache_corner_agreement.h); `refused` says whether there were such corners
-    // but they disagreed (the point then needs a finer level, not a neighbour's value).
+    Corners usable_corners(double x, double y, const SurfacePoint& point) const;
+    // Whether interpolate would give a value, without blending one (the constructor's
+    // test of every pixel).
+    bool covers(double x, double y, const SurfacePoint& point) const { return usable_corners(x, y, point).usable; }
+    // Bilinear from the usable corners; `refused` as Corners has it.
     std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point,
                                               bool* refused = nullptr) const;
-    // The value of the nearest grid point (on screen) within `cells` cells that lies on
-    // the same surface: for slivers of a surface next to an edge, which no corner of
-    // their own cell sees.
-    std::optional<CachedSkyLight> nearest(double x, double y, const SurfacePoint& point, int cells) const;
+    // The nearest grid point (on screen) within `cells` cells that lies on the same
+    // surface: for slivers of a surface next to an edge, which no corner of their own
+    // cell sees; null if none.
+    const Stored* nearest(double x, double y, const SurfacePoint& point, int cells) const;
     void want(int gx, int gy) { slots_[index(gx, gy)] = kWanted; }
     // Computes the wanted points that see a surface, in parallel.
     void compute_wanted(const PrimaryHits& hits, const Compute& compute);
     int computed() const { return static_cast<int>(stored_.size()); }
 
    private:
-    // Computed points are stored densely, the grid holding their slots: the per-pixel
-    // level has as many cells as the image but few computed points.
     static constexpr int32_t kNone = -1, kWanted = -2;
-    struct Stored {
-      SurfacePoint point;
-      CachedSkyLight value;
-      double diffuse_lx = 0;  // the value's diffuse illuminance, for corners_agree
-      int x = 0, y = 0;       // the pixel
-    };
     size_t index(int gx, int gy) const { return static_cast<size_t>(gy) * grid_width_ + gx; }
     const Stored* stored(int gx, int gy) const {
       const int32_t slot = slots_[index(gx, gy)];
@@ -121,6 +135,8 @@ class SurfaceCache {
   // From the coarse grid or else the fine one (interpolate's first levels); what the
   // constructor computes the pixel centres for where it finds none.
   std::optional<CachedSkyLight> from_grids(double x, double y, const SurfacePoint& point) const;
+  // Whether from_grids gives a value, without blending one.
+  bool covered_by_grids(double x, double y, const SurfacePoint& point) const;
 
   Grid coarse_, fine_, pixel_;
 };
