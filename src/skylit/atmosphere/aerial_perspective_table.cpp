@@ -38,10 +38,13 @@ AerialPerspectiveTable::AerialPerspectiveTable(const ScatteringIntegrator& integ
   });
 }
 
-MediumStretch AerialPerspectiveTable::at(const RelativeDirection& direction, double distance_m) const {
+AerialPerspectiveTable::Along AerialPerspectiveTable::along(const RelativeDirection& direction) const {
   double u_azimuth, u_elevation;
   mapping_.to_unit(direction, u_azimuth, u_elevation);
-  const double fx = u_azimuth * (kAzimuthSize - 1), fy = u_elevation * (kElevationSize - 1);
+  return Along(*this, u_azimuth * (kAzimuthSize - 1), u_elevation * (kElevationSize - 1));
+}
+
+MediumStretch AerialPerspectiveTable::Along::at(double distance_m) const {
   // Linear in distance between the two slices around it: in-scatter and optical depth
   // grow in proportion to distance over short paths, so this is exact near the
   // observer (interpolating in the slices' own √d spacing is not).
@@ -49,8 +52,8 @@ MediumStretch AerialPerspectiveTable::at(const RelativeDirection& direction, dou
   const int k = std::min(static_cast<int>(std::sqrt(d / kMaxDistanceM) * (kDistanceSize - 1)), kDistanceSize - 2);
   const double d0 = slice_distance(k), d1 = slice_distance(k + 1);
   const double fz = k + (d - d0) / (d1 - d0);
-  return {Transmittance(transmittance_of(optical_depth_.interpolate(fx, fy, fz))),
-          Radiance(in_scattered_.interpolate(fx, fy, fz))};
+  return {Transmittance(transmittance_of(table_.optical_depth_.interpolate(fx_, fy_, fz))),
+          Radiance(table_.in_scattered_.interpolate(fx_, fy_, fz))};
 }
 
 }  // namespace skylit

@@ -21,7 +21,24 @@ class AerialPerspectiveTable {
                          double observer_radius_m, double ground_radius_m, double sun_elevation_rad);
 
   // In-scattered radiance (W m⁻² sr⁻¹ nm⁻¹) and transmittance over `distance_m` along `direction`.
-  MediumStretch at(const RelativeDirection& direction, double distance_m) const;
+  MediumStretch at(const RelativeDirection& direction, double distance_m) const {
+    return along(direction).at(distance_m);
+  }
+
+  // The table along one direction, its place in the table found once: a view ray in fog
+  // asks for two or three distances (to the fog, to where the fog hides the rest, to
+  // the surface), and finding the direction's place cost as much as a look-up.
+  class Along {
+   public:
+    MediumStretch at(double distance_m) const;
+
+   private:
+    friend class AerialPerspectiveTable;
+    Along(const AerialPerspectiveTable& table, double fx, double fy) : table_(table), fx_(fx), fy_(fy) {}
+    const AerialPerspectiveTable& table_;
+    double fx_, fy_;  // fractional azimuth and elevation indices
+  };
+  Along along(const RelativeDirection& direction) const;
 
  private:
   SkyDirectionMapping mapping_;

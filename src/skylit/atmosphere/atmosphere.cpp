@@ -143,6 +143,10 @@ MediumStretch SkyModel::aerial_perspective(const Vec3& direction, double distanc
   return aerial_->at(relative_direction(direction, to_sun_), distance_m);
 }
 
+AerialPerspectiveTable::Along SkyModel::aerial_perspective_along(const Vec3& direction) const {
+  return aerial_->along(relative_direction(direction, to_sun_));
+}
+
 Irradiance SkyModel::diffuse_horizontal_at_observer() const {
   return Irradiance(SkyIrradianceTable::integrate(*observer_view_, {kPi / 2, 0.0}));
 }

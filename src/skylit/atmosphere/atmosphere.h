@@ -78,6 +78,8 @@ class SkyModel {
   Radiance sun_radiance(const Vec3& direction) const;
   // What the air adds and lets through between the observer and a surface.
   MediumStretch aerial_perspective(const Vec3& direction, double distance_m) const;
+  // The same for several distances along one direction.
+  AerialPerspectiveTable::Along aerial_perspective_along(const Vec3& direction) const;
   // Unobstructed sky and ground irradiance on a plane near the ground with this normal.
   Irradiance sky_irradiance(const Vec3& normal) const { return Irradiance(ground_sky_irradiance_->at(normal)); }
   // The sun's direct normal irradiance at a height above the ground, along its bent path

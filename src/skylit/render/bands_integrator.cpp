@@ -97,8 +97,13 @@ PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {
 ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
   ViewPath path;
   path.to_sky = !std::isfinite(distance);
-  if (!path.to_sky) path.near = sky_.aerial_perspective(ray.direction, distance);
+  // The direction's place in the air's table, found once for the stretches below (none
+  // for a clear sky seen without fog or clouds: nothing of the table is needed).
+  std::optional<AerialPerspectiveTable::Along> air;
+  if (!path.to_sky || scene_.fog() || scene_.clouds()) air.emplace(sky_.aerial_perspective_along(ray.direction));
+  if (!path.to_sky) path.near = air->at(distance);
   if (const FogMedium* fog = scene_.fog()) {
+    const MediumStretch to_distance = path.near;
     const FogMedium::Along along = fog->along(ray, distance);
     path.fog_beyond = along.beyond;
     path.fog_whole = along.near.transmittance * along.beyond;
@@ -108,20 +113,17 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
     if (along.seen_distance > along.entry_distance) {
       // The air cut where the ray enters the fog and where the fog hides the rest; each
       // later stretch is what the longer one from the camera adds beyond the shorter.
-      const MediumStretch to_entry =
-          along.entry_distance > 0 ? sky_.aerial_perspective(ray.direction, along.entry_distance) : MediumStretch{};
-      const MediumStretch to_seen = sky_.aerial_perspective(ray.direction, along.seen_distance);
+      const MediumStretch to_entry = along.entry_distance > 0 ? air->at(along.entry_distance) : MediumStretch{};
+      const MediumStretch to_seen = air->at(along.seen_distance);
       path.near = followed_by(to_entry, mixed(remainder_after(to_entry, to_seen), along.near));
       path.air_near = to_seen.in_scattered;
-      if (!path.to_sky && along.seen_distance < distance)
-        path.air_beyond = remainder_after(to_seen, sky_.aerial_perspective(ray.direction, distance));
+      if (!path.to_sky && along.seen_distance < distance) path.air_beyond = remainder_after(to_seen, to_distance);
     }
   }
   if (const CloudsInSky* clouds = scene_.clouds()) {
     const CloudsInSky::Along along = clouds->along(ray.origin, ray.direction, distance);
     path.clouds = along.stretch;
-    if (path.to_sky && std::isfinite(along.entry_distance))
-      path.air_to_clouds = sky_.aerial_perspective(ray.direction, along.entry_distance);
+    if (path.to_sky && std::isfinite(along.entry_distance)) path.air_to_clouds = air->at(along.entry_distance);
   }
   return path;
 }
