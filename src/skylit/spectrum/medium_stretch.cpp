@@ -21,12 +21,18 @@ double mean_transmittance(double depth) { return depth < 1e-8 ? 1.0 - 0.5 * dept
 }  // namespace
 
 MediumStretch remainder_after(const MediumStretch& near, const MediumStretch& whole) {
-  Spectrum transmittance(1.0f), in_scattered(0.0f);
+  // Where nothing gets through the near stretch, nothing of the rest is known: 1 and 0.
+  // Written without a branch so that the bins go through the divisions together (the
+  // loop with one was 3 % of a fog frame).
+  Spectrum transmittance, in_scattered;
   for (int k = 0; k < kSpectralBins; ++k) {
     const float through = near.transmittance[k];
-    if (through <= 0.0f) continue;
-    transmittance[k] = std::clamp(whole.transmittance[k] / through, 0.0f, 1.0f);
-    in_scattered[k] = std::max(0.0f, (whole.in_scattered[k] - near.in_scattered[k]) / through);
+    const bool passes = !(through <= 0.0f);
+    const float divisor = passes ? through : 1.0f;
+    const float rest = std::clamp(whole.transmittance[k] / divisor, 0.0f, 1.0f);
+    const float added = std::max(0.0f, (whole.in_scattered[k] - near.in_scattered[k]) / divisor);
+    transmittance[k] = passes ? rest : 1.0f;
+    in_scattered[k] = passes ? added : 0.0f;
   }
   return {Transmittance(transmittance), Radiance(in_scattered)};
 }
