@@ -114,7 +114,9 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
       // The air cut where the ray enters the fog and where the fog hides the rest; each
       // later stretch is what the longer one from the camera adds beyond the shorter.
       const MediumStretch to_entry = along.entry_distance > 0 ? air->at(along.entry_distance) : MediumStretch{};
-      const MediumStretch to_seen = air->at(along.seen_distance);
+      // (Seen to the surface, as in thin fog: the stretch to it, already looked up.)
+      const MediumStretch to_seen =
+          !path.to_sky && along.seen_distance == distance ? to_distance : air->at(along.seen_distance);
       path.near = followed_by(to_entry, mixed(remainder_after(to_entry, to_seen), along.near));
       path.air_near = to_seen.in_scattered;
       if (!path.to_sky && along.seen_distance < distance) path.air_beyond = remainder_after(to_seen, to_distance);
