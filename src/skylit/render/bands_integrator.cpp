@@ -97,11 +97,15 @@ PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {
 ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
   ViewPath path;
   path.to_sky = !std::isfinite(distance);
-  // The direction's place in the air's table, found once for the stretches below (none
-  // for a clear sky seen without fog or clouds: nothing of the table is needed).
+  // The air's stretch from the camera to a distance along the ray: the direction's place
+  // in the air's table found at the first (a sky ray that meets neither fog nor a cloud
+  // asks for none).
   std::optional<AerialPerspectiveTable::Along> air;
-  if (!path.to_sky || scene_.fog() || scene_.clouds()) air.emplace(sky_.aerial_perspective_along(ray.direction));
-  if (!path.to_sky) path.near = air->at(distance);
+  auto air_to = [&](double d) {
+    if (!air) air.emplace(sky_.aerial_perspective_along(ray.direction));
+    return air->at(d);
+  };
+  if (!path.to_sky) path.near = air_to(distance);
   if (const FogMedium* fog = scene_.fog()) {
     const MediumStretch to_distance = path.near;
     const FogMedium::Along along = fog->along(ray, distance);
@@ -113,10 +117,10 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
     if (along.seen_distance > along.entry_distance) {
       // The air cut where the ray enters the fog and where the fog hides the rest; each
       // later stretch is what the longer one from the camera adds beyond the shorter.
-      const MediumStretch to_entry = along.entry_distance > 0 ? air->at(along.entry_distance) : MediumStretch{};
+      const MediumStretch to_entry = along.entry_distance > 0 ? air_to(along.entry_distance) : MediumStretch{};
       // (Seen to the surface, as in thin fog: the stretch to it, already looked up.)
       const MediumStretch to_seen =
-          !path.to_sky && along.seen_distance == distance ? to_distance : air->at(along.seen_distance);
+          !path.to_sky && along.seen_distance == distance ? to_distance : air_to(along.seen_distance);
       path.near = followed_by(to_entry, mixed(remainder_after(to_entry, to_seen), along.near));
       path.air_near = to_seen.in_scattered;
       if (!path.to_sky && along.seen_distance < distance) path.air_beyond = remainder_after(to_seen, to_distance);
@@ -125,7 +129,7 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
   if (const CloudsInSky* clouds = scene_.clouds()) {
     const CloudsInSky::Along along = clouds->along(ray.origin, ray.direction, distance);
     path.clouds = along.stretch;
-    if (path.to_sky && std::isfinite(along.entry_distance)) path.air_to_clouds = air->at(along.entry_distance);
+    if (path.to_sky && std::isfinite(along.entry_distance)) path.air_to_clouds = air_to(along.entry_distance);
   }
   return path;
 }
