@@ -160,5 +160,43 @@ TEST(ObstacleSkyLight, SmallTrianglesAndThePastTheLastLevelHaveNoPatch) {
   EXPECT_EQ(calls, 1);
 }
 
+// A patch's point and normal come from its key and its triangle alone: the hit's normal,
+// which Embree finds in single precision and whose last bits differ between the paths
+// that meet a triangle (a packet's lane, a single ray), must not move them, or the first
+// ray to meet a patch would decide its value (images differed with the threads' timing).
+TEST(ObstacleSkyLight, APatchDoesNotDependOnTheLastBitsOfTheHitsNormal) {
+  Scene scene;
+  scene.materials.push_back({"grey", DiffuseMaterial{Spectrum(0.3f)}});
+  TriangleMesh roof;  // a sloped triangle: every component of its normal is non-zero
+  roof.vertices = {{0, 0, 0}, {40, 3, 12}, {5, 40, 7}};
+  roof.triangles = {{0, 1, 2}};
+  scene.objects.push_back({"roof", roof, 0});
+  std::vector<Vec3> received;
+  auto record = [&received](int, const Vec3& point, const Vec3& normal) {
+    received.push_back(point);
+    received.push_back(normal);
+    return Irradiance(Spectrum(1.0f));
+  };
+  const Vec3 n = normalize(cross(roof.vertices[1] - roof.vertices[0], roof.vertices[2] - roof.vertices[0]));
+  const Vec3 hit_point = (roof.vertices[0] + roof.vertices[1] + roof.vertices[2]) / 3.0;
+  const Ray ray{hit_point + 5.0 * n, -n};
+  for (const double nudge : {0.0, 3e-7, -2e-7}) {  // about single precision's last bits
+    const ObstacleSkyLight patches(scene, {1024, 256}, record);
+    const Vec3 hit_normal = normalize(n + Vec3{nudge, -nudge, 0.5 * nudge});
+    ASSERT_TRUE(patches.at(0, ray, Hit{5.0, hit_normal, 0, 0, 0.3f, 0.3f}).has_value());
+  }
+  ASSERT_EQ(received.size(), 6u);
+  for (size_t i = 2; i < received.size(); i += 2) {
+    EXPECT_EQ(received[i].x, received[0].x);
+    EXPECT_EQ(received[i].y, received[0].y);
+    EXPECT_EQ(received[i].z, received[0].z);
+    EXPECT_EQ(received[i + 1].x, received[1].x);
+    EXPECT_EQ(received[i + 1].y, received[1].y);
+    EXPECT_EQ(received[i + 1].z, received[1].z);
+  }
+  // On the side met: the normal faces the ray's origin.
+  EXPECT_GT(dot(received[1], -ray.direction), 0.99);
+}
+
 }  // namespace
 }  // namespace skylit

@@ -65,15 +65,22 @@ std::optional<Irradiance> ObstacleSkyLight::at(int level, const Ray& ray, const 
   const TriangleMesh& mesh = scene_.objects[hit.mesh_id].mesh;
   const auto& corners = mesh.triangles[hit.triangle];
   const Vec3 &v0 = mesh.vertices[corners[0]], &v1 = mesh.vertices[corners[1]], &v2 = mesh.vertices[corners[2]];
-  if (0.5 * length(cross(v1 - v0, v2 - v0)) < kMinAreaInPatches * side * side) return std::nullopt;
+  const Vec3 area_vector = cross(v1 - v0, v2 - v0);
+  if (0.5 * length(area_vector) < kMinAreaInPatches * side * side) return std::nullopt;
+  // The triangle's frame from its corners, not from the hit's normal: Embree finds that
+  // normal in single precision, and its last bits differ between the paths that meet a
+  // triangle (a packet's lane, a single ray), so a patch's point and normal, and so its
+  // value, depended on which ray met it first (images differed in the last bits with the
+  // threads' timing). The same direction as the hit's (Embree's Ng is this cross product).
+  const Vec3 face = area_vector / length(area_vector);
   const Vec3 e1 = normalize(v1 - v0);
-  const Vec3 e2 = cross(hit.geometric_normal, e1);
+  const Vec3 e2 = cross(face, e1);
   const Vec3 offset = ray.origin + hit.t * ray.direction - v0;
   // A hit lies on its triangle, so its coordinates fit; the clamp only guards the cast.
   auto cell = [side](double coordinate) {
     return static_cast<int32_t>(std::clamp(std::floor(coordinate / side), -2e9, 2e9));
   };
-  const bool back = dot(hit.geometric_normal, ray.direction) > 0;
+  const bool back = dot(face, ray.direction) > 0;
   const PatchKey key{
       hit.mesh_id, hit.triangle, cell(dot(offset, e1)), cell(dot(offset, e2)), static_cast<int8_t>(exponent), back};
   auto& patches = patches_[static_cast<size_t>(level)];
@@ -85,7 +92,7 @@ std::optional<Irradiance> ObstacleSkyLight::at(int level, const Ray& ray, const 
   const Vec3 inward = (v0 + v1 + v2) / 3.0 - point;
   if (const double distance = length(inward); distance > 0)
     point = point + std::min(1e-3, distance) / distance * inward;
-  const Vec3 normal = back ? -hit.geometric_normal : hit.geometric_normal;
+  const Vec3 normal = back ? -face : face;
   // Two threads may compute the same patch at once: both get the same value (it depends
   // on the key alone), and the first to insert it keeps it.
   const Irradiance value = integral_(level, point, normal);
