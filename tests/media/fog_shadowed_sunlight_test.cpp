@@ -15,7 +15,6 @@
 #include "skylit/geometry/primitives.h"
 #include "skylit/media/fog_shadowed_sunlight.h"
 #include "skylit/media/fog_sky_light.h"
-#include "skylit/sky/band_sources.h"
 
 namespace skylit {
 namespace {
@@ -44,7 +43,7 @@ struct ShadowedFog {
         tracer(traced(mesh)),
         shadows(std::vector<const TriangleMesh*>{&mesh}, sky.to_sun()),
         sun_above_fog(sky.direct_sun(kTop).spectrum()),
-        shadowed(layer, *sky_light.diffuse_field(), shadows, tracer, sky.to_sun(), sun_above_fog, directions()) {}
+        shadowed(layer, *sky_light.diffuse_field(), shadows, tracer, sky.to_sun(), sun_above_fog) {}
 
   static FogSettings fog(double optical_depth, double wavelength_exponent) {
     FogSettings f = testing::uniform_fog_slab(optical_depth, kTop);
@@ -57,12 +56,6 @@ struct ShadowedFog {
     t.add_mesh(mesh);
     t.commit();
     return t;
-  }
-  // The renderer's quadrature (render/fog_medium.cpp).
-  static std::vector<Vec3> directions() {
-    std::vector<Vec3> out;
-    for (const SkyElement& e : fibonacci_sphere(FogShadowedSunlight::kDefaultDirections)) out.push_back(e.direction);
-    return out;
   }
 };
 

@@ -23,7 +23,7 @@ constexpr int kMaxSteps = 32;
 
 FogShadowedSunlight::FogShadowedSunlight(const FogLayer& layer, const FogDiffuseField& field,
                                          const SunShadowVolumes& shadows, const RayTracer& tracer, const Vec3& to_sun,
-                                         const Spectrum& sun_above_fog, std::vector<Vec3> directions)
+                                         const Spectrum& sun_above_fog, std::vector<SkyElement> directions)
     : layer_(layer),
       field_(field),
       shadows_(shadows),
@@ -31,7 +31,6 @@ FogShadowedSunlight::FogShadowedSunlight(const FogLayer& layer, const FogDiffuse
       to_sun_(normalize(to_sun)),
       sun_above_fog_(sun_above_fog),
       directions_(std::move(directions)),
-      solid_angle_(directions_.empty() ? 0.0 : 4.0 * kPi / static_cast<double>(directions_.size())),
       sun_lights_fog_(to_sun_.z > 0 && !sun_above_fog_.is_black()) {
   const auto& sigma = layer_.unit_density_extinction_bins();
   sigma_max_ = *std::max_element(sigma.begin(), sigma.end());
@@ -96,19 +95,19 @@ Spectrum FogShadowedSunlight::missing_irradiance(const Vec3& point, const Vec3& 
   const Vec3 origin = offset_from_surface(point, normal);
   thread_local std::vector<Ray> rays;
   thread_local std::vector<std::optional<Hit>> hits;
-  thread_local std::vector<double> cosines;
+  thread_local std::vector<double> weights;  // cos·dω
   rays.clear();
-  cosines.clear();
-  for (const Vec3& d : directions_) {
-    const double c = dot(normal, d);
+  weights.clear();
+  for (const SkyElement& e : directions_) {
+    const double c = dot(normal, e.direction);
     if (c <= 0) continue;
-    rays.push_back(Ray{origin, d});
-    cosines.push_back(c);
+    rays.push_back(Ray{origin, e.direction});
+    weights.push_back(c * e.solid_angle);
   }
   tracer_.intersect(rays, hits);
   for (size_t i = 0; i < rays.size(); ++i) {
     const double distance = hits[i] ? hits[i]->t : std::numeric_limits<double>::infinity();
-    out += missing_radiance(origin, rays[i].direction, distance) * static_cast<float>(cosines[i] * solid_angle_);
+    out += missing_radiance(origin, rays[i].direction, distance) * static_cast<float>(weights[i]);
   }
   return out;
 }

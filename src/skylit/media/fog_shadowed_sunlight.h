@@ -30,6 +30,7 @@
 #include "skylit/geometry/sun_shadow_volumes.h"
 #include "skylit/media/fog_diffuse_field.h"
 #include "skylit/media/fog_layer.h"
+#include "skylit/sky/band_sources.h"
 #include "skylit/spectrum/spectrum.h"
 
 namespace skylit {
@@ -41,12 +42,13 @@ class FogShadowedSunlight {
   // a correction of a tenth of the light or so (docs/fog.md measures the quadrature).
   static constexpr int kDefaultDirections = 128;
 
-  // `to_sun` points at the sun (above the horizon), `sun_above_fog` is its normal
-  // irradiance at the layer's top; `directions` are unit vectors of equal solid angle
-  // over the sphere (the hemisphere quadrature's). The references must outlive this.
+  // `to_sun` points at the sun, `sun_above_fog` is its normal irradiance at the layer's
+  // top (with the sun below the horizon or its beam spent, nothing is missing anywhere);
+  // `directions` cover the sphere, each with its solid angle, as the sky light's
+  // (sky/band_sources.h). The references must outlive this.
   FogShadowedSunlight(const FogLayer& layer, const FogDiffuseField& field, const SunShadowVolumes& shadows,
                       const RayTracer& tracer, const Vec3& to_sun, const Spectrum& sun_above_fog,
-                      std::vector<Vec3> directions);
+                      std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections));
 
   // Whether the sun's beam misses a surface point (on the side `normal` faces): the
   // points whose fog light this lowers. (A sunlit point's own beam outshines what the
@@ -68,8 +70,7 @@ class FogShadowedSunlight {
   const RayTracer& tracer_;
   Vec3 to_sun_;
   Spectrum sun_above_fog_;
-  std::vector<Vec3> directions_;
-  double solid_angle_;   // of each direction
+  std::vector<SkyElement> directions_;
   bool sun_lights_fog_;  // the sun above the horizon, its beam not spent above the layer
   // The layer's, for the steps of missing_radiance: its most opaque bin's σ per unit
   // density, the density's vertical scale (m), its largest density.

@@ -9,7 +9,6 @@
 
 #include "skylit/geometry/intervals.h"
 #include "skylit/media/fog_sun_integral.h"
-#include "skylit/sky/band_sources.h"
 
 namespace skylit {
 
@@ -35,13 +34,8 @@ FogMedium::FogMedium(const FogSettings& settings, const std::vector<const Triang
       row_length_(kElevationRows),
       row_depth_(static_cast<size_t>(kElevationRows * (kDistanceSlices + 1))) {
   if (const FogDiffuseField* field = sky_light_.diffuse_field()) {
-    if (to_sun_.z > 0 && !sun_above_fog_.is_black()) {
-      std::vector<Vec3> directions;
-      for (const SkyElement& e : fibonacci_sphere(FogShadowedSunlight::kDefaultDirections))
-        directions.push_back(e.direction);
-      shadowed_sunlight_ = std::make_unique<FogShadowedSunlight>(layer_, *field, shadows_, tracer, to_sun_,
-                                                                 sun_above_fog_, std::move(directions));
-    }
+    shadowed_sunlight_ =
+        std::make_unique<FogShadowedSunlight>(layer_, *field, shadows_, tracer, to_sun_, sun_above_fog_);
     surface_light_ = std::make_unique<FogSurfaceLight>(sky_light_);
     behind_ = std::make_unique<FogBehindSurfaces>(layer_, *field, -to_sun_);
   }

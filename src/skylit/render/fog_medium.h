@@ -83,8 +83,8 @@ class FogMedium {
   // direction (what lights them in place of the sky times sky_light_share); null in the
   // paper's mode.
   const FogSurfaceLight* surface_light() const { return surface_light_.get(); }
-  // With multiple scattering and the sun up, what a shaded surface misses of the fog's
-  // sunlight by direction (media/fog_shadowed_sunlight.h); else null.
+  // With multiple scattering, what a shaded surface misses of the fog's sunlight by
+  // direction (media/fog_shadowed_sunlight.h; nothing with the sun down); else null.
   const FogShadowedSunlight* shadowed_sunlight() const { return shadowed_sunlight_.get(); }
 
   const FogLayer& layer() const { return layer_; }
@@ -97,7 +97,7 @@ class FogMedium {
   Spectrum sun_above_fog_;  // the sun's direct normal irradiance at the layer's top
   SunShadowVolumes shadows_;
   FogSkyLight sky_light_;
-  // With multiple scattering and the sun up; refers to layer_, shadows_, sky_light_'s field.
+  // With multiple scattering; refers to layer_, shadows_, sky_light_'s field.
   std::unique_ptr<FogShadowedSunlight> shadowed_sunlight_;
   std::unique_ptr<FogSurfaceLight> surface_light_;  // refers to sky_light_
   std::unique_ptr<FogBehindSurfaces> behind_;       // refers to layer_ and sky_light_
