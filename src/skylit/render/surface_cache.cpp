@@ -82,11 +82,13 @@ SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double 
   return out;
 }
 
-std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point,
-                                                              bool* refused) const {
+std::optional<CachedSkyLight> SurfaceCache::Grid::interpolate(double x, double y, const SurfacePoint& point) const {
   const Corners corners = usable_corners(x, y, point);
-  if (refused) *refused = corners.refused;
   if (!corners.usable) return std::nullopt;
+  return blend(corners);
+}
+
+CachedSkyLight SurfaceCache::Grid::blend(const Corners& corners) const {
   CachedSkyLight sum;
   double total = 0;
   for (size_t i = 0; i < 4; ++i) {
@@ -187,29 +189,28 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
     }
   fine_.compute_wanted(hits, compute);
   // The centres of the pixels that neither grid covers.
-  const auto not_by_grids =
-      uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) { return covered_by_grids(x, y, p); });
+  const auto not_by_grids = uncovered_pixels(
+      hits, [&](double x, double y, const SurfacePoint& p) { return source_in_grids(x, y, p).found(); });
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y]) pixel_.want(x, static_cast<int>(y));
   pixel_.compute_wanted(hits, compute_one_pixel ? compute_one_pixel : compute);
 }
 
-std::optional<CachedSkyLight> SurfaceCache::from_grids(double x, double y, const SurfacePoint& point) const {
-  if (auto value = coarse_.interpolate(x, y, point)) return value;
-  bool refused = false;
-  if (auto value = fine_.interpolate(x, y, point, &refused)) return value;
+SurfaceCache::GridSource SurfaceCache::source_in_grids(double x, double y, const SurfacePoint& point) const {
+  if (Grid::Corners coarse = coarse_.usable_corners(x, y, point); coarse.usable) return {&coarse_, coarse, nullptr};
+  const Grid::Corners fine = fine_.usable_corners(x, y, point);
+  if (fine.usable) return {&fine_, fine, nullptr};
   // A sliver of a surface takes a neighbour's value; a point whose corners disagree
   // lies where the sky light changes fast, and gets its pixel's own.
-  if (refused) return std::nullopt;
-  if (const Grid::Stored* near = fine_.nearest(x, y, point, 2)) return near->value;
-  return std::nullopt;
+  if (fine.refused) return {};
+  return {nullptr, {}, fine_.nearest(x, y, point, 2)};
 }
 
-bool SurfaceCache::covered_by_grids(double x, double y, const SurfacePoint& point) const {
-  if (coarse_.covers(x, y, point)) return true;
-  const Grid::Corners fine = fine_.usable_corners(x, y, point);
-  if (fine.usable) return true;
-  return !fine.refused && fine_.nearest(x, y, point, 2) != nullptr;
+std::optional<CachedSkyLight> SurfaceCache::from_grids(double x, double y, const SurfacePoint& point) const {
+  const GridSource source = source_in_grids(x, y, point);
+  if (source.grid) return source.grid->blend(source.corners);
+  if (source.nearest) return source.nearest->value;
+  return std::nullopt;
 }
 
 std::optional<CachedSkyLight> SurfaceCache::interpolate(double x, double y, const SurfacePoint& point) const {

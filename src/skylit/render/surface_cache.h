@@ -108,9 +108,10 @@ class SurfaceCache {
     // Whether interpolate would give a value, without blending one (the constructor's
     // test of every pixel).
     bool covers(double x, double y, const SurfacePoint& point) const { return usable_corners(x, y, point).usable; }
-    // Bilinear from the usable corners; `refused` as Corners has it.
-    std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point,
-                                              bool* refused = nullptr) const;
+    // Bilinear from the usable corners, if there are any.
+    std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point) const;
+    // The bilinear blend of usable corners (`corners.usable`).
+    CachedSkyLight blend(const Corners& corners) const;
     // The nearest grid point (on screen) within `cells` cells that lies on the same
     // surface: for slivers of a surface next to an edge, which no corner of their own
     // cell sees; null if none.
@@ -132,11 +133,18 @@ class SurfaceCache {
     std::vector<Stored> stored_;
   };
 
-  // From the coarse grid or else the fine one (interpolate's first levels); what the
-  // constructor computes the pixel centres for where it finds none.
+  // Where the coarse grid or else the fine one has a value for a point (interpolate's
+  // first levels): a grid's usable corners, or the nearest fine point for a sliver of a
+  // surface; neither if none. The constructor asks only whether there is one (and
+  // computes the pixel centres where there is not); from_grids takes the value.
+  struct GridSource {
+    const Grid* grid = nullptr;  // with `corners`
+    Grid::Corners corners;
+    const Grid::Stored* nearest = nullptr;
+    bool found() const { return grid != nullptr || nearest != nullptr; }
+  };
+  GridSource source_in_grids(double x, double y, const SurfacePoint& point) const;
   std::optional<CachedSkyLight> from_grids(double x, double y, const SurfacePoint& point) const;
-  // Whether from_grids gives a value, without blending one.
-  bool covered_by_grids(double x, double y, const SurfacePoint& point) const;
 
   Grid coarse_, fine_, pixel_;
 };
