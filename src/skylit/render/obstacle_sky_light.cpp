@@ -66,13 +66,14 @@ std::optional<Irradiance> ObstacleSkyLight::at(int level, const Ray& ray, const 
   const auto& corners = mesh.triangles[hit.triangle];
   const Vec3 &v0 = mesh.vertices[corners[0]], &v1 = mesh.vertices[corners[1]], &v2 = mesh.vertices[corners[2]];
   const Vec3 area_vector = cross(v1 - v0, v2 - v0);
-  if (0.5 * length(area_vector) < kMinAreaInPatches * side * side) return std::nullopt;
+  const double twice_area = length(area_vector);
+  if (0.5 * twice_area < kMinAreaInPatches * side * side) return std::nullopt;
   // The triangle's frame from its corners, not from the hit's normal: Embree finds that
   // normal in single precision, and its last bits differ between the paths that meet a
   // triangle (a packet's lane, a single ray), so a patch's point and normal, and so its
   // value, depended on which ray met it first (images differed in the last bits with the
   // threads' timing). The same direction as the hit's (Embree's Ng is this cross product).
-  const Vec3 face = area_vector / length(area_vector);
+  const Vec3 face = area_vector / twice_area;
   const Vec3 e1 = normalize(v1 - v0);
   const Vec3 e2 = cross(face, e1);
   const Vec3 offset = ray.origin + hit.t * ray.direction - v0;
