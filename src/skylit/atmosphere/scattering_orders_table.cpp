@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 #include <tbb/parallel_for.h>
 
 #include "skylit/atmosphere/aerosol_types.h"
+#include "skylit/atmosphere/direction_grid_phase_quadrature.h"
 #include "skylit/atmosphere/phase_functions.h"
 #include "skylit/atmosphere/shell_geometry.h"
 #include "skylit/atmosphere/sun_zenith_rows.h"
-#include "skylit/core/vec3.h"
+#include "skylit/core/angles.h"
 #include "skylit/spectrum/spectral_math.h"
 
 namespace skylit {
@@ -34,12 +34,6 @@ double mu_of(int k) { return -1.0 + 2.0 * (k + 0.5) / Table::kMuSize; }
 double azimuth_of(int k) { return kPi * (k + 0.5) / Table::kAzimuthSize; }
 // Each direction stands for its band and its mirror image across the sun's vertical.
 constexpr double kDirectionWeight = (2.0 / Table::kMuSize) * (2.0 * kPi / Table::kAzimuthSize);
-
-Vec3 direction_of(int d) {
-  const double mu = mu_of(d / Table::kAzimuthSize), phi = azimuth_of(d % Table::kAzimuthSize);
-  const double s = std::sqrt(1.0 - mu * mu);
-  return {s * std::cos(phi), s * std::sin(phi), mu};
-}
 
 // The cosine between a direction and the sun, both given in the point's frame.
 double nu_of(double mu, double mu_sun, double azimuth) {
@@ -161,27 +155,6 @@ void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c
     out_r[k] = sum_r[k] <= kLogFloor + 1 ? 0.0f : out_r[k];
     out_a[k] = sum_a[k] <= kLogFloor + 1 ? 0.0f : out_a[k];
   }
-}
-
-// The phase function's quadrature over the grid's directions: row d gives the weights
-// that turn radiance from every direction d' into ∫ P(ω_d·ω') L(ω') dω'. Each row is
-// normalised to sum to one, so that the quadrature conserves energy exactly (the
-// aerosol's forward peak is coarse on this grid).
-std::vector<float> phase_matrix(const std::function<double(double)>& phase) {
-  std::vector<float> m(static_cast<size_t>(kDirections * kDirections));
-  std::vector<double> row(kDirections);
-  for (int d = 0; d < kDirections; ++d) {
-    const Vec3 a = direction_of(d);
-    double sum = 0;
-    for (int e = 0; e < kDirections; ++e) {
-      const Vec3 b = direction_of(e), mirror{b.x, -b.y, b.z};
-      row[static_cast<size_t>(e)] = kDirectionWeight * 0.5 * (phase(dot(a, b)) + phase(dot(a, mirror)));
-      sum += row[static_cast<size_t>(e)];
-    }
-    for (int e = 0; e < kDirections; ++e)
-      m[static_cast<size_t>(d * kDirections + e)] = static_cast<float>(row[static_cast<size_t>(e)] / sum);
-  }
-  return m;
 }
 
 // The medium's coefficients in the table's bins.
@@ -346,8 +319,10 @@ ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, con
     for (int m = 0; m < kMuSize; ++m)
       grid.paths.push_back(ray_path(medium, grid.coefficients, ground_radius_, top_radius_, grid.radius(i), mu_of(m)));
   const double gamma = medium.rayleigh_gamma;
-  const std::vector<float> phase_r = phase_matrix([gamma](double c) { return rayleigh_phase(c, gamma); });
-  const std::vector<float> phase_a = phase_matrix([&grid](double c) { return grid.aerosol_phase(c); });
+  const DirectionGridPhaseQuadrature phase_r(kMuSize, kAzimuthSize,
+                                             [gamma](double c) { return rayleigh_phase(c, gamma); });
+  const DirectionGridPhaseQuadrature phase_a(kMuSize, kAzimuthSize,
+                                             [&grid](double c) { return grid.aerosol_phase(c); });
 
   const size_t size = static_cast<size_t>(kPoints * kDirections);
   std::vector<Bins> radiance(size), order_r(size), order_a(size), ground;
@@ -370,32 +345,11 @@ ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, con
     // S_order = ∫ P L_order dω at every point.
     tbb::parallel_for(0, kPoints, [&](int p) {
       const size_t base = static_cast<size_t>(p * kDirections);
-      // Two output directions at a time: four independent sums per input direction
-      // keep the adds' latency hidden (one direction at a time waited on it).
-      static_assert(kDirections % 2 == 0);
-      for (int d = 0; d < kDirections; d += 2) {
-        Bins sr0{}, sa0{}, sr1{}, sa1{};
-        const float* row_r0 = &phase_r[static_cast<size_t>(d * kDirections)];
-        const float* row_a0 = &phase_a[static_cast<size_t>(d * kDirections)];
-        const float* row_r1 = row_r0 + kDirections;
-        const float* row_a1 = row_a0 + kDirections;
-        for (int e = 0; e < kDirections; ++e) {
-          const Bins& l = radiance[base + static_cast<size_t>(e)];
-          for (int k = 0; k < kBins; ++k) {
-            sr0[k] += row_r0[e] * l[k];
-            sa0[k] += row_a0[e] * l[k];
-            sr1[k] += row_r1[e] * l[k];
-            sa1[k] += row_a1[e] * l[k];
-          }
-        }
-        const size_t i = base + static_cast<size_t>(d);
-        order_r[i] = sr0;
-        order_a[i] = sa0;
-        order_r[i + 1] = sr1;
-        order_a[i + 1] = sa1;
-        logs[i] = {log_of(sr0), log_of(sa0)};
-        logs[i + 1] = {log_of(sr1), log_of(sa1)};
-      }
+      thread_local std::vector<Bins> modes(kDirections);
+      phase_r.modes_of(&radiance[base], modes.data());
+      phase_r.integrate(modes.data(), &order_r[base]);
+      phase_a.integrate(modes.data(), &order_a[base]);
+      for (size_t i = base; i < base + kDirections; ++i) logs[i] = {log_of(order_r[i]), log_of(order_a[i])};
     });
     before_sum_r = last_sum_r;
     before_sum_a = last_sum_a;
