@@ -118,4 +118,19 @@ Spectrum RefractedSunTable::sunlight(double r, double mu_sun) const {
   return transmittance_of(table_.interpolate(x * (kMuSize - 1), fy));
 }
 
+void RefractedSunTable::sunlight_in_bins(double r, double mu_sun, std::span<const int> bins,
+                                         std::span<float> out) const {
+  r = std::clamp(r, ground_radius_, top_radius_);
+  const double edge = shadow_edge_mu(r);
+  if (mu_sun <= edge) {
+    std::fill(out.begin(), out.end(), 0.0f);
+    return;
+  }
+  const double x = std::sqrt(std::min(1.0, (mu_sun - edge) / (1.0 - edge)));
+  const double fy =
+      std::sqrt(std::max(0.0, r * r - ground_radius_ * ground_radius_)) / horizon_distance_ * (kRSize - 1);
+  table_.interpolate_bins(x * (kMuSize - 1), fy, bins, out);
+  for (float& v : out) v = exp_nonpositive(-v);
+}
+
 }  // namespace skylit

@@ -8,6 +8,7 @@
 // of the refracted shadow, lower than the straight one's, the table gives 0.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "skylit/atmosphere/optical_properties.h"
@@ -26,6 +27,9 @@ class RefractedSunTable {
 
   // Per unit extraterrestrial irradiance normal to the sun: transmittance times spreading.
   Spectrum sunlight(double r, double mu_sun) const;
+  // The same in the given bins alone: out[i] is sunlight(r, μ_s)[bins[i]] (the
+  // scattering orders' table works in 8 of the 40).
+  void sunlight_in_bins(double r, double mu_sun, std::span<const int> bins, std::span<float> out) const;
   // The edge of the Earth's refracted shadow at radius r: the true zenith cosine of the
   // sun whose ray grazes the ground on its way there.
   double shadow_edge_mu(double r) const;

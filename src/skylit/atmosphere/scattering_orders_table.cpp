@@ -234,9 +234,13 @@ struct ScatteringOrdersTable::Grid {
   static double mu_sun(int j) { return mu_sun_from_unit(static_cast<double>(j) / (kMuSunSize - 1)); }
 
   Bins sun_at(double r, double mu_sun) const {
-    const Spectrum t = transmittance.sun(r, mu_sun);
+    static const std::array<int, kBins> bins = [] {
+      std::array<int, kBins> out;
+      for (int b = 0; b < kBins; ++b) out[static_cast<size_t>(b)] = spectral_bin(b);
+      return out;
+    }();
     Bins out;
-    for (int b = 0; b < kBins; ++b) out[b] = t[spectral_bin(b)];
+    transmittance.sun_in_bins(r, mu_sun, bins, out);
     return out;
   }
 

@@ -100,6 +100,20 @@ Spectrum TransmittanceTable::sun(double r, double mu_sun) const {
   return refracted_ ? refracted_->sunlight(r, mu_sun) : to_top(r, mu_sun);
 }
 
+void TransmittanceTable::sun_in_bins(double r, double mu_sun, std::span<const int> bins, std::span<float> out) const {
+  if (refracted_) return refracted_->sunlight_in_bins(r, mu_sun, bins, out);
+  r = std::clamp(r, ground_radius_, top_radius_);
+  if (shell::hits_ground(r, mu_sun, ground_radius_)) {
+    std::fill(out.begin(), out.end(), 0.0f);
+    return;
+  }
+  const TransmittanceMapping map{ground_radius_, top_radius_, horizon_distance_};
+  double x_mu, x_r;
+  map.to_unit(r, mu_sun, x_mu, x_r);
+  table_.interpolate_bins(x_mu * (kMuSize - 1), x_r * (kRSize - 1), bins, out);
+  for (float& v : out) v = exp_nonpositive(-v);
+}
+
 Spectrum TransmittanceTable::to_top(double r, double mu) const {
   r = std::clamp(r, ground_radius_, top_radius_);
   if (shell::hits_ground(r, mu, ground_radius_)) return Spectrum(0.0f);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "skylit/atmosphere/optical_properties.h"
@@ -41,6 +42,8 @@ class TransmittanceTable {
   // its true zenith cosine there is μ_s: along the bent ray, with the beam's spreading,
   // when the medium refracts (refracted_sun_table.h), else to_top(r, μ_s).
   Spectrum sun(double r, double mu_sun) const;
+  // The same in the given bins alone: out[i] is sun(r, μ_s)[bins[i]].
+  void sun_in_bins(double r, double mu_sun, std::span<const int> bins, std::span<float> out) const;
 
   double ground_radius() const { return ground_radius_; }
   double top_radius() const { return top_radius_; }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 #include "skylit/spectrum/spectrum.h"
@@ -33,6 +34,21 @@ class SpectrumGrid2D {
     for (int k = 0; k < kSpectralBins; ++k)
       out[k] = (1 - b) * ((1 - a) * p00[k] + a * p10[k]) + b * ((1 - a) * p01[k] + a * p11[k]);
     return out;
+  }
+  // The same in the given bins alone: out[i] is interpolate(fx, fy)[bins[i]].
+  void interpolate_bins(double fx, double fy, std::span<const int> bins, std::span<float> out) const {
+    fx = std::clamp(fx, 0.0, static_cast<double>(size_x_ - 1));
+    fy = std::clamp(fy, 0.0, static_cast<double>(size_y_ - 1));
+    const int x = std::min(static_cast<int>(fx), size_x_ - 2), y = std::min(static_cast<int>(fy), size_y_ - 2);
+    const float a = static_cast<float>(fx - x), b = static_cast<float>(fy - y);
+    const Spectrum& p00 = at(x, y);
+    const Spectrum& p10 = at(x + 1, y);
+    const Spectrum& p01 = at(x, y + 1);
+    const Spectrum& p11 = at(x + 1, y + 1);
+    for (size_t i = 0; i < bins.size(); ++i) {
+      const int k = bins[i];
+      out[i] = (1 - b) * ((1 - a) * p00[k] + a * p10[k]) + b * ((1 - a) * p01[k] + a * p11[k]);
+    }
   }
 
  private:
