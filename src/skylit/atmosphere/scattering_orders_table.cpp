@@ -22,6 +22,8 @@ using Bins = Table::Bins;
 constexpr int kBins = Table::kBins;
 constexpr int kDirections = Table::kMuSize * Table::kAzimuthSize;
 constexpr int kPoints = Table::kAltitudeSize * Table::kMuSunSize;
+// A segment's plane of S over (μ_s, φ): blend_segment.
+constexpr size_t kPlaneSize = static_cast<size_t>(Table::kMuSunSize * Table::kAzimuthSize);
 
 // The spectral bin that the table's bin b stands for: 0, 6, 11, …, 39.
 int spectral_bin(int b) { return (b * (kSpectralBins - 1) + (kBins - 1) / 2) / (kBins - 1); }
@@ -125,6 +127,19 @@ Table::LogSource blend(const Table::LogSource& a, const Table::LogSource& b, flo
   return out;
 }
 
+// S from its interpolated logarithms; 0 at the floor. Every bin through exp first and
+// the floor after, so that both loops vectorise.
+void exp_above_floor(const Bins log_r, const Bins log_a, Bins& out_r, Bins& out_a) {
+  for (int k = 0; k < kBins; ++k) {
+    out_r[k] = exp_fast(log_r[k]);
+    out_a[k] = exp_fast(log_a[k]);
+  }
+  for (int k = 0; k < kBins; ++k) {
+    out_r[k] = log_r[k] <= kLogFloor + 1 ? 0.0f : out_r[k];
+    out_a[k] = log_a[k] <= kLogFloor + 1 ? 0.0f : out_a[k];
+  }
+}
+
 // S at a table position by multilinear interpolation of log S on the grid: the 16
 // corners blended one axis at a time (azimuth, μ, μ_s, altitude), so that each bin
 // waits on four blends in a row rather than on sixteen sums.
@@ -160,15 +175,50 @@ void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c
       sum_a[k] += c.pole * (mean_a[k] - sum_a[k]);
     }
   }
-  // Every bin through exp first and the floor after, so that both loops vectorise.
-  for (int k = 0; k < kBins; ++k) {
-    out_r[k] = exp_fast(sum_r[k]);
-    out_a[k] = exp_fast(sum_a[k]);
+  exp_above_floor(sum_r, sum_a, out_r, out_a);
+}
+
+// Along one of the grid's rays, every segment's (r, μ) is fixed and only the sun's
+// cosine and azimuth there change with the sun and the ray's azimuth: a segment's S over
+// (μ_s, φ) is blended along altitude and μ (and toward the pole's mean) once, and each
+// of the 256 rays that share the path reads it with 4 corners instead of 16.
+void blend_segment(const std::vector<Table::LogSource>& logs, const RayCoordinates& where, Table::LogSource* plane) {
+  auto entry = [&logs](int altitude, int mu_sun, int mu, int azimuth) -> const Table::LogSource& {
+    return logs[static_cast<size_t>((altitude * Table::kMuSunSize + mu_sun) * kDirections + mu * Table::kAzimuthSize +
+                                    azimuth)];
+  };
+  const int i = where.altitude.i, m = where.mu.i;
+  const int pole_row = m == 0 ? 0 : Table::kMuSize - 1;
+  for (int j = 0; j < Table::kMuSunSize; ++j) {
+    Table::LogSource mean{};  // the outermost band's mean over φ, blended along altitude
+    if (where.pole > 0)
+      for (int di = 0; di <= 1; ++di) {
+        const float w = (di ? where.altitude.a : 1 - where.altitude.a) / Table::kAzimuthSize;
+        for (int q = 0; q < Table::kAzimuthSize; ++q) {
+          const Table::LogSource& e = entry(i + di, j, pole_row, q);
+          for (int k = 0; k < kBins; ++k) {
+            mean.rayleigh[k] += w * e.rayleigh[k];
+            mean.aerosol[k] += w * e.aerosol[k];
+          }
+        }
+      }
+    for (int q = 0; q < Table::kAzimuthSize; ++q) {
+      const Table::LogSource low = blend(entry(i, j, m, q), entry(i, j, m + 1, q), where.mu.a);
+      const Table::LogSource high = blend(entry(i + 1, j, m, q), entry(i + 1, j, m + 1, q), where.mu.a);
+      Table::LogSource& out = plane[j * Table::kAzimuthSize + q];
+      out = blend(low, high, where.altitude.a);
+      if (where.pole > 0) out = blend(out, mean, where.pole);
+    }
   }
-  for (int k = 0; k < kBins; ++k) {
-    out_r[k] = sum_r[k] <= kLogFloor + 1 ? 0.0f : out_r[k];
-    out_a[k] = sum_a[k] <= kLogFloor + 1 ? 0.0f : out_a[k];
-  }
+}
+
+// S from a segment's plane (blend_segment) at the sun's cosine and azimuth there.
+void gather_from_plane(const Table::LogSource* plane, const TableCoordinates& c, Bins& out_r, Bins& out_a) {
+  auto at = [plane](int j, int q) -> const Table::LogSource& { return plane[j * Table::kAzimuthSize + q]; };
+  const Table::LogSource low = blend(at(c.mu_sun, c.azimuth), at(c.mu_sun, c.azimuth + 1), c.a_azimuth);
+  const Table::LogSource high = blend(at(c.mu_sun + 1, c.azimuth), at(c.mu_sun + 1, c.azimuth + 1), c.a_azimuth);
+  const Table::LogSource sum = blend(low, high, c.a_mu_sun);
+  exp_above_floor(sum.rayleigh, sum.aerosol, out_r, out_a);
 }
 
 // The medium's coefficients in the table's bins.
@@ -261,20 +311,23 @@ struct ScatteringOrdersTable::Grid {
   std::vector<RayPath> paths;  // [altitude][μ], filled by the table's constructor
   const RayPath& path(int altitude, int mu) const { return paths[static_cast<size_t>(altitude * kMuSize + mu)]; }
 
-  // L along the grid's ray `path` from radius r with the sun at μ_s, ν. Order 1 (`logs`
-  // null): sunlight scattered once and the sunlit ground. Order n: σ·S_{n−1} (from its
-  // logarithms `logs`), and the ground's reflection of E_{n−1}.
-  Bins transport(const std::vector<LogSource>* logs, const std::vector<Bins>& ground_irradiance, const RayPath& path,
+  // L along the grid's ray `path` from radius r with the sun at μ_s, ν. Order 1 (`planes`
+  // null): sunlight scattered once and the sunlit ground. Order n: σ·S_{n−1} (from the
+  // path's segments' planes of its logarithms, blend_segment), and the ground's
+  // reflection of E_{n−1}.
+  Bins transport(const std::vector<LogSource>* planes, const std::vector<Bins>& ground_irradiance, const RayPath& path,
                  double r, double mu_sun, double nu) const {
     const float phase_r = static_cast<float>(rayleigh_phase(nu, rayleigh_phase_gamma));
     const float phase_a = static_cast<float>(aerosol_phase(nu));
     Bins throughput, light{}, s_r, s_a;
     throughput.fill(1.0f);
-    for (const RayPath::Segment& segment : path.segments) {
+    for (size_t i = 0; i < path.segments.size(); ++i) {
+      const RayPath::Segment& segment = path.segments[i];
       const double mu_sun_t = std::clamp((r * mu_sun + segment.t * nu) / segment.r_t, -1.0, 1.0);
       const Step& s = segment.step;
-      if (logs) {
-        gather(*logs, coordinates(segment.where, segment.mu_t, mu_sun_t, nu), s_r, s_a);
+      if (planes) {
+        gather_from_plane(planes->data() + i * kPlaneSize, coordinates(segment.where, segment.mu_t, mu_sun_t, nu), s_r,
+                          s_a);
       } else {
         const Bins sun = sun_at(segment.r_t, mu_sun_t);
         for (int k = 0; k < kBins; ++k) {
@@ -292,7 +345,7 @@ struct ScatteringOrdersTable::Grid {
     if (path.ground) {
       const double mu_sun_g = std::clamp((r * mu_sun + path.length * nu) / rg, -1.0, 1.0);
       Bins e{};
-      if (logs) {
+      if (planes) {
         const Lerp ls = lerp(unit_from_mu_sun(mu_sun_g) * (kMuSunSize - 1), kMuSunSize);
         for (int k = 0; k < kBins; ++k)
           e[k] = ground_irradiance[static_cast<size_t>(ls.i)][k] * (1 - ls.a) +
@@ -348,15 +401,24 @@ ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, con
   std::vector<Bins> total_r(size, Bins{}), total_a(size, Bins{});
   Bins last_sum_r{}, last_sum_a{}, before_sum_r{}, before_sum_a{};
   for (int order = 1; order <= kOrders; ++order) {
-    // L_order at every point and direction.
-    tbb::parallel_for(0, kPoints, [&](int p) {
-      const int altitude = p / kMuSunSize;
-      const double r = grid.radius(altitude), mu_sun = Grid::mu_sun(p % kMuSunSize);
-      for (int d = 0; d < kDirections; ++d) {
-        const int m = d / kAzimuthSize;
-        radiance[static_cast<size_t>(p * kDirections + d)] =
-            grid.transport(order == 1 ? nullptr : &logs, ground, grid.path(altitude, m), r, mu_sun,
-                           nu_of(mu_of(m), mu_sun, azimuth_of(d % kAzimuthSize)));
+    // L_order at every point and direction, path by path: the rays from one altitude in
+    // one band of μ share their segments, whatever the sun and the azimuth.
+    tbb::parallel_for(0, kAltitudeSize * kMuSize, [&](int path_index) {
+      const int altitude = path_index / kMuSize, m = path_index % kMuSize;
+      const RayPath& path = grid.path(altitude, m);
+      thread_local std::vector<LogSource> planes;
+      if (order > 1) {
+        planes.resize(path.segments.size() * kPlaneSize);
+        for (size_t i = 0; i < path.segments.size(); ++i)
+          blend_segment(logs, path.segments[i].where, &planes[i * kPlaneSize]);
+      }
+      const double r = grid.radius(altitude);
+      for (int j = 0; j < kMuSunSize; ++j) {
+        const double mu_sun = Grid::mu_sun(j);
+        const size_t base = static_cast<size_t>((altitude * kMuSunSize + j) * kDirections + m * kAzimuthSize);
+        for (int q = 0; q < kAzimuthSize; ++q)
+          radiance[base + static_cast<size_t>(q)] = grid.transport(order == 1 ? nullptr : &planes, ground, path, r,
+                                                                   mu_sun, nu_of(mu_of(m), mu_sun, azimuth_of(q)));
       }
     });
     ground = Grid::ground_irradiance(radiance);
