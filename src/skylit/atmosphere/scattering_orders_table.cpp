@@ -90,14 +90,15 @@ RayCoordinates ray_coordinates(double rg, double rt, double r, double mu) {
 // arccos x within 2.2e-8 rad (Abramowitz & Stegun 1964, 4.4.46): the azimuth's place in the
 // table to far below the float weights' rounding, at a fraction of libm's acos (7 % of
 // the orders' build).
-double acos_polynomial(double x) {
-  const double a = std::abs(x);
-  double p = -0.0012624911;
-  for (const double c :
-       {0.0066700901, -0.0170881256, 0.0308918810, -0.0501743046, 0.0889789874, -0.2145988016, 1.5707963050})
+template <typename Real>
+Real acos_polynomial(Real x) {
+  const Real a = std::abs(x);
+  Real p = Real(-0.0012624911);
+  for (const Real c : {Real(0.0066700901), Real(-0.0170881256), Real(0.0308918810), Real(-0.0501743046),
+                       Real(0.0889789874), Real(-0.2145988016), Real(1.5707963050)})
     p = p * a + c;
-  const double angle = std::sqrt(1.0 - a) * p;
-  return x < 0 ? kPi - angle : angle;
+  const Real angle = std::sqrt(Real(1) - a) * p;
+  return x < 0 ? Real(kPi) - angle : angle;
 }
 
 TableCoordinates coordinates(const RayCoordinates& ray, double mu, double mu_sun, double nu) {
@@ -212,8 +213,23 @@ void blend_segment(const std::vector<Table::LogSource>& logs, const RayCoordinat
   }
 }
 
-// S from a segment's plane (blend_segment) at the sun's cosine and azimuth there.
-void gather_from_plane(const Table::LogSource* plane, const TableCoordinates& c, Bins& out_r, Bins& out_a) {
+// Where the sun's cosine μ_s and the azimuth between the sun and a direction of zenith
+// cosine μ (sine `sin_mu`) fall in a segment's plane, for cosine ν between them.
+struct SunPlace {
+  int mu_sun, azimuth;
+  float a_mu_sun, a_azimuth;
+};
+SunPlace sun_place(float mu, float sin_mu, float mu_sun, float nu) {
+  const float denominator = sin_mu * std::sqrt(std::max(0.0f, 1.0f - mu_sun * mu_sun));
+  const float azimuth =
+      denominator < 1e-6f ? 0.0f : acos_polynomial(std::clamp((nu - mu * mu_sun) / denominator, -1.0f, 1.0f));
+  const Lerp ls = lerp(unit_from_mu_sun(mu_sun) * (Table::kMuSunSize - 1), Table::kMuSunSize);
+  const Lerp lp = lerp(azimuth * static_cast<float>(1 / kPi) * Table::kAzimuthSize - 0.5f, Table::kAzimuthSize);
+  return {ls.i, lp.i, ls.a, lp.a};
+}
+
+// S from a segment's plane (blend_segment) at the sun's place there.
+void gather_from_plane(const Table::LogSource* plane, const SunPlace& c, Bins& out_r, Bins& out_a) {
   auto at = [plane](int j, int q) -> const Table::LogSource& { return plane[j * Table::kAzimuthSize + q]; };
   const Table::LogSource low = blend(at(c.mu_sun, c.azimuth), at(c.mu_sun, c.azimuth + 1), c.a_azimuth);
   const Table::LogSource high = blend(at(c.mu_sun + 1, c.azimuth), at(c.mu_sun + 1, c.azimuth + 1), c.a_azimuth);
@@ -257,7 +273,8 @@ Step step(const AtmosphereMedium& m, const Coefficients& c, double h, double dt)
 // all that does not depend on the sun: the same for every sun and every order.
 struct RayPath {
   struct Segment {
-    double t, r_t, mu_t;  // the segment's middle: distance along the ray, radius, direction
+    double t, r_t, mu_t;    // the segment's middle: distance along the ray, radius, direction
+    float mu_t_f, sin_t_f;  // μ_t and √(1 − μ_t²) for sun_place
     RayCoordinates where;
     Step step;
   };
@@ -277,7 +294,9 @@ RayPath ray_path(const AtmosphereMedium& m, const Coefficients& c, double rg, do
     const double t = 0.5 * (bounds[i] + bounds[i - 1]);
     const double r_t = std::clamp(shell::radius_at(r, mu, t), rg, rt);
     const double mu_t = shell::mu_at(r, mu, t, r_t);
-    path.segments.push_back({t, r_t, mu_t, ray_coordinates(rg, rt, r_t, mu_t), step(m, c, r_t - m.earth_radius_m, dt)});
+    path.segments.push_back({t, r_t, mu_t, static_cast<float>(mu_t),
+                             static_cast<float>(std::sqrt(std::max(0.0, 1.0 - mu_t * mu_t))),
+                             ray_coordinates(rg, rt, r_t, mu_t), step(m, c, r_t - m.earth_radius_m, dt)});
   }
   return path;
 }
@@ -319,6 +338,7 @@ struct ScatteringOrdersTable::Grid {
                  double r, double mu_sun, double nu) const {
     const float phase_r = static_cast<float>(rayleigh_phase(nu, rayleigh_phase_gamma));
     const float phase_a = static_cast<float>(aerosol_phase(nu));
+    const float nu_f = static_cast<float>(nu);
     Bins throughput, light{}, s_r, s_a;
     throughput.fill(1.0f);
     for (size_t i = 0; i < path.segments.size(); ++i) {
@@ -326,8 +346,8 @@ struct ScatteringOrdersTable::Grid {
       const double mu_sun_t = std::clamp((r * mu_sun + segment.t * nu) / segment.r_t, -1.0, 1.0);
       const Step& s = segment.step;
       if (planes) {
-        gather_from_plane(planes->data() + i * kPlaneSize, coordinates(segment.where, segment.mu_t, mu_sun_t, nu), s_r,
-                          s_a);
+        gather_from_plane(planes->data() + i * kPlaneSize,
+                          sun_place(segment.mu_t_f, segment.sin_t_f, static_cast<float>(mu_sun_t), nu_f), s_r, s_a);
       } else {
         const Bins sun = sun_at(segment.r_t, mu_sun_t);
         for (int k = 0; k < kBins; ++k) {

@@ -13,10 +13,12 @@ inline double mu_sun_from_unit(double x) {
   return s * (0.25 + 0.75 * std::abs(s));
 }
 
-inline double unit_from_mu_sun(double mu_sun) {
-  const double m = std::clamp(std::abs(mu_sun), 0.0, 1.0);
-  const double s = (-0.25 + std::sqrt(0.0625 + 3.0 * m)) / 1.5;
-  return 0.5 * (1.0 + (mu_sun < 0 ? -s : s));
+// In double, or in float where a table's weights need no more.
+template <typename Real>
+Real unit_from_mu_sun(Real mu_sun) {
+  const Real m = std::clamp(std::abs(mu_sun), Real(0), Real(1));
+  const Real s = (Real(-0.25) + std::sqrt(Real(0.0625) + Real(3) * m)) / Real(1.5);
+  return Real(0.5) * (Real(1) + (mu_sun < 0 ? -s : s));
 }
 
 }  // namespace skylit
