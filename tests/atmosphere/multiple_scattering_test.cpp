@@ -532,9 +532,9 @@ TEST(MultipleScattering, ScatteringOrdersMatchMonteCarloInEveryView) {
   // plane), 450 and 650 nm, suns 60°, 30°, 10°, 4°, 0° and −4°. Measured in the US
   // Standard Atmosphere 1976 (2026-12-05, 48 sun cosines, three orders and the tail):
   // the total within −2.0 … +2.3 % by day (σ 0.2–1.4 %), −7.2 … +11.8 % at −4° (σ up
-  // to 8.9 %); Hillaire's approximation was −17 … +27 % on the same paths. Tolerance: 5 % (issue 15) plus 3σ of the Monte Carlo orders ≥ 2. At
-  // −8° these paths are too few to judge (σ up to 99 %, and views where their estimate
-  // is far below the truth): the sunlit-line estimator's test below covers −4° and −8°.
+  // to 8.9 %); Hillaire's approximation was −17 … +27 % on the same paths. Tolerance: 5 % (issue 15) plus 3σ of the
+  // Monte Carlo orders ≥ 2. At −8° these paths are too few to judge (σ up to 99 %, and views where their estimate is
+  // far below the truth): the sunlit-line estimator's test below covers −4° and −8°.
   const MonteCarloResults& mc = monte_carlo();
   for (int s = 0; s <= kTwilight; ++s)
     for (int b = 0; b < 2; ++b)
