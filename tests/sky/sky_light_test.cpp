@@ -95,8 +95,12 @@ TEST(SkyLight, OpenFieldGetsTheUnobstructedIrradiance) {
 TEST(SkyLight, UnobstructedIrradianceMatchesADenseQuadratureOfTheSky) {
   // ∫ L(ω) max(0, n·ω) dω with 720 × 1440 midpoint samples of the same sky radiance
   // (near the ground) against the table over orientations, for a grid of normals:
-  // within 1 % in illuminance.
+  // within 1 % in illuminance (measured: 0.2 %); and the open sky the cells' means give
+  // (sky_light.h; measured: 0.4 %).
   Fixture f;
+  f.tracer.commit();
+  const SkyLight cells(f.sky, f.tracer, black_obstacle, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr,
+                       nullptr, true);
   for (double elevation : {90.0, 45.0, 0.0, -45.0}) {
     for (double azimuth : {150.0, 240.0, 330.0}) {
       const Vec3 n = direction_from_altitude_azimuth(elevation, azimuth);
@@ -115,8 +119,47 @@ TEST(SkyLight, UnobstructedIrradianceMatchesADenseQuadratureOfTheSky) {
       }
       const double expected = illuminance(Irradiance(dense));
       EXPECT_NEAR(illuminance(f.sky.sky_irradiance(n)), expected, 0.01 * expected) << elevation << " " << azimuth;
+      const double from_cells = illuminance(cells.diffuse_irradiance({0, 0, 0}, n));
+      EXPECT_NEAR(from_cells, expected, 0.01 * expected) << elevation << " " << azimuth;
     }
   }
+}
+
+TEST(SkyLight, AnOutlineAcrossTheAureoleTakesOutTheSkyItHides) {
+  // A south wall facing a low sun (17°) across a 50 m street from a long black block
+  // whose top passes 3° above the sun: the block hides the aureole up to its edge, and
+  // as the point rises by 0.5 m steps the edge sweeps across the elements. Against
+  // 262,144 directions summed directly (no table), worst of twelve heights: with the
+  // cells' means and their sub-cells traced apart within 2 % (measured 1.7 %); the
+  // sky model's table and the elements' centres 2.3 %, and the cells' means without
+  // the sub-cells 6.4 % (the open sky and the hidden sky from different radiances).
+  Atmosphere atmosphere{AtmosphereSettings{}};
+  const SkyModel sky{atmosphere, direction_from_altitude_azimuth(17, 180), 1.6};
+  RayTracer tracer;
+  tracer.add_mesh(make_box({-400, -80, 0}, {400, -50, 50 * std::tan(radians(20.0))}));
+  tracer.commit();
+  const SkyLight cells(sky, tracer, black_obstacle, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr,
+                       true);
+  const SkyLight plain(sky, tracer, black_obstacle);
+  const Vec3 south{0, -1, 0};
+  const std::vector<SkyElement> dense = fibonacci_sphere(262144);
+  double worst_cells = 0, worst_plain = 0;
+  for (int step = 0; step < 12; ++step) {
+    const Vec3 point{0.37 * step, 0, 1.0 + 0.5 * step};
+    Spectrum sum;
+    for (const SkyElement& e : dense) {
+      const double c = dot(south, e.direction);
+      if (c <= 0 || tracer.occluded(Ray{offset_from_surface(point, south), e.direction})) continue;
+      sum += sky.sky_radiance_near_ground(e.direction).spectrum() * static_cast<float>(c * e.solid_angle);
+    }
+    const double truth = illuminance(Irradiance(sum));
+    worst_cells = std::max(worst_cells, std::abs(illuminance(cells.diffuse_irradiance(point, south)) / truth - 1));
+    worst_plain = std::max(worst_plain, std::abs(illuminance(plain.diffuse_irradiance(point, south)) / truth - 1));
+  }
+  std::cout << "worst against 262,144 directions: cells " << worst_cells << ", table and centres " << worst_plain
+            << "\n";
+  EXPECT_LT(worst_cells, 0.02);
+  EXPECT_LT(worst_cells, worst_plain);
 }
 
 TEST(SkyLight, ObstaclesSendBackTheirLight) {

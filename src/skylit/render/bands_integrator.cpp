@@ -59,6 +59,8 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       scene.scene(), lookup_directions, [this](int level, const Vec3& point, const Vec3& normal) {
         return obstacle_sky_lights_[static_cast<size_t>(level)]->diffuse_irradiance(point, normal);
       });
+  // The image's own integrals take the open sky and what obstacles hide from the same
+  // cell means (sky/sky_light.h); the obstacles' patches keep the sky model's table.
   sky_light_ = sky_light_with(SkyLight::kDefaultDirections);
   one_pixel_sky_light_ = sky_light_with(kOnePixelDirections);
   if (scene.lamps() && scene.fog()) {  // what the image cache uses where the lamps' glow outshines the sky
@@ -73,10 +75,10 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
 }
 
 std::unique_ptr<SkyLight> BandsIntegrator::sky_light_with(int directions) const {
-  return sky_light_looking_up(0, directions);
+  return sky_light_looking_up(0, directions, true);
 }
 
-std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int directions) const {
+std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int directions, bool cell_means) const {
   const auto obstacle = [this, level](const Ray& ray, const Hit& hit) {
     return element_obstacle_light(ray, hit, level);
   };
@@ -84,8 +86,8 @@ std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int d
   // shaded point does not scatter; the obstacles' keep the open field's, a correction
   // of a correction (docs/fog.md).
   const FogShadowedSunlight* shadowed = level == 0 && scene_.fog() ? scene_.fog()->shadowed_sunlight() : nullptr;
-  return std::make_unique<SkyLight>(sky_, scene_.tracer(), obstacle, fibonacci_sphere(directions), fog_light_,
-                                    shadowed);
+  return std::make_unique<SkyLight>(sky_, scene_.tracer(), obstacle, fibonacci_sphere(directions), fog_light_, shadowed,
+                                    cell_means);
 }
 
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {

@@ -161,7 +161,7 @@ class BandsIntegrator {
   // A sky-light integral of `directions` directions whose obstacles are lit by the
   // obstacle sky light's `level` (element_obstacle_light; past the last level, as the
   // point itself).
-  std::unique_ptr<SkyLight> sky_light_looking_up(int level, int directions) const;
+  std::unique_ptr<SkyLight> sky_light_looking_up(int level, int directions, bool cell_means = false) const;
   // With the diffuse part from `diffuse_from`, the glossy part from `glossy_from`.
   CachedSkyLight sky_light_at(const SkyLight& diffuse_from, const SkyLight& glossy_from, const SurfacePoint& point,
                               const Vec3& viewer) const;

@@ -6,6 +6,8 @@
 #include <map>
 #include <memory>
 
+#include <tbb/parallel_for.h>
+
 #include "skylit/material/reflection.h"
 #include "skylit/spectrum/cie.h"
 
@@ -13,7 +15,7 @@ namespace skylit {
 
 SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
                    std::vector<SkyElement> elements, const FogSurfaceLight* fog,
-                   const FogShadowedSunlight* shadowed_fog_sunlight)
+                   const FogShadowedSunlight* shadowed_fog_sunlight, bool cell_means)
     : sky_(sky),
       tracer_(tracer),
       obstacle_radiance_(std::move(obstacle_radiance)),
@@ -26,6 +28,7 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
     for (const SkyElement& e : elements_) directions.push_back(e.direction);
     fog_elements_ = std::make_unique<FogSurfaceLight::Directions>(*fog_, directions);
   }
+  if (cell_means) find_cells();
   // Bands of equal height with about 2 × 16 elements per band for each band, so that a
   // packet of 16 rays spans about as much in height as in azimuth; within a band by
   // azimuth.
@@ -42,6 +45,97 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
     const double azimuth_b = std::atan2(elements_[b].direction.y, elements_[b].direction.x);
     return azimuth_a != azimuth_b ? azimuth_a < azimuth_b : a < b;
   });
+}
+
+void SkyLight::find_cells() {
+  // Each element's 3 × 3 sub-cells, a third of its width apart, and the sky's mean
+  // radiance over each from 4 × 4 samples; the element's radiance is their mean.
+  cells_.resize(elements_.size());
+  tbb::parallel_for(size_t{0}, elements_.size(), [&](size_t i) {
+    const Vec3& d = elements_[i].direction;
+    const double width = std::sqrt(elements_[i].solid_angle);
+    const Vec3 t1 = normalize(cross(d, std::abs(d.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0}));
+    const Vec3 t2 = cross(d, t1);
+    auto across = [&](double u, double v) { return normalize(d + (u * width / 3) * t1 + (v * width / 3) * t2); };
+    Cells& c = cells_[i];
+    int next = 0;
+    Radiance total;
+    for (int u = -1; u <= 1; ++u)
+      for (int v = -1; v <= 1; ++v) {
+        const int slot = (u == 0 && v == 0) ? kSubCells - 1 : next++;
+        c.directions[static_cast<size_t>(slot)] = across(u, v);
+        Radiance mean;
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b)
+            mean += sky_.sky_radiance_near_ground(across(u + (a - 1.5) / 4, v + (b - 1.5) / 4));
+        c.radiance[static_cast<size_t>(slot)] = mean * (1.0f / 16);
+        total += c.radiance[static_cast<size_t>(slot)];
+      }
+    element_radiance_[i] = total * (1.0f / kSubCells);
+  });
+  // The open sky's irradiance from the same radiances, over normals.
+  open_irradiance_.assign(static_cast<size_t>(kOpenElevations * kOpenAzimuths), Spectrum(0.0f));
+  tbb::parallel_for(0, kOpenElevations * kOpenAzimuths, [&](int g) {
+    const int row = g / kOpenAzimuths, column = g % kOpenAzimuths;
+    const double elevation = -kPi / 2 + kPi * row / (kOpenElevations - 1);
+    const double azimuth = 2 * kPi * column / (kOpenAzimuths - 1);
+    const Vec3 n{std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
+    Spectrum e(0.0f);
+    for (size_t i = 0; i < elements_.size(); ++i) {
+      const double c = dot(n, elements_[i].direction);
+      if (c > 0) e += element_radiance_[i].spectrum() * static_cast<float>(c * elements_[i].solid_angle);
+    }
+    open_irradiance_[static_cast<size_t>(g)] = e;
+  });
+  // Elements whose sub-cells differ by more than kVaryingCell × the sky's mean (the
+  // aureole, the horizon), and their nearest neighbours.
+  double sum = 0;
+  int count = 0;
+  for (size_t i = 0; i < elements_.size(); ++i)
+    if (elements_[i].direction.z > 0) {
+      sum += luminance(element_radiance_[i]);
+      ++count;
+    }
+  const double threshold = kVaryingCell * sum / std::max(1, count);
+  tbb::parallel_for(size_t{0}, elements_.size(), [&](size_t i) {
+    Cells& c = cells_[i];
+    double least = std::numeric_limits<double>::infinity(), most = 0;
+    for (const Radiance& r : c.radiance) {
+      least = std::min(least, luminance(r));
+      most = std::max(most, luminance(r));
+    }
+    c.varying = most - least > threshold;
+    if (!c.varying) return;
+    const Vec3& d = elements_[i].direction;
+    const double near_cosine = std::cos(3 * std::sqrt(elements_[i].solid_angle));
+    std::vector<std::pair<double, uint32_t>> near;
+    for (uint32_t j = 0; j < elements_.size(); ++j)
+      if (j != i && dot(d, elements_[j].direction) > near_cosine) near.emplace_back(dot(d, elements_[j].direction), j);
+    const size_t keep = std::min<size_t>(kNeighbours, near.size());
+    std::partial_sort(
+        near.begin(), near.begin() + static_cast<std::ptrdiff_t>(keep), near.end(),
+        [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
+    for (size_t n = 0; n < kNeighbours; ++n) c.neighbours[n] = n < keep ? near[n].second : static_cast<uint32_t>(i);
+  });
+}
+
+Spectrum SkyLight::open_irradiance(const Vec3& normal) const {
+  const double elevation = std::asin(std::clamp(normal.z, -1.0, 1.0));
+  double azimuth = std::atan2(normal.y, normal.x);
+  if (azimuth < 0) azimuth += 2 * kPi;
+  const double fe = (elevation + kPi / 2) / kPi * (kOpenElevations - 1);
+  const double fa = azimuth / (2 * kPi) * (kOpenAzimuths - 1);
+  const int e = std::min(static_cast<int>(fe), kOpenElevations - 2),
+            a = std::min(static_cast<int>(fa), kOpenAzimuths - 2);
+  const float te = static_cast<float>(fe - e), ta = static_cast<float>(fa - a);
+  auto at = [&](int ei, int ai) -> const Spectrum& {
+    return open_irradiance_[static_cast<size_t>(ei * kOpenAzimuths + ai)];
+  };
+  Spectrum out;
+  for (int k = 0; k < kSpectralBins; ++k)
+    out[k] = (1 - te) * ((1 - ta) * at(e, a)[k] + ta * at(e, a + 1)[k]) +
+             te * ((1 - ta) * at(e + 1, a)[k] + ta * at(e + 1, a + 1)[k]);
+  return out;
 }
 
 Radiance SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const {
@@ -203,6 +297,7 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
   // element changes is seen through the fog in front of its obstacle.
   const bool in_fog = lights_in_fog(point.z);
   Spectrum irradiance = in_fog ? fog_->irradiance(point, normal) : sky_.sky_irradiance(normal).spectrum();
+  if (!in_fog && !cells_.empty()) irradiance = open_irradiance(normal);
   const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
   // The rays toward the elements above the surface's horizon, traced together in packet
@@ -211,9 +306,9 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
   // each depth of nesting: an obstacle's light may itself come from a diffuse integral
   // (render/obstacle_sky_light.h).
   struct Buffers {
-    std::vector<Ray> rays;
-    std::vector<std::optional<Hit>> hits;
-    std::vector<int32_t> ray_of_element;
+    std::vector<Ray> rays, edge_rays;
+    std::vector<std::optional<Hit>> hits, edge_hits;
+    std::vector<int32_t> ray_of_element, edge_ray_of_element;
   };
   thread_local std::vector<std::unique_ptr<Buffers>> buffers_by_depth;
   thread_local size_t depth = 0;
@@ -237,9 +332,49 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
     rays.push_back(Ray{origin, elements[i].direction});
   }
   tracer_.intersect(rays, hits);
+  std::vector<int32_t>& edge_ray_of_element = buffers.edge_ray_of_element;
+  // (Not in a fog that lights the point: its light is the field's, by element centres.)
+  const bool by_cells = !cells_.empty() && !in_fog;
+  edge_ray_of_element.assign(by_cells ? elements.size() : 0, -1);
+  buffers.edge_rays.clear();
+  if (by_cells) {
+    for (size_t i = 0; i < elements.size(); ++i) {
+      if (ray_of_element[i] < 0 || !cells_[i].varying) continue;
+      const bool hidden = hits[static_cast<size_t>(ray_of_element[i])].has_value();
+      bool edge = false;
+      for (const uint32_t j : cells_[i].neighbours)
+        edge = edge || (ray_of_element[j] >= 0 && hits[static_cast<size_t>(ray_of_element[j])].has_value() != hidden);
+      if (!edge) continue;
+      edge_ray_of_element[i] = static_cast<int32_t>(buffers.edge_rays.size());
+      for (int k = 0; k + 1 < kSubCells; ++k) buffers.edge_rays.push_back(Ray{origin, cells_[i].directions[k]});
+    }
+    if (!buffers.edge_rays.empty()) tracer_.intersect(buffers.edge_rays, buffers.edge_hits);
+  }
   Spectrum reflected_back(0.0f);  // Σ_hidden w·T·ρ/π over the obstacles lit as the point
   bool lit_as_the_point = false;
   double weight_sum = 0, weight_over_distance = 0;  // Σ w, Σ_hidden w / t (when asked)
+  auto add_hidden = [&](size_t i, const Ray& ray, const Hit& hit, double w, const Radiance& sky) {
+    const SkyElement& e = elements[i];
+    if (obstacle_distance_m) weight_over_distance += w / std::max(hit.t, 1e-3);
+    const float weight = static_cast<float>(w);
+    const ObstacleLight light = obstacle_radiance_(ray, hit);
+    const Radiance& obstacle = light.radiance;
+    const Spectrum& albedo = light.lit_as_the_point.spectrum();
+    lit_as_the_point = lit_as_the_point || !light.lit_as_the_point.is_black();
+    if (in_fog) {
+      const Spectrum hidden = fog_elements_->incoming(fog_elements_->at(point.z + e.direction.z * hit.t), i);
+      const Spectrum through = fog_->transmittance(point, ray.direction, hit.t);
+      for (int k = 0; k < kSpectralBins; ++k) {
+        irradiance[k] = std::max(0.0f, irradiance[k] + weight * through[k] * (obstacle[k] - hidden[k]));
+        reflected_back[k] += weight * through[k] * albedo[k] * static_cast<float>(1.0 / kPi);
+      }
+    } else {
+      for (int k = 0; k < kSpectralBins; ++k) {
+        irradiance[k] = std::max(0.0f, irradiance[k] + weight * (obstacle[k] - sky[k]));
+        reflected_back[k] += weight * albedo[k] * static_cast<float>(1.0 / kPi);
+      }
+    }
+  };
   for (size_t i = 0; i < elements.size(); ++i) {
     const SkyElement& e = elements[i];
     if (ray_of_element[i] < 0) continue;
@@ -248,29 +383,19 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
     const std::optional<Hit>& hit = hits[static_cast<size_t>(ray_of_element[i])];
     const double w = cosine * e.solid_angle;
     if (obstacle_distance_m) weight_sum += w;
-    if (!hit) continue;
-    if (obstacle_distance_m) weight_over_distance += w / std::max(hit->t, 1e-3);
-    // Hidden: the element's sky leaves, the obstacle's light comes in its place.
-    const float weight = static_cast<float>(w);
-    const ObstacleLight light = obstacle_radiance_(ray, *hit);
-    const Radiance& obstacle = light.radiance;
-    const Spectrum& albedo = light.lit_as_the_point.spectrum();
-    lit_as_the_point = lit_as_the_point || !light.lit_as_the_point.is_black();
-    if (in_fog) {
-      // The field's light from the element leaves; the obstacle's light, less the field's
-      // at the obstacle, comes through the fog between (δ-M, docs/fog.md).
-      const Spectrum hidden = fog_elements_->incoming(fog_elements_->at(point.z + e.direction.z * hit->t), i);
-      const Spectrum through = fog_->transmittance(point, e.direction, hit->t);
-      for (int k = 0; k < kSpectralBins; ++k) {
-        irradiance[k] = std::max(0.0f, irradiance[k] + weight * through[k] * (obstacle[k] - hidden[k]));
-        reflected_back[k] += weight * through[k] * albedo[k] * static_cast<float>(1.0 / kPi);
+    if (!edge_ray_of_element.empty() && edge_ray_of_element[i] >= 0) {
+      const Cells& c = cells_[i];
+      const size_t first = static_cast<size_t>(edge_ray_of_element[i]);
+      for (int k = 0; k + 1 < kSubCells; ++k) {
+        const std::optional<Hit>& edge_hit = buffers.edge_hits[first + static_cast<size_t>(k)];
+        if (edge_hit)
+          add_hidden(i, buffers.edge_rays[first + static_cast<size_t>(k)], *edge_hit, w / kSubCells,
+                     c.radiance[static_cast<size_t>(k)]);
       }
-    } else {
-      for (int k = 0; k < kSpectralBins; ++k) {
-        irradiance[k] = std::max(0.0f, irradiance[k] + weight * (obstacle[k] - element_radiance_[i][k]));
-        reflected_back[k] += weight * albedo[k] * static_cast<float>(1.0 / kPi);
-      }
+      if (hit) add_hidden(i, ray, *hit, w / kSubCells, c.radiance[kSubCells - 1]);
+      continue;
     }
+    if (hit) add_hidden(i, ray, *hit, w, element_radiance_[i]);
   }
   // In a building's shadow the fog along many of the point's directions lies in the
   // shadow too and scatters no sunlight toward it (media/fog_shadowed_sunlight.h); given

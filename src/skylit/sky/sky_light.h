@@ -11,6 +11,7 @@
 // obstacle's.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -64,7 +65,18 @@ class SkyLight {
   // integral asked for it first.
   SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
            std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections),
-           const FogSurfaceLight* fog = nullptr, const FogShadowedSunlight* shadowed_fog_sunlight = nullptr);
+           const FogSurfaceLight* fog = nullptr, const FogShadowedSunlight* shadowed_fog_sunlight = nullptr,
+           bool cell_means = false);
+  // With `cell_means`: each element's sky is its cell's mean radiance (3 × 3 sub-cells
+  // of 4 × 4 samples), the open sky's irradiance is summed from the same means (a table
+  // over normals) rather than the sky model's table, and where an obstacle's outline
+  // crosses an element whose sub-cells differ by more than kVaryingCell × the sky's mean
+  // (the sun's aureole, the horizon), its sub-cells are traced apart, each hidden one
+  // taking out its own mean. The open sky and what obstacles hide then come from the
+  // same radiances: from the table's 2,048 point samples and the elements' centres,
+  // a block whose top passed near a low sun took out whole 6° elements of the aureole,
+  // ±3–5 % of a wall's sky light from one metre to the next (docs/sky-light.md).
+  static constexpr double kVaryingCell = 1.0;
 
   // Irradiance (W m⁻² nm⁻¹) on a surface at `point` with unit `normal` (facing the side
   // being lit), from the sky, the far ground, and the obstacles that hide them; inside a
@@ -114,6 +126,23 @@ class SkyLight {
 
   std::vector<SkyElement> elements_;
   std::vector<Radiance> element_radiance_;
+  // With cell_means: per element its sub-cells (directions, the centre last; mean
+  // radiances), whether they differ enough to be traced apart, and then its nearest
+  // neighbours (to find the outlines that cross it).
+  static constexpr int kNeighbours = 6, kSubCells = 9;
+  struct Cells {
+    std::array<Vec3, kSubCells> directions;
+    std::array<Radiance, kSubCells> radiance;
+    bool varying = false;
+    std::array<uint32_t, kNeighbours> neighbours{};
+  };
+  std::vector<Cells> cells_;
+  void find_cells();
+  // With cell_means: the open sky's irradiance Σ max(0, n·ω_i) dω_i L̄_i over normals n, on
+  // a grid of elevation × azimuth (world frame), read bilinearly.
+  static constexpr int kOpenElevations = 17, kOpenAzimuths = 33;
+  std::vector<Spectrum> open_irradiance_;
+  Spectrum open_irradiance(const Vec3& normal) const;
   const FogSurfaceLight* fog_;
   const FogShadowedSunlight* shadowed_fog_sunlight_;
   std::unique_ptr<FogSurfaceLight::Directions> fog_elements_;  // with `fog_`: its light from each element
