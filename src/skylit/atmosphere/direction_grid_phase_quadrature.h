@@ -14,8 +14,9 @@
 //   S(k, φ) = Σ_m cos(mφ) Σ_k' c_k K_kk'm a_k'm,
 //   K_kk'm = Σ_{j < 2Q} P(μ_k μ_k' + √((1 − μ_k²)(1 − μ_k'²)) cos Δ_j) cos(mΔ_j), Δ_j = πj/Q,
 // with c_k the row's normalisation (the same for every azimuth of band k, by the grid's
-// symmetry). The same sum as the matrix, in K·Q·(2K + 2Q) products per channel
-// instead of (K·Q)²: a quarter at 16 × 8.
+// symmetry). The same sum as the matrix, in K·Q·(K + 2Q) products per channel and
+// phase function instead of (K·Q)²: a quarter at 16 × 8 (the modes of L are shared by
+// both phase functions).
 #pragma once
 
 #include <array>

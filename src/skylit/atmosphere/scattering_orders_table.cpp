@@ -182,7 +182,8 @@ void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c
 // Along one of the grid's rays, every segment's (r, μ) is fixed and only the sun's
 // cosine and azimuth there change with the sun and the ray's azimuth: a segment's S over
 // (μ_s, φ) is blended along altitude and μ (and toward the pole's mean) once, and each
-// of the 256 rays that share the path reads it with 4 corners instead of 16.
+// of the rays that share the path (every sun and azimuth) reads it with 4 corners
+// instead of 16.
 void blend_segment(const std::vector<Table::LogSource>& logs, const RayCoordinates& where, Table::LogSource* plane) {
   auto entry = [&logs](int altitude, int mu_sun, int mu, int azimuth) -> const Table::LogSource& {
     return logs[static_cast<size_t>((altitude * Table::kMuSunSize + mu_sun) * kDirections + mu * Table::kAzimuthSize +

@@ -14,9 +14,10 @@
 // Each order n: radiance L_n at every grid point and direction by integrating
 // σ·S_{n−1} along the ray (and the ground's Lambertian reflection of the order n − 1
 // irradiance where it ends there), then S_n = ∫ P L_n dω by a fixed quadrature over the
-// grid's directions (taken by azimuthal modes: direction_grid_phase_quadrature.h). L_1 is single scattering plus the
-// sunlit ground, computed along the ray exactly as for the sky. Orders past the last computed one are added as the
-// geometric series of the last two (measured ratios < 0.6: docs/atmosphere.md).
+// grid's directions (taken by azimuthal modes: direction_grid_phase_quadrature.h).
+// L_1 is single scattering plus the sunlit ground, computed along the ray exactly as
+// for the sky. Orders past the last computed one are added as the geometric series of
+// the last two (measured ratios < 0.6: docs/atmosphere.md).
 #pragma once
 
 #include <array>

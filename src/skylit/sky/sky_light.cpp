@@ -296,8 +296,9 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
   // that lights the point, the unobstructed light is the fog field's, and what a hidden
   // element changes is seen through the fog in front of its obstacle.
   const bool in_fog = lights_in_fog(point.z);
-  Spectrum irradiance = in_fog ? fog_->irradiance(point, normal) : sky_.sky_irradiance(normal).spectrum();
-  if (!in_fog && !cells_.empty()) irradiance = open_irradiance(normal);
+  Spectrum irradiance = in_fog            ? fog_->irradiance(point, normal)
+                        : !cells_.empty() ? open_irradiance(normal)
+                                          : sky_.sky_irradiance(normal).spectrum();
   const Vec3 origin = offset_from_surface(point, normal);
   const std::vector<SkyElement>& elements = elements_;
   // The rays toward the elements above the surface's horizon, traced together in packet
@@ -386,6 +387,10 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
     if (!edge_ray_of_element.empty() && edge_ray_of_element[i] >= 0) {
       const Cells& c = cells_[i];
       const size_t first = static_cast<size_t>(edge_ray_of_element[i]);
+      // A ninth of the element each, as the open sky counts it. (A sub-cell below the
+      // surface's own horizon meets the surface itself and counts as hidden by it:
+      // counting it as open or with the centre's ray measured worse on Fig. 7, the
+      // cache's 99th percentile against 16,384 directions 2.84 → 3.38 %.)
       for (int k = 0; k + 1 < kSubCells; ++k) {
         const std::optional<Hit>& edge_hit = buffers.edge_hits[first + static_cast<size_t>(k)];
         if (edge_hit)
