@@ -22,10 +22,7 @@ class SpectrumGrid2D {
 
   // At grid coordinates (fx, fy): 0 is the first sample, size − 1 the last.
   Spectrum interpolate(double fx, double fy) const {
-    fx = std::clamp(fx, 0.0, static_cast<double>(size_x_ - 1));
-    fy = std::clamp(fy, 0.0, static_cast<double>(size_y_ - 1));
-    const int x = std::min(static_cast<int>(fx), size_x_ - 2), y = std::min(static_cast<int>(fy), size_y_ - 2);
-    const float a = static_cast<float>(fx - x), b = static_cast<float>(fy - y);
+    const auto [x, y, a, b] = cell_at(fx, fy);
     const Spectrum& p00 = at(x, y);
     const Spectrum& p10 = at(x + 1, y);
     const Spectrum& p01 = at(x, y + 1);
@@ -37,10 +34,7 @@ class SpectrumGrid2D {
   }
   // The same in the given bins alone: out[i] is interpolate(fx, fy)[bins[i]].
   void interpolate_bins(double fx, double fy, std::span<const int> bins, std::span<float> out) const {
-    fx = std::clamp(fx, 0.0, static_cast<double>(size_x_ - 1));
-    fy = std::clamp(fy, 0.0, static_cast<double>(size_y_ - 1));
-    const int x = std::min(static_cast<int>(fx), size_x_ - 2), y = std::min(static_cast<int>(fy), size_y_ - 2);
-    const float a = static_cast<float>(fx - x), b = static_cast<float>(fy - y);
+    const auto [x, y, a, b] = cell_at(fx, fy);
     const Spectrum& p00 = at(x, y);
     const Spectrum& p10 = at(x + 1, y);
     const Spectrum& p01 = at(x, y + 1);
@@ -52,6 +46,19 @@ class SpectrumGrid2D {
   }
 
  private:
+  // The cell holding grid coordinates (fx, fy), clamped to the grid, and the fractions
+  // across it.
+  struct Cell {
+    int x, y;
+    float a, b;
+  };
+  Cell cell_at(double fx, double fy) const {
+    fx = std::clamp(fx, 0.0, static_cast<double>(size_x_ - 1));
+    fy = std::clamp(fy, 0.0, static_cast<double>(size_y_ - 1));
+    const int x = std::min(static_cast<int>(fx), size_x_ - 2), y = std::min(static_cast<int>(fy), size_y_ - 2);
+    return {x, y, static_cast<float>(fx - x), static_cast<float>(fy - y)};
+  }
+
   int size_x_, size_y_;
   std::vector<Spectrum> cells_;
 };
