@@ -108,28 +108,29 @@ double RefractedSunTable::shadow_edge_mu(double r) const {
   return edge_mu_[static_cast<size_t>(j)] * (1 - a) + edge_mu_[static_cast<size_t>(j + 1)] * a;
 }
 
-Spectrum RefractedSunTable::sunlight(double r, double mu_sun) const {
+std::optional<std::pair<double, double>> RefractedSunTable::place(double r, double mu_sun) const {
   r = std::clamp(r, ground_radius_, top_radius_);
   const double edge = shadow_edge_mu(r);
-  if (mu_sun <= edge) return Spectrum(0.0f);
+  if (mu_sun <= edge) return std::nullopt;
   const double x = std::sqrt(std::min(1.0, (mu_sun - edge) / (1.0 - edge)));
   const double fy =
       std::sqrt(std::max(0.0, r * r - ground_radius_ * ground_radius_)) / horizon_distance_ * (kRSize - 1);
-  return transmittance_of(table_.interpolate(x * (kMuSize - 1), fy));
+  return std::pair{x * (kMuSize - 1), fy};
+}
+
+Spectrum RefractedSunTable::sunlight(double r, double mu_sun) const {
+  const auto at = place(r, mu_sun);
+  return at ? transmittance_of(table_.interpolate(at->first, at->second)) : Spectrum(0.0f);
 }
 
 void RefractedSunTable::sunlight_in_bins(double r, double mu_sun, std::span<const int> bins,
                                          std::span<float> out) const {
-  r = std::clamp(r, ground_radius_, top_radius_);
-  const double edge = shadow_edge_mu(r);
-  if (mu_sun <= edge) {
+  const auto at = place(r, mu_sun);
+  if (!at) {
     std::fill(out.begin(), out.end(), 0.0f);
     return;
   }
-  const double x = std::sqrt(std::min(1.0, (mu_sun - edge) / (1.0 - edge)));
-  const double fy =
-      std::sqrt(std::max(0.0, r * r - ground_radius_ * ground_radius_)) / horizon_distance_ * (kRSize - 1);
-  table_.interpolate_bins(x * (kMuSize - 1), fy, bins, out);
+  table_.interpolate_bins(at->first, at->second, bins, out);
   for (float& v : out) v = exp_nonpositive(-v);
 }
 

@@ -8,7 +8,9 @@
 // of the refracted shadow, lower than the straight one's, the table gives 0.
 #pragma once
 
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "skylit/atmosphere/optical_properties.h"
@@ -39,6 +41,8 @@ class RefractedSunTable {
   double horizon_distance_;      // √(top² − ground²)
   std::vector<double> edge_mu_;  // shadow_edge_mu per row
   SpectrumGrid2D table_;         // optical depth − ln(spreading); x: μ_s, y: r
+  // The table's grid coordinates (x, y) of (r, μ_s); none in the refracted shadow.
+  std::optional<std::pair<double, double>> place(double r, double mu_sun) const;
 };
 
 }  // namespace skylit

@@ -129,7 +129,9 @@ Table::LogSource blend(const Table::LogSource& a, const Table::LogSource& b, flo
 }
 
 // S from its interpolated logarithms; 0 at the floor. Every bin through exp first and
-// the floor after, so that both loops vectorise.
+// the floor after, so that both loops vectorise (the logarithms by value: inlined with
+// references the compiler could not rule out that they alias the output, and left the
+// loops scalar: the orders took 159 ms against 114).
 void exp_above_floor(const Bins log_r, const Bins log_a, Bins& out_r, Bins& out_a) {
   for (int k = 0; k < kBins; ++k) {
     out_r[k] = exp_fast(log_r[k]);

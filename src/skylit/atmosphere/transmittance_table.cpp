@@ -102,25 +102,27 @@ Spectrum TransmittanceTable::sun(double r, double mu_sun) const {
 
 void TransmittanceTable::sun_in_bins(double r, double mu_sun, std::span<const int> bins, std::span<float> out) const {
   if (refracted_) return refracted_->sunlight_in_bins(r, mu_sun, bins, out);
-  r = std::clamp(r, ground_radius_, top_radius_);
-  if (shell::hits_ground(r, mu_sun, ground_radius_)) {
+  const auto at = place(r, mu_sun);
+  if (!at) {
     std::fill(out.begin(), out.end(), 0.0f);
     return;
   }
-  const TransmittanceMapping map{ground_radius_, top_radius_, horizon_distance_};
-  double x_mu, x_r;
-  map.to_unit(r, mu_sun, x_mu, x_r);
-  table_.interpolate_bins(x_mu * (kMuSize - 1), x_r * (kRSize - 1), bins, out);
+  table_.interpolate_bins(at->first, at->second, bins, out);
   for (float& v : out) v = exp_nonpositive(-v);
 }
 
-Spectrum TransmittanceTable::to_top(double r, double mu) const {
+std::optional<std::pair<double, double>> TransmittanceTable::place(double r, double mu) const {
   r = std::clamp(r, ground_radius_, top_radius_);
-  if (shell::hits_ground(r, mu, ground_radius_)) return Spectrum(0.0f);
+  if (shell::hits_ground(r, mu, ground_radius_)) return std::nullopt;
   const TransmittanceMapping map{ground_radius_, top_radius_, horizon_distance_};
   double x_mu, x_r;
   map.to_unit(r, mu, x_mu, x_r);
-  return transmittance_of(table_.interpolate(x_mu * (kMuSize - 1), x_r * (kRSize - 1)));
+  return std::pair{x_mu * (kMuSize - 1), x_r * (kRSize - 1)};
+}
+
+Spectrum TransmittanceTable::to_top(double r, double mu) const {
+  const auto at = place(r, mu);
+  return at ? transmittance_of(table_.interpolate(at->first, at->second)) : Spectrum(0.0f);
 }
 
 }  // namespace skylit

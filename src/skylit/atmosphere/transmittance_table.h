@@ -8,7 +8,9 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "skylit/atmosphere/optical_properties.h"
@@ -53,6 +55,8 @@ class TransmittanceTable {
   double horizon_distance_;  // √(top² − ground²): from the ground to the top along the horizon
   SpectrumGrid2D table_;     // optical depth; x: μ, y: r
   std::shared_ptr<const RefractedSunTable> refracted_;  // null: straight rays
+  // The table's grid coordinates (x, y) of a ray from r along μ; none if it meets the ground.
+  std::optional<std::pair<double, double>> place(double r, double mu) const;
 };
 
 }  // namespace skylit

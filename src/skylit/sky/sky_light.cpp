@@ -74,7 +74,6 @@ void SkyLight::find_cells() {
     element_radiance_[i] = total * (1.0f / kSubCells);
   });
   // The open sky's irradiance from the same radiances, over normals.
-  open_irradiance_.assign(static_cast<size_t>(kOpenElevations * kOpenAzimuths), Spectrum(0.0f));
   tbb::parallel_for(0, kOpenElevations * kOpenAzimuths, [&](int g) {
     const int row = g / kOpenAzimuths, column = g % kOpenAzimuths;
     const double elevation = -kPi / 2 + kPi * row / (kOpenElevations - 1);
@@ -85,7 +84,7 @@ void SkyLight::find_cells() {
       const double c = dot(n, elements_[i].direction);
       if (c > 0) e += element_radiance_[i].spectrum() * static_cast<float>(c * elements_[i].solid_angle);
     }
-    open_irradiance_[static_cast<size_t>(g)] = e;
+    open_irradiance_.at(column, row) = e;
   });
   // Elements whose sub-cells differ by more than kVaryingCell × the sky's mean (the
   // aureole, the horizon), and their nearest neighbours.
@@ -123,19 +122,8 @@ Spectrum SkyLight::open_irradiance(const Vec3& normal) const {
   const double elevation = std::asin(std::clamp(normal.z, -1.0, 1.0));
   double azimuth = std::atan2(normal.y, normal.x);
   if (azimuth < 0) azimuth += 2 * kPi;
-  const double fe = (elevation + kPi / 2) / kPi * (kOpenElevations - 1);
-  const double fa = azimuth / (2 * kPi) * (kOpenAzimuths - 1);
-  const int e = std::min(static_cast<int>(fe), kOpenElevations - 2),
-            a = std::min(static_cast<int>(fa), kOpenAzimuths - 2);
-  const float te = static_cast<float>(fe - e), ta = static_cast<float>(fa - a);
-  auto at = [&](int ei, int ai) -> const Spectrum& {
-    return open_irradiance_[static_cast<size_t>(ei * kOpenAzimuths + ai)];
-  };
-  Spectrum out;
-  for (int k = 0; k < kSpectralBins; ++k)
-    out[k] = (1 - te) * ((1 - ta) * at(e, a)[k] + ta * at(e, a + 1)[k]) +
-             te * ((1 - ta) * at(e + 1, a)[k] + ta * at(e + 1, a + 1)[k]);
-  return out;
+  return open_irradiance_.interpolate(azimuth / (2 * kPi) * (kOpenAzimuths - 1),
+                                      (elevation + kPi / 2) / kPi * (kOpenElevations - 1));
 }
 
 Radiance SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const {

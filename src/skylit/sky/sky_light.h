@@ -23,6 +23,7 @@
 #include "skylit/media/fog_shadowed_sunlight.h"
 #include "skylit/media/fog_surface_light.h"
 #include "skylit/sky/band_sources.h"
+#include "skylit/spectrum/spectrum_grid.h"
 
 namespace skylit {
 
@@ -141,7 +142,7 @@ class SkyLight {
   // With cell_means: the open sky's irradiance Σ max(0, n·ω_i) dω_i L̄_i over normals n, on
   // a grid of elevation × azimuth (world frame), read bilinearly.
   static constexpr int kOpenElevations = 17, kOpenAzimuths = 33;
-  std::vector<Spectrum> open_irradiance_;
+  SpectrumGrid2D open_irradiance_{kOpenAzimuths, kOpenElevations};  // x: azimuth, y: elevation
   Spectrum open_irradiance(const Vec3& normal) const;
   const FogSurfaceLight* fog_;
   const FogShadowedSunlight* shadowed_fog_sunlight_;
