@@ -125,13 +125,7 @@ Spectrum RefractedSunTable::sunlight(double r, double mu_sun) const {
 
 void RefractedSunTable::sunlight_in_bins(double r, double mu_sun, std::span<const int> bins,
                                          std::span<float> out) const {
-  const auto at = place(r, mu_sun);
-  if (!at) {
-    std::fill(out.begin(), out.end(), 0.0f);
-    return;
-  }
-  table_.interpolate_bins(at->first, at->second, bins, out);
-  for (float& v : out) v = exp_nonpositive(-v);
+  transmittance_in_bins(table_, place(r, mu_sun), bins, out);
 }
 
 }  // namespace skylit

@@ -102,13 +102,7 @@ Spectrum TransmittanceTable::sun(double r, double mu_sun) const {
 
 void TransmittanceTable::sun_in_bins(double r, double mu_sun, std::span<const int> bins, std::span<float> out) const {
   if (refracted_) return refracted_->sunlight_in_bins(r, mu_sun, bins, out);
-  const auto at = place(r, mu_sun);
-  if (!at) {
-    std::fill(out.begin(), out.end(), 0.0f);
-    return;
-  }
-  table_.interpolate_bins(at->first, at->second, bins, out);
-  for (float& v : out) v = exp_nonpositive(-v);
+  transmittance_in_bins(table_, place(r, mu_sun), bins, out);
 }
 
 std::optional<std::pair<double, double>> TransmittanceTable::place(double r, double mu) const {

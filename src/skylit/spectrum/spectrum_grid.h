@@ -3,9 +3,12 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
+#include "skylit/spectrum/spectral_math.h"
 #include "skylit/spectrum/spectrum.h"
 
 namespace skylit {
@@ -62,6 +65,20 @@ class SpectrumGrid2D {
   int size_x_, size_y_;
   std::vector<Spectrum> cells_;
 };
+
+// e^(−τ) in the given bins of a table of optical depths τ, at the grid coordinates
+// `at` (out[i] for bins[i]); 0 where there are none (the ray meets the ground or lies in
+// the Earth's shadow). The transmittance tables' look-ups in a few bins.
+inline void transmittance_in_bins(const SpectrumGrid2D& optical_depth,
+                                  const std::optional<std::pair<double, double>>& at, std::span<const int> bins,
+                                  std::span<float> out) {
+  if (!at) {
+    std::fill(out.begin(), out.end(), 0.0f);
+    return;
+  }
+  optical_depth.interpolate_bins(at->first, at->second, bins, out);
+  for (float& v : out) v = exp_nonpositive(-v);
+}
 
 class SpectrumGrid3D {
  public:
