@@ -1,17 +1,18 @@
 // ∫ P(ω·ω') L(ω') dω' over the scattering-orders table's grid of directions
 // (atmosphere/scattering_orders_table.h), for a field L that is mirror-symmetric about
-// the sun's vertical: K equal bands of μ, at the middle of each Q azimuths φ_q =
+// the sun's vertical: K bands of μ (of any widths Δμ_k), in each Q azimuths φ_q =
 // π(q + ½)/Q in [0, π], each standing for itself and its mirror image −φ_q.
 //
 // The quadrature is the plain sum S(d) = Σ_e w(d, e) L(e) / Σ_e w(d, e) with w(d, e) =
-// ½ [P(ω_d·ω_e) + P(ω_d·ω_e')] dω (ω_e' the mirror image; each row normalised so that it
-// conserves energy exactly, the aerosol's forward peak being coarse on this grid). It
-// is taken by azimuthal Fourier modes rather than as a matrix: on the full circle the
-// 2Q azimuths are equally spaced, so the sum over azimuths is a circular convolution
-// with a kernel even in the azimuth difference, and a mirror-symmetric field is a sum
-// of cos(mφ), m < Q, on which the convolution acts as one factor per mode:
+// ½ [P(ω_d·ω_e) + P(ω_d·ω_e')] dω_e, dω_e ∝ Δμ_e (ω_e' the mirror image; each row
+// normalised so that it conserves energy exactly, the aerosol's forward peak being
+// coarse on this grid). It is taken by azimuthal Fourier modes rather than as a matrix:
+// on the full circle the 2Q azimuths are equally spaced, so the sum over azimuths is a
+// circular convolution with a kernel even in the azimuth difference, and a
+// mirror-symmetric field is a sum of cos(mφ), m < Q, on which the convolution acts as
+// one factor per mode:
 //   L(k, φ) = Σ_m a_km cos(mφ),
-//   S(k, φ) = Σ_m cos(mφ) Σ_k' c_k K_kk'm a_k'm,
+//   S(k, φ) = Σ_m cos(mφ) Σ_k' c_k Δμ_k' K_kk'm a_k'm,
 //   K_kk'm = Σ_{j < 2Q} P(μ_k μ_k' + √((1 − μ_k²)(1 − μ_k'²)) cos Δ_j) cos(mΔ_j), Δ_j = πj/Q,
 // with c_k the row's normalisation (the same for every azimuth of band k, by the grid's
 // symmetry). The same sum as the matrix, in K·Q·(K + 2Q) products per channel and
@@ -28,9 +29,11 @@ namespace skylit {
 
 class DirectionGridPhaseQuadrature {
  public:
-  // `phase`: the phase function of the scattering angle's cosine, sr⁻¹ (its
-  // normalisation cancels).
-  DirectionGridPhaseQuadrature(int mu_bands, int azimuths, const std::function<double(double)>& phase);
+  // The bands of μ by their directions' μ and their widths in μ (any spacing: each
+  // direction weighs its band's solid angle); `phase`: the phase function of the
+  // scattering angle's cosine, sr⁻¹ (its normalisation cancels).
+  DirectionGridPhaseQuadrature(const std::vector<double>& band_mu, const std::vector<double>& band_width, int azimuths,
+                               const std::function<double(double)>& phase);
 
   // The field's modes a_km ([k·Q + m]) from its values at the grid's directions
   // ([k·Q + q]); the same for every phase function.
