@@ -93,7 +93,7 @@ TEST(DirectionGridPhaseQuadrature, EqualsTheRowNormalisedSumOverTheGrid) {
   std::uniform_real_distribution<double> exponent(-3.0, 0.0);
   const std::function<double(double)> rayleigh = [](double c) { return 3.0 / (16 * kPi) * (1 + c * c); };
   const std::function<double(double)> forward = [](double c) { return henyey_greenstein(c, 0.85); };
-  // Equal bands of μ and bands crowded toward the horizon (as the table's are).
+  // Equal bands of μ and unequal ones (crowded toward the horizon; any widths will do).
   for (const auto& [mu_bands, azimuths, crowding] :
        {std::tuple{16, 8, 0.0}, std::tuple{10, 6, 0.0}, std::tuple{16, 8, 1.0}})
     for (const auto* phase : {&rayleigh, &forward}) {

@@ -594,10 +594,11 @@ TEST(MultipleScattering, ScatteringOrdersMatchTheSunlitLineEstimatorAtTwilight) 
   // dome, here at −4° and −8° against the sunlit-line estimator (the collision
   // estimator's σ there is 2.2–9.7 % and up to 99 %). Tolerance: 5 % plus 2σ of its
   // orders ≥ 2 (the seeds are fixed: a result that passes keeps passing). Measured
-  // (2026-12-05): −2.1 ± 0.4 … +0.2 ± 0.2 % at −4°, −7.1 ± 3.9 … +8.9 ± 2.8 % at −8°;
-  // with 16 times these paths (σ 1.0–2.6 %) every view at −8° is within −2.7 … +5.2 %.
+  // (2026-12-05): −2.1 ± 0.7 … +0.4 ± 0.4 % at −4°, −7.1 ± 3.9 … +8.9 ± 2.8 % at −8°;
+  // with four times these paths (819,200 per view, σ 1.0–2.6 %) every view at −8° is
+  // within −2.7 … +5.2 %.
   // Equal bands of μ instead of the ones crowded toward the horizon and the poles failed
-  // it: −12.0 ± 2.5 % at −8° (−13.3 ± 1.1 % with 16 times the paths).
+  // it: −12.0 ± 2.5 % at −8° (−13.3 ± 1.1 % with four times the paths).
   const MonteCarloResults& mc = monte_carlo();
   for (size_t l = 2; l < kLineSuns.size(); ++l)
     for (int b = 0; b < 2; ++b)

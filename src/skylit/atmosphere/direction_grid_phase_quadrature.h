@@ -47,7 +47,7 @@ class DirectionGridPhaseQuadrature {
   int mu_bands_, azimuths_;
   std::vector<float> analysis_;   // [m·Q + q]: (m = 0 ? 1 : 2)/Q · cos(mφ_q)
   std::vector<float> synthesis_;  // [p·Q + m]: cos(mφ_p)
-  std::vector<float> kernel_;     // [(k·K + k')·Q + m]: c_k K_kk'm
+  std::vector<float> kernel_;     // [(k·K + k')·Q + m]: c_k Δμ_k' K_kk'm
 };
 
 template <size_t N>

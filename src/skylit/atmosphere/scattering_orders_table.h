@@ -33,9 +33,9 @@ struct AerosolSettings;
 class ScatteringOrdersTable {
  public:
   // Grid: altitude ∝ x³ (dense near the ground, where the aerosols are), μ_s crowded
-  // toward the horizon (the terminator), directions in bands of μ twice as fine at the
-  // horizon and the poles as at μ = ±½ (below the sun at −8° equal bands left views low
-  // in the sky up to 13 % too dark: the .cpp) and equal bands of φ. 48 sun cosines
+  // toward the horizon (the terminator), directions in bands of μ about twice as fine as
+  // equal bands at the horizon and the poles (below the sun at −8° equal bands left
+  // views low in the sky up to 13 % too dark: the .cpp) and equal bands of φ. 48 sun cosines
   // rather than 32: across the terminator the light changes by orders of magnitude
   // between rows, and 32 left the sky at −2° to −4° up to 4–8 % too dark against the
   // Monte Carlo reference; 64 gain about a point more at −4° and −5°, at a third more

@@ -48,9 +48,9 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
 }
 
 void SkyLight::find_cells() {
-  // Each element's 3 × 3 sub-cells, a third of its width each, and the sky's mean
-  // radiance over each from 4 × 4 samples; the element's radiance is their mean, each
-  // weighed by its share of the element.
+  // Each element's 3 × 3 sub-cells, a third of its width wide and (but where the
+  // horizon crosses it) a third tall, and the sky's mean radiance over each from 4 × 4
+  // samples; the element's radiance is their mean, each weighed by its share of it.
   cells_.resize(elements_.size());
   tbb::parallel_for(size_t{0}, elements_.size(), [&](size_t i) {
     const Vec3& d = elements_[i].direction;

@@ -72,8 +72,9 @@ class SkyLight {
   // of 4 × 4 samples), the open sky's irradiance is summed from the same means (a table
   // over normals) rather than the sky model's table, and where an obstacle's outline
   // crosses an element whose sub-cells differ by more than kVaryingCell × the sky's mean
-  // (the sun's aureole, the horizon), its sub-cells are traced apart, each hidden one
-  // taking out its own mean. The open sky and what obstacles hide then come from the
+  // (the sun's aureole, the horizon), or that the horizon crosses (its rows laid so
+  // that the horizon is a bound between them), its sub-cells are traced apart, each
+  // hidden one taking out its own mean (`refined`). The open sky and what obstacles hide then come from the
   // same radiances: from the table's 2,048 point samples and the elements' centres,
   // a block whose top passed near a low sun took out whole 6° elements of the aureole,
   // ±3–5 % of a wall's sky light from one metre to the next (docs/sky-light.md).
@@ -127,9 +128,9 @@ class SkyLight {
 
   std::vector<SkyElement> elements_;
   std::vector<Radiance> element_radiance_;
-  // With cell_means: per element its sub-cells (directions, the centre last; mean
-  // radiances), whether they differ enough to be traced apart, and then its nearest
-  // neighbours (to find the outlines that cross it).
+  // With cell_means: per element its sub-cells (directions, the middle one last: the
+  // element's own direction unless the horizon crosses it; mean radiances; shares), whether they differ enough to be
+  // traced apart, and then its nearest neighbours (to find the outlines that cross it).
   static constexpr int kNeighbours = 6, kSubCells = 9;
   struct Cells {
     std::array<Vec3, kSubCells> directions;
