@@ -47,8 +47,10 @@ class ScatteringOrdersTable {
   // 30° and 60° and 0.5 at 0°, with the rows (docs/atmosphere.md).
   static constexpr int kOrders = 3;
   // Multiply scattered light is smooth in wavelength: it is computed in 8 of the 40
-  // bins, spread evenly, and interpolated linearly between them (λ^−4 curves by 0.5 %
-  // over the 25 nm between them).
+  // bins, spread evenly (50–60 nm apart), and interpolated linearly between them: S per
+  // unit solar irradiance is far flatter than λ^−4, and against all 40 bins computed the
+  // sky's zenith radiance and diffuse irradiance move by at most 0.2 % at 5°, 0.5 % at
+  // −3° and 0.9 % at −6° (near 495 nm; measured 2026-12-05).
   static constexpr int kBins = 8;
   using Bins = std::array<float, kBins>;
 
