@@ -333,12 +333,22 @@ struct MonteCarloResults {
 };
 
 // Prints the measurements quoted above when SKYLIT_REPORT is set (run
-// --gtest_filter=MultipleScattering.* with SKYLIT_REPORT=1).
+// --gtest_filter=MultipleScattering.* with SKYLIT_REPORT=1; printed by the first test
+// that reads the sunlit-line estimator).
 void print_report(const MonteCarloResults& mc);
 
-const MonteCarloResults& monte_carlo() {
-  static const MonteCarloResults results = [] {
-    static const Atmosphere atmosphere(AtmosphereSettings{}, monte_carlo_bands());
+const Atmosphere& monte_carlo_atmosphere() {
+  static const Atmosphere atmosphere(AtmosphereSettings{}, monte_carlo_bands());
+  return atmosphere;
+}
+
+// The collision estimator's results and the models' values; with `with_line` also the
+// sunlit-line estimator's, traced only for the tests that read them: at four times the
+// collision estimator's paths it takes about 20 s on two threads, which the tests of
+// the collision estimator alone need not pay (each runs in its own process under CTest).
+const MonteCarloResults& monte_carlo(bool with_line = false) {
+  static MonteCarloResults results = [] {
+    const Atmosphere& atmosphere = monte_carlo_atmosphere();
     AtmosphereSettings hillaire_settings;
     hillaire_settings.multiple_scattering = MultipleScatteringMethod::hillaire;
     static const Atmosphere hillaire(hillaire_settings, monte_carlo_bands());
@@ -346,15 +356,11 @@ const MonteCarloResults& monte_carlo() {
     const ScatteringIntegrator single(atmosphere.medium(), atmosphere.transmittance(), nullptr, nullptr,
                                       settings.aerosol, settings.ground_albedo);
     const MonteCarloSky sky(atmosphere);
-    std::vector<double> line_suns;
-    for (int s : kLineSuns) line_suns.push_back(kSunElevationsDeg[static_cast<size_t>(s)]);
-    const test_reference::SunlitLineSky line_sky(atmosphere, line_suns);
     MonteCarloResults r;
     for (int b = 0; b < 2; ++b) {
       const int bin = b == 0 ? kBlue : kRed;
       for (size_t v = 0; v < kViews.size(); ++v) {
         ViewResult& result = r.views[b][v] = sky.run(bin, static_cast<int>(v));
-        r.line[b][v] = run_line_estimator(line_sky, bin, static_cast<int>(v));
         for (int s = 0; s < kSuns; ++s) {
           result.model_single[s] =
               model_value(single, atmosphere.ground_radius(), bin, kViews[v], kSunElevationsDeg[s]);
@@ -365,9 +371,19 @@ const MonteCarloResults& monte_carlo() {
         }
       }
     }
-    if (std::getenv("SKYLIT_REPORT")) print_report(r);
     return r;
   }();
+  static bool line_traced = false;
+  if (with_line && !line_traced) {
+    std::vector<double> line_suns;
+    for (int s : kLineSuns) line_suns.push_back(kSunElevationsDeg[static_cast<size_t>(s)]);
+    const test_reference::SunlitLineSky line_sky(monte_carlo_atmosphere(), line_suns);
+    for (int b = 0; b < 2; ++b)
+      for (size_t v = 0; v < kViews.size(); ++v)
+        results.line[b][v] = run_line_estimator(line_sky, b == 0 ? kBlue : kRed, static_cast<int>(v));
+    line_traced = true;
+    if (std::getenv("SKYLIT_REPORT")) print_report(results);
+  }
   return results;
 }
 
@@ -562,7 +578,7 @@ TEST(MultipleScattering, SunlitLineEstimatorAgreesWithTheCollisionEstimator) {
   // 0° where the collision estimator converges: their difference is within 4 standard
   // errors of the difference (σ of both combined; a false alarm once in ~16,000
   // comparisons). Measured: within 2.0σ in all 24.
-  const MonteCarloResults& mc = monte_carlo();
+  const MonteCarloResults& mc = monte_carlo(true);
   for (size_t l = 0; l < 2; ++l)
     for (int b = 0; b < 2; ++b)
       for (size_t v = 0; v < kViews.size(); ++v) {
@@ -579,7 +595,7 @@ TEST(MultipleScattering, SunlitLineFirstOrderMatchesSingleScattering) {
   // checks its sampling of the sunlit line. Tolerance as for the collision estimator's
   // first order: 4σ plus 1 % for the integrator's quadrature. Measured: within 0.6 %,
   // the horizontal plane at −8° +2.0/−2.8 % (σ 1.8/1.4 %).
-  const MonteCarloResults& mc = monte_carlo();
+  const MonteCarloResults& mc = monte_carlo(true);
   for (size_t l = 0; l < kLineSuns.size(); ++l)
     for (int b = 0; b < 2; ++b)
       for (size_t v = 0; v < kViews.size(); ++v) {
@@ -599,7 +615,7 @@ TEST(MultipleScattering, ScatteringOrdersMatchTheSunlitLineEstimatorAtTwilight) 
   // within −2.7 … +5.2 %.
   // Equal bands of μ instead of the ones crowded toward the horizon and the poles failed
   // it: −12.0 ± 2.5 % at −8° (−13.3 ± 1.1 % with four times the paths).
-  const MonteCarloResults& mc = monte_carlo();
+  const MonteCarloResults& mc = monte_carlo(true);
   for (size_t l = 2; l < kLineSuns.size(); ++l)
     for (int b = 0; b < 2; ++b)
       for (size_t v = 0; v < kViews.size(); ++v) {
