@@ -1,4 +1,6 @@
 // `skylit spectrum`: direct, diffuse and zenith spectra at 1 nm from the atmosphere model.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -6,7 +8,9 @@
 #include "atmosphere_options.h"
 #include "commands.h"
 #include "skylit/atmosphere/solar_spectrum.h"
+#include "skylit/core/angles.h"
 #include "skylit/figures/plot.h"
+#include "skylit/spectrum/cie.h"
 
 namespace skylit::cli {
 
@@ -40,12 +44,33 @@ void write_spectrum_plot(const std::vector<SolarSpectrumSample>& samples, const 
   write_plot(plot, args.plot);
 }
 
+// The spectra's photometric sums (683 lm/W × Σ ȳ(λ) · 1 nm): what a lighting designer
+// reads first, printed when neither the CSV nor a plot is asked for.
+void print_illuminances(const std::vector<SolarSpectrumSample>& samples, const SpectrumArguments& args) {
+  double direct = 0, diffuse = 0, zenith = 0;
+  for (const SolarSpectrumSample& s : samples) {
+    const double y = cie1931().y(s.wavelength_nm) * kMaxLuminousEfficacy;
+    direct += y * s.direct_normal;
+    diffuse += y * s.diffuse_horizontal;
+    zenith += y * s.zenith_radiance;
+  }
+  const double seen_altitude = radians(args.atmosphere.sun_altitude_deg);
+  const double global = diffuse + direct * std::max(0.0, std::sin(seen_altitude));
+  std::printf("sun seen at %.2f° (%s model, aod550 %.3g)\n", args.atmosphere.sun_altitude_deg,
+              args.atmosphere.model.c_str(), args.atmosphere.settings.aerosol.aod_550);
+  std::printf("direct normal illuminance       %.6g lx\n", direct);
+  std::printf("diffuse horizontal illuminance  %.6g lx\n", diffuse);
+  std::printf("global horizontal illuminance   %.6g lx\n", global);
+  std::printf("zenith luminance                %.6g cd/m²\n", zenith);
+}
+
 int run_spectrum(const SpectrumArguments& args) {
   const std::vector<SolarSpectrumSample> samples =
       solar_spectrum(atmosphere_settings(args.atmosphere),
                      direction_from_altitude_azimuth(args.atmosphere.sun_altitude_deg, args.atmosphere.sun_azimuth_deg),
                      args.atmosphere.observer_altitude_m);
   if (!args.plot.empty()) write_spectrum_plot(samples, args);
+  if (!args.csv && args.plot.empty()) print_illuminances(samples, args);
   if (args.csv) {
     std::printf("wavelength_nm,direct_normal_W_m2_nm,diffuse_horizontal_W_m2_nm,zenith_radiance_W_m2_sr_nm\n");
     for (const SolarSpectrumSample& s : samples)
@@ -59,7 +84,9 @@ int run_spectrum(const SpectrumArguments& args) {
 CommandRunner add_spectrum_command(CLI::App& app) {
   auto args = std::make_shared<SpectrumArguments>();
   CLI::App* spectrum = app.add_subcommand(
-      "spectrum", "Direct normal and diffuse horizontal irradiance and zenith radiance, 380–780 nm at 1 nm.");
+      "spectrum",
+      "Direct normal and diffuse horizontal irradiance and zenith radiance, 380–780 nm at 1 nm (without --csv or "
+      "--plot: their illuminances and luminance).");
   add_atmosphere_options(spectrum, args->atmosphere);
   spectrum->add_flag("--csv", args->csv,
                      "Print CSV: wavelength_nm, direct_normal_W_m2_nm, diffuse_horizontal_W_m2_nm, "

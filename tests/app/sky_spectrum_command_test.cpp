@@ -6,6 +6,7 @@
 #include "../test_support.h"
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/atmosphere/seen_sun.h"
+#include "skylit/spectrum/cie.h"
 
 namespace skylit {
 namespace {
@@ -54,6 +55,39 @@ TEST(SpectrumCommand, CsvHasEveryNanometreAndMatchesTheModel) {
   // The command's altitude is the sun as seen; direct_sun_exact takes the true one.
   const double true_elevation = SunRefraction(atmosphere).true_elevation(radians(60.0));
   EXPECT_NEAR(direct_550, atmosphere.direct_sun_exact(1.6, true_elevation)[0], 1e-5 * direct_550 + 1e-6);
+}
+
+TEST(SpectrumCommand, WithoutCsvOrPlotPrintsTheIlluminances) {
+  // The summary's illuminances are the CSV's spectra summed against ȳ at 1 nm × 683 lm/W,
+  // the global one the diffuse plus the direct beam on the horizontal from the seen sun.
+  const auto summary = run_skylit("spectrum --sun-altitude 30");
+  const auto csv = run_skylit("spectrum --sun-altitude 30 --csv");
+  ASSERT_EQ(summary.exit_status, 0) << summary.output;
+  ASSERT_EQ(csv.exit_status, 0) << csv.output;
+  double direct = 0, diffuse = 0, zenith = 0;
+  std::istringstream lines(csv.output);
+  std::string line;
+  std::getline(lines, line);
+  while (std::getline(lines, line)) {
+    double nm, e_direct, e_diffuse, l_zenith;
+    char c1, c2, c3;
+    std::istringstream row(line);
+    ASSERT_TRUE(row >> nm >> c1 >> e_direct >> c2 >> e_diffuse >> c3 >> l_zenith) << line;
+    const double y = cie1931().y(nm) * kMaxLuminousEfficacy;
+    direct += y * e_direct;
+    diffuse += y * e_diffuse;
+    zenith += y * l_zenith;
+  }
+  auto value = [&](const std::string& label) {
+    const size_t at = summary.output.find(label);
+    EXPECT_NE(at, std::string::npos) << label << " in " << summary.output;
+    return at == std::string::npos ? 0.0 : std::stod(summary.output.substr(at + label.size()));
+  };
+  // The CSV's values carry 6 significant digits: 1e-5 relative.
+  EXPECT_NEAR(value("direct normal illuminance"), direct, 1e-5 * direct);
+  EXPECT_NEAR(value("diffuse horizontal illuminance"), diffuse, 1e-5 * diffuse);
+  EXPECT_NEAR(value("global horizontal illuminance"), diffuse + 0.5 * direct, 1e-5 * (diffuse + direct));
+  EXPECT_NEAR(value("zenith luminance"), zenith, 1e-5 * zenith);
 }
 
 TEST(SpectrumCommand, PlotIsWritten) {
