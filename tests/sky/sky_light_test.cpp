@@ -125,6 +125,23 @@ TEST(SkyLight, UnobstructedIrradianceMatchesADenseQuadratureOfTheSky) {
   }
 }
 
+// The illuminance (lx) on a surface at `point` facing `n` from 262,144 directions summed
+// directly, without any table: each sees the sky or, where the tracer meets something,
+// radiance `hidden`.
+double dense_illuminance(const SkyModel& sky, const RayTracer& tracer, const Vec3& point, const Vec3& n,
+                         const Radiance& hidden) {
+  static const std::vector<SkyElement> dense = fibonacci_sphere(262144);
+  Spectrum sum;
+  for (const SkyElement& e : dense) {
+    const double c = dot(n, e.direction);
+    if (c <= 0) continue;
+    const bool hit = tracer.occluded(Ray{offset_from_surface(point, n), e.direction});
+    sum +=
+        (hit ? hidden : sky.sky_radiance_near_ground(e.direction)).spectrum() * static_cast<float>(c * e.solid_angle);
+  }
+  return illuminance(Irradiance(sum));
+}
+
 TEST(SkyLight, AnOutlineAcrossTheAureoleTakesOutTheSkyItHides) {
   // A south wall facing a low sun (17°) across a 50 m street from a long black block
   // whose top passes 3° above the sun: the block hides the aureole up to its edge, and
@@ -142,17 +159,10 @@ TEST(SkyLight, AnOutlineAcrossTheAureoleTakesOutTheSkyItHides) {
                        true);
   const SkyLight plain(sky, tracer, black_obstacle);
   const Vec3 south{0, -1, 0};
-  const std::vector<SkyElement> dense = fibonacci_sphere(262144);
   double worst_cells = 0, worst_plain = 0;
   for (int step = 0; step < 12; ++step) {
     const Vec3 point{0.37 * step, 0, 1.0 + 0.5 * step};
-    Spectrum sum;
-    for (const SkyElement& e : dense) {
-      const double c = dot(south, e.direction);
-      if (c <= 0 || tracer.occluded(Ray{offset_from_surface(point, south), e.direction})) continue;
-      sum += sky.sky_radiance_near_ground(e.direction).spectrum() * static_cast<float>(c * e.solid_angle);
-    }
-    const double truth = illuminance(Irradiance(sum));
+    const double truth = dense_illuminance(sky, tracer, point, south, Radiance(0.0f));
     worst_cells = std::max(worst_cells, std::abs(illuminance(cells.diffuse_irradiance(point, south)) / truth - 1));
     worst_plain = std::max(worst_plain, std::abs(illuminance(plain.diffuse_irradiance(point, south)) / truth - 1));
   }
@@ -180,20 +190,11 @@ TEST(SkyLight, AWallAboveTheGroundKeepsTheSkyAboveTheHorizon) {
   const auto ground_light = [&](const Ray&, const Hit&) { return ObstacleLight(ground); };
   const SkyLight cells(sky, tracer, ground_light, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr,
                        true);
-  const std::vector<SkyElement> dense = fibonacci_sphere(262144);
   double worst = 0;
   for (const Vec3 n : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{-1, 0, 0}, Vec3{0, -1, 0}})
     for (const double height : {2.0, 20.0}) {
       const Vec3 point = height * Vec3{0, 0, 1};
-      Spectrum sum;
-      for (const SkyElement& e : dense) {
-        const double c = dot(n, e.direction);
-        if (c <= 0) continue;
-        const bool hidden = tracer.occluded(Ray{offset_from_surface(point, n), e.direction});
-        sum += (hidden ? ground : sky.sky_radiance_near_ground(e.direction)).spectrum() *
-               static_cast<float>(c * e.solid_angle);
-      }
-      const double truth = illuminance(Irradiance(sum));
+      const double truth = dense_illuminance(sky, tracer, point, n, ground);
       worst = std::max(worst, std::abs(illuminance(cells.diffuse_irradiance(point, n)) / truth - 1));
     }
   std::cout << "worst against 262,144 directions: " << worst << "\n";

@@ -35,11 +35,11 @@ class ScatteringOrdersTable {
   // Grid: altitude ∝ x³ (dense near the ground, where the aerosols are), μ_s crowded
   // toward the horizon (the terminator), directions in bands of μ about twice as fine as
   // equal bands at the horizon and the poles (below the sun at −8° equal bands left
-  // views low in the sky up to 13 % too dark: the .cpp) and equal bands of φ. 48 sun cosines
-  // rather than 32: across the terminator the light changes by orders of magnitude
-  // between rows, and 32 left the sky at −2° to −4° up to 4–8 % too dark against the
-  // Monte Carlo reference; 64 gain about a point more at −4° and −5°, at a third more
-  // build time (docs/atmosphere.md).
+  // views low in the sky up to 13 % too dark: the .cpp) and equal bands of φ. 48 sun
+  // cosines rather than 32: across the terminator the light changes by orders of
+  // magnitude between rows, and 32 left the sky at −2° to −4° up to 4–8 % too dark
+  // against the Monte Carlo reference; 64 gain about a point more at −4° and −5°, at a
+  // third more build time (docs/atmosphere.md).
   static constexpr int kAltitudeSize = 12, kMuSunSize = 48, kMuSize = 16, kAzimuthSize = 8;
   static constexpr int kSegments = 16;  // along each ray, crowded where it is lowest
   // Orders computed; the rest by the geometric tail of the last two. Three rather than

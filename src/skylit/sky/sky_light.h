@@ -138,6 +138,9 @@ class SkyLight {
     std::array<float, kSubCells> share;  // of the element's solid angle (1/9 unless it straddles the horizon)
     bool varying = false;
     bool straddles_horizon = false;  // the horizon crosses it: a bound between its rows
+    // Rays traced apart for its sub-cells: all nine, or eight where the middle one's is
+    // the element's own (where the horizon does not cross it).
+    int traced_sub_cells() const { return straddles_horizon ? kSubCells : kSubCells - 1; }
     std::array<uint32_t, kNeighbours> neighbours{};
   };
   std::vector<Cells> cells_;
