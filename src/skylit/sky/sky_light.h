@@ -142,6 +142,31 @@ class SkyLight {
     // the element's own (where the horizon does not cross it).
     int traced_sub_cells() const { return straddles_horizon ? kSubCells : kSubCells - 1; }
     std::array<uint32_t, kNeighbours> neighbours{};
+    // The sub-cells' grid: three columns (u = −1, 0, 1) of three rows, whose bounds
+    // `rows` are along `across_v` (vertical) in units of a sub-cell's width; the
+    // direction at (u, v) is normalize(element + u·across_u + v·across_v).
+    std::array<double, 4> rows{};
+    Vec3 across_u, across_v;
+    Vec3 toward(const Vec3& element, double u, double v) const {
+      return normalize(element + u * across_u + v * across_v);
+    }
+  };
+  // The slot of the sub-cell in column u + 1, row r (find_cells' order: the middle last).
+  static constexpr std::array<std::array<int, 3>, 3> kSlot{{{0, 1, 2}, {3, 8, 4}, {5, 6, 7}}};
+  // Where two rows of a column disagree (one hidden, one not), an outline crosses the
+  // column between their centres: it is found by this many bisections (to an eighth of
+  // the distance), and the hidden part of each sub-cell counted to there. Counted whole,
+  // a roof's edge seen near the horizon (parallel to the rows laid along it) hid or
+  // showed a whole row of sub-cells at once: steps of 2–2.5 % in a wall's sky light
+  // every few metres of height (docs/sky-light.md).
+  static constexpr int kOutlineBisections = 3;
+  // An outline crossing column `column` (0–2) of an element between the centres of rows
+  // `lower_row` and the one above: it lies between v = low and high.
+  struct OutlineCrossing {
+    uint32_t element;
+    int column, lower_row;
+    bool lower_hidden;
+    double low, high;
   };
   std::vector<Cells> cells_;
   void find_cells();
