@@ -1,6 +1,7 @@
 #include "skylit/sky/sky_light.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -50,7 +51,8 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
 void SkyLight::find_cells() {
   // Each element's 3 × 3 sub-cells, a third of its width wide and (but where the
   // horizon crosses it) a third tall, and the sky's mean radiance over each from 4 × 4
-  // samples; the element's radiance is their mean, each weighed by its share of it.
+  // samples; the element's radiance is their mean, each weighed by its share of it
+  // (its height / 9).
   cells_.resize(elements_.size());
   tbb::parallel_for(size_t{0}, elements_.size(), [&](size_t i) {
     const Vec3& d = elements_[i].direction;
@@ -82,13 +84,13 @@ void SkyLight::find_cells() {
         const double low = rows[static_cast<size_t>(r)], high = rows[static_cast<size_t>(r) + 1];
         const size_t slot = (u == 0 && r == 1) ? kSubCells - 1 : static_cast<size_t>(next++);
         c.directions[slot] = across(u, 0.5 * (low + high));
-        c.share[slot] = static_cast<float>((high - low) / 9);
+
         Radiance mean;
         for (int a = 0; a < 4; ++a)
           for (int b = 0; b < 4; ++b)
             mean += sky_.sky_radiance_near_ground(across(u + (a - 1.5) / 4, low + (b + 0.5) / 4 * (high - low)));
         c.radiance[slot] = mean * (1.0f / 16);
-        total += c.radiance[slot] * c.share[slot];
+        total += c.radiance[slot] * static_cast<float>((high - low) / 9);  // its share of the element
       }
     element_radiance_[i] = total;
   });
@@ -383,13 +385,15 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
   // centres, by bisection (kOutlineBisections rounds, each round's rays traced together).
   std::vector<OutlineCrossing>& crossings = buffers.crossings;
   crossings.clear();
-  for (size_t i = 0; by_cells && i < elements.size(); ++i) {
+  for (size_t i = 0; !buffers.edge_rays.empty() && i < elements.size(); ++i) {
     if (edge_ray_of_element[i] < 0) continue;
     const Cells& c = cells_[i];
     for (int u = 0; u < 3; ++u)
       for (int r = 0; r < 2; ++r) {
-        const bool lower_hidden = sub_cell(i, kSlot[u][r]).second->has_value();
-        if (lower_hidden == sub_cell(i, kSlot[u][r + 1]).second->has_value()) continue;
+        const bool lower_hidden =
+            sub_cell(i, kSlot[static_cast<size_t>(u)][static_cast<size_t>(r)]).second->has_value();
+        if (lower_hidden == sub_cell(i, kSlot[static_cast<size_t>(u)][static_cast<size_t>(r) + 1]).second->has_value())
+          continue;
         crossings.push_back({static_cast<uint32_t>(i), u, r, lower_hidden,
                              0.5 * (c.rows[static_cast<size_t>(r)] + c.rows[static_cast<size_t>(r) + 1]),
                              0.5 * (c.rows[static_cast<size_t>(r) + 1] + c.rows[static_cast<size_t>(r) + 2])});
@@ -477,6 +481,7 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
     }
     if (hit) add_hidden(i, ray, *hit, obstacle_radiance_(ray, *hit), w, element_radiance_[i]);
   }
+  assert(next_crossing == crossings.size());  // every outline found was counted
   // In a building's shadow the fog along many of the point's directions lies in the
   // shadow too and scatters no sunlight toward it (media/fog_shadowed_sunlight.h); given
   // to the points' own integrals only (the constructor).

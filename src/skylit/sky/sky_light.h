@@ -74,7 +74,8 @@ class SkyLight {
   // crosses an element whose sub-cells differ by more than kVaryingCell × the sky's mean
   // (the sun's aureole, the horizon), or that the horizon crosses (its rows laid so
   // that the horizon is a bound between them), its sub-cells are traced apart, each
-  // hidden one taking out its own mean (`refined`). The open sky and what obstacles hide then come from the
+  // hidden one taking out its own mean up to the outline found between it and an open
+  // neighbour in its column (`refined`, kOutlineBisections). The open sky and what obstacles hide then come from the
   // same radiances: from the table's 2,048 point samples and the elements' centres,
   // a block whose top passed near a low sun took out whole 6° elements of the aureole,
   // ±3–5 % of a wall's sky light from one metre to the next (docs/sky-light.md).
@@ -129,13 +130,12 @@ class SkyLight {
   std::vector<SkyElement> elements_;
   std::vector<Radiance> element_radiance_;
   // With cell_means: per element its sub-cells (directions, the middle one last: the
-  // element's own direction unless the horizon crosses it; mean radiances; shares), whether they differ enough to be
-  // traced apart, and then its nearest neighbours (to find the outlines that cross it).
+  // element's own direction unless the horizon crosses it; mean radiances; the rows' bounds), whether they differ
+  // enough to be traced apart, and then its nearest neighbours (to find the outlines that cross it).
   static constexpr int kNeighbours = 6, kSubCells = 9;
   struct Cells {
     std::array<Vec3, kSubCells> directions;
     std::array<Radiance, kSubCells> radiance;
-    std::array<float, kSubCells> share;  // of the element's solid angle (1/9 unless it straddles the horizon)
     bool varying = false;
     bool straddles_horizon = false;  // the horizon crosses it: a bound between its rows
     // Rays traced apart for its sub-cells: all nine, or eight where the middle one's is
@@ -144,7 +144,9 @@ class SkyLight {
     std::array<uint32_t, kNeighbours> neighbours{};
     // The sub-cells' grid: three columns (u = −1, 0, 1) of three rows, whose bounds
     // `rows` are along `across_v` (vertical) in units of a sub-cell's width; the
-    // direction at (u, v) is normalize(element + u·across_u + v·across_v).
+    // direction at (u, v) is normalize(element + u·across_u + v·across_v). A sub-cell's
+    // share of the element's solid angle is its height / 9 (1/9 unless the horizon
+    // crosses the element).
     std::array<double, 4> rows{};
     Vec3 across_u, across_v;
     Vec3 toward(const Vec3& element, double u, double v) const {
@@ -158,14 +160,14 @@ class SkyLight {
   // the distance), and the hidden part of each sub-cell counted to there. Counted whole,
   // a roof's edge seen near the horizon (parallel to the rows laid along it) hid or
   // showed a whole row of sub-cells at once: steps of 2–2.5 % in a wall's sky light
-  // every few metres of height (docs/sky-light.md).
+  // every two metres of height on Fig. 7's tower (docs/sky-light.md).
   static constexpr int kOutlineBisections = 3;
   // An outline crossing column `column` (0–2) of an element between the centres of rows
   // `lower_row` and the one above: it lies between v = low and high.
   struct OutlineCrossing {
     uint32_t element;
     int column, lower_row;
-    bool lower_hidden;
+    bool lower_hidden;  // the lower row's ray met an obstacle (the upper's did not)
     double low, high;
   };
   std::vector<Cells> cells_;
