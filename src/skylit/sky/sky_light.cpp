@@ -80,11 +80,10 @@ void SkyLight::find_cells() {
     int next = 0;
     Radiance total;
     for (int u = -1; u <= 1; ++u)
-      for (int r = 0; r < 3; ++r) {
-        const double low = rows[static_cast<size_t>(r)], high = rows[static_cast<size_t>(r) + 1];
+      for (size_t r = 0; r < 3; ++r) {
+        const double low = rows[r], high = rows[r + 1];
         const size_t slot = (u == 0 && r == 1) ? kSubCells - 1 : static_cast<size_t>(next++);
-        c.directions[slot] = across(u, 0.5 * (low + high));
-
+        c.directions[slot] = across(u, c.centre(r));
         Radiance mean;
         for (int a = 0; a < 4; ++a)
           for (int b = 0; b < 4; ++b)
@@ -388,22 +387,19 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
   for (size_t i = 0; !buffers.edge_rays.empty() && i < elements.size(); ++i) {
     if (edge_ray_of_element[i] < 0) continue;
     const Cells& c = cells_[i];
-    for (int u = 0; u < 3; ++u)
-      for (int r = 0; r < 2; ++r) {
-        const bool lower_hidden =
-            sub_cell(i, kSlot[static_cast<size_t>(u)][static_cast<size_t>(r)]).second->has_value();
-        if (lower_hidden == sub_cell(i, kSlot[static_cast<size_t>(u)][static_cast<size_t>(r) + 1]).second->has_value())
-          continue;
-        crossings.push_back({static_cast<uint32_t>(i), u, r, lower_hidden,
-                             0.5 * (c.rows[static_cast<size_t>(r)] + c.rows[static_cast<size_t>(r) + 1]),
-                             0.5 * (c.rows[static_cast<size_t>(r) + 1] + c.rows[static_cast<size_t>(r) + 2])});
+    for (size_t u = 0; u < 3; ++u)
+      for (size_t r = 0; r < 2; ++r) {
+        const bool lower_hidden = sub_cell(i, kSlot[u][r]).second->has_value();
+        if (lower_hidden == sub_cell(i, kSlot[u][r + 1]).second->has_value()) continue;
+        crossings.push_back({static_cast<uint32_t>(i), u, r, lower_hidden, c.centre(r), c.centre(r + 1)});
       }
   }
   for (int round = 0; round < kOutlineBisections && !crossings.empty(); ++round) {
     buffers.bisection_rays.clear();
     for (const OutlineCrossing& x : crossings)
       buffers.bisection_rays.push_back(
-          Ray{origin, cells_[x.element].toward(elements[x.element].direction, x.column - 1, 0.5 * (x.low + x.high))});
+          Ray{origin, cells_[x.element].toward(elements[x.element].direction, static_cast<double>(x.column) - 1,
+                                               0.5 * (x.low + x.high))});
     tracer_.intersect(buffers.bisection_rays, buffers.bisection_hits);
     for (size_t k = 0; k < crossings.size(); ++k) {
       OutlineCrossing& x = crossings[k];
@@ -456,23 +452,23 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
       // open or with the centre's ray measured worse on Fig. 7, the cache's 99th
       // percentile against 16,384 directions 2.84 → 3.38 %.)
       const Cells& c = cells_[i];
-      for (int u = 0; u < 3; ++u) {
+      for (size_t u = 0; u < 3; ++u) {
         // The outlines of this column, by the lower of their two rows.
         std::array<std::optional<double>, 2> outline{};
         while (next_crossing < crossings.size() && crossings[next_crossing].element == i &&
                crossings[next_crossing].column == u) {
           const OutlineCrossing& x = crossings[next_crossing++];
-          outline[static_cast<size_t>(x.lower_row)] = 0.5 * (x.low + x.high);
+          outline[x.lower_row] = 0.5 * (x.low + x.high);
         }
         for (size_t r = 0; r < 3; ++r) {
-          const auto [own_ray, own_hit] = sub_cell(i, kSlot[static_cast<size_t>(u)][r]);
+          const auto [own_ray, own_hit] = sub_cell(i, kSlot[u][r]);
           if (!own_hit->has_value()) continue;
           const double from = r > 0 && outline[r - 1] ? *outline[r - 1] : c.rows[r];
           const double to = r < 2 && outline[r] ? *outline[r] : c.rows[r + 1];
           const ObstacleLight light = obstacle_radiance_(*own_ray, **own_hit);
           for (size_t row = 0; row < 3; ++row) {
             const double overlap = std::min(to, c.rows[row + 1]) - std::max(from, c.rows[row]);
-            const size_t slot = static_cast<size_t>(kSlot[static_cast<size_t>(u)][row]);
+            const size_t slot = static_cast<size_t>(kSlot[u][row]);
             if (overlap > 0) add_hidden(i, *own_ray, **own_hit, light, w * overlap / 9, c.radiance[slot]);
           }
         }

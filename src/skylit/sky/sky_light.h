@@ -148,6 +148,7 @@ class SkyLight {
     // share of the element's solid angle is its height / 9 (1/9 unless the horizon
     // crosses the element).
     std::array<double, 4> rows{};
+    double centre(size_t row) const { return 0.5 * (rows[row] + rows[row + 1]); }
     Vec3 across_u, across_v;
     Vec3 toward(const Vec3& element, double u, double v) const {
       return normalize(element + u * across_u + v * across_v);
@@ -166,7 +167,7 @@ class SkyLight {
   // `lower_row` and the one above: it lies between v = low and high.
   struct OutlineCrossing {
     uint32_t element;
-    int column, lower_row;
+    size_t column, lower_row;
     bool lower_hidden;  // the lower row's ray met an obstacle (the upper's did not)
     double low, high;
   };
