@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <iostream>
+#include <memory>
+#include <vector>
 
 #include "skylit/geometry/primitives.h"
 #include "skylit/spectrum/cie.h"
@@ -142,6 +144,29 @@ double dense_illuminance(const SkyModel& sky, const RayTracer& tracer, const Vec
   return illuminance(Irradiance(sum));
 }
 
+// A 4 km ground plane (and any `others`) sending back a grey 20 % of the sky's mean,
+// the sun at 30°, 115°; the image's sky light with the cells' means, and its relative
+// error against 262,144 directions summed directly (dense_illuminance).
+struct OverGreyGround {
+  Atmosphere atmosphere{AtmosphereSettings{}};
+  SkyModel sky{atmosphere, direction_from_altitude_azimuth(30, 115), 1.6};
+  RayTracer tracer;
+  Radiance grey{sky.sky_irradiance({0, 0, 1}).spectrum() * static_cast<float>(0.2 / kPi)};
+  std::unique_ptr<SkyLight> cells;
+
+  explicit OverGreyGround(const std::vector<TriangleMesh>& others = {}) {
+    tracer.add_mesh(make_ground_plane({0, 0, 0}, 4000));
+    for (const TriangleMesh& mesh : others) tracer.add_mesh(mesh);
+    tracer.commit();
+    cells = std::make_unique<SkyLight>(
+        sky, tracer, [this](const Ray&, const Hit&) { return ObstacleLight(grey); },
+        fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr, true);
+  }
+  double error(const Vec3& point, const Vec3& n) const {
+    return illuminance(cells->diffuse_irradiance(point, n)) / dense_illuminance(sky, tracer, point, n, grey) - 1;
+  }
+};
+
 TEST(SkyLight, AnOutlineAcrossTheAureoleTakesOutTheSkyItHides) {
   // A south wall facing a low sun (17°) across a 50 m street from a long black block
   // whose top passes 3° above the sun: the block hides the aureole up to its edge, and
@@ -183,22 +208,10 @@ TEST(SkyLight, AWallAboveTheGroundKeepsTheSkyAboveTheHorizon) {
   // Taking an element's whole mean out where its centre met the ground read 1.6 % dark
   // (the default example's shaded east block 0.9 % darker than the path tracer); the
   // sub-cells traced apart without the horizon as a bound between their rows, 0.9 %.
-  Atmosphere atmosphere{AtmosphereSettings{}};
-  const SkyModel sky{atmosphere, direction_from_altitude_azimuth(30, 115), 1.6};
-  RayTracer tracer;
-  tracer.add_mesh(make_ground_plane({0, 0, 0}, 4000));
-  tracer.commit();
-  const Radiance ground(sky.sky_irradiance({0, 0, 1}).spectrum() * static_cast<float>(0.2 / kPi));
-  const auto ground_light = [&](const Ray&, const Hit&) { return ObstacleLight(ground); };
-  const SkyLight cells(sky, tracer, ground_light, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr,
-                       true);
+  const OverGreyGround scene;
   double worst = 0;
   for (const Vec3 n : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{-1, 0, 0}, Vec3{0, -1, 0}})
-    for (const double height : {2.0, 20.0}) {
-      const Vec3 point = height * Vec3{0, 0, 1};
-      const double truth = dense_illuminance(sky, tracer, point, n, ground);
-      worst = std::max(worst, std::abs(illuminance(cells.diffuse_irradiance(point, n)) / truth - 1));
-    }
+    for (const double height : {2.0, 20.0}) worst = std::max(worst, std::abs(scene.error(height * Vec3{0, 0, 1}, n)));
   std::cout << "worst against 262,144 directions: " << worst << "\n";
   EXPECT_LT(worst, 0.008);
 }
@@ -217,21 +230,10 @@ TEST(SkyLight, ARoofEdgeThroughTheHorizonSweepsAcrossSmoothly) {
   // about three times what is measured, below what counting whole gives. (With the edge
   // 3–6° up, across elements the horizon does not cross, whose centres stand for them,
   // the error reaches 2.3 %: docs/sky-light.md.)
-  Atmosphere atmosphere{AtmosphereSettings{}};
-  const SkyModel sky{atmosphere, direction_from_altitude_azimuth(30, 115), 1.6};
-  RayTracer tracer;
-  tracer.add_mesh(make_ground_plane({0, 0, 0}, 4000));
-  tracer.add_mesh(make_box({-400, 40, 0}, {400, 70, 30}));
-  tracer.commit();
-  const Radiance grey(sky.sky_irradiance({0, 0, 1}).spectrum() * static_cast<float>(0.2 / kPi));
-  const auto grey_light = [&](const Ray&, const Hit&) { return ObstacleLight(grey); };
-  const SkyLight cells(sky, tracer, grey_light, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr, true);
-  const Vec3 north{0, 1, 0};
+  const OverGreyGround scene({make_box({-400, 40, 0}, {400, 70, 30})});
   double worst = 0, worst_step = 0, previous = 0;
   for (int step = 0; step <= 24; ++step) {
-    const Vec3 point{0, 0, 28.6 + 0.1 * step};
-    const double error =
-        illuminance(cells.diffuse_irradiance(point, north)) / dense_illuminance(sky, tracer, point, north, grey) - 1;
+    const double error = scene.error({0, 0, 28.6 + 0.1 * step}, {0, 1, 0});
     worst = std::max(worst, std::abs(error));
     if (step > 0) worst_step = std::max(worst_step, std::abs(error - previous));
     previous = error;
