@@ -122,10 +122,11 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
 // obstacles' reach (cache_corner_agreement.h); 9.2 % and 7.2 % without, 27.7 % and
 // 25.8 % before corners were refused at all. With the obstacles lit by their own sky
 // and the corners' 15 % spread (2026-12-04): 4.3 % and 5.3 %; with the cells' means
-// (2026-12-05, sky/sky_light.h): 3.1 % and 4.9 %. The exact value and the cached one
-// come from the same quadrature, so the deviation is the cache's against its own
-// points.
-constexpr double kTolerance = 0.07;
+// (2026-12-05, sky/sky_light.h): 3.1 % and 4.9 %; with the outlines bisected 3.1 % and
+// 3.9 %, and a lone corner kept within its obstacles' reach (2026-12-06) 2.3 % and
+// 3.0 %. The exact value and the cached one come from the same quadrature, so the
+// deviation is the cache's against its own points.
+constexpr double kTolerance = 0.045;
 
 TEST(SkyLightCacheExamples, Fig7AtSmallSizesStaysNearTheExactSkyLight) {
   for (const auto& [width, height] : {std::pair{320, 180}, std::pair{480, 270}}) {
@@ -154,6 +155,19 @@ TEST(SkyLightCacheExamples, Fig7CacheAddsLittleToTheQuadraturesOwnError) {
   EXPECT_LT(d.cached_converged_p99, d.exact_converged_p99 + 0.02);
 }
 
+// The house's front door and windows sit 12 cm back in their reveals. At 320 × 180 a
+// coarse cell with a single corner on the door (its edge, half its sky hidden by the
+// reveal) gave its value to every door pixel within 5 % of the camera's distance: a
+// half-disc of the door 13–20 % too dark. A lone corner now stands in only within its
+// obstacles' reach. Measured (every pixel): 99th percentile 19.2 % before, 11.7 %
+// after; the rest is the window frames and sills a pixel wide, which the heavy test
+// below bounds too. 2 s.
+TEST(SkyLightCacheExamples, ALoneCornerDoesNotStandInAcrossARecess) {
+  const CacheDeviation d = cache_deviation("house.json", 320, 180, 1);
+  ASSERT_GT(d.pixels, 5000u);
+  EXPECT_LT(d.p99, 0.15);
+}
+
 TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
   if (!std::getenv("SKYLIT_SKY_LIGHT_ACCURACY")) GTEST_SKIP() << "heavy: set SKYLIT_SKY_LIGHT_ACCURACY=1";
   // Measured 2026-12-03 (99th percentile; 1920 × 1080 every 4th pixel): Fig. 7 4.7 %,
@@ -164,9 +178,11 @@ TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
   // 2026-12-05 (obstacles lit by their own sky, the cells' means, the outlines
   // bisected): Fig. 7 3.1 %, 3.9 %, 2.5 %; building 3.8 %, 3.8 %, 3.4 %; house
   // 19.2 %, 17.1 %, 15.4 % (docs/sky-light.md has what refusing more cells would give).
-  // The house's bound only catches a cache gone wrong.
+  // 2026-12-06 (a lone corner within its obstacles' reach): Fig. 7 2.3 %, 3.0 %, 2.4 %;
+  // building 3.0 %, 3.4 %, 3.0 %; house 11.7 %, 13.1 %, 13.8 % (the rest its pixel-wide
+  // frames and sills).
   for (const auto& [example, bound] :
-       {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", kTolerance}, std::pair{"house.json", 0.25}})
+       {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", kTolerance}, std::pair{"house.json", 0.16}})
     for (const auto& [width, height] : {std::pair{320, 180}, std::pair{480, 270}, std::pair{1920, 1080}}) {
       const CacheDeviation d = cache_deviation(example, width, height, width > 1000 ? 4 : 1);
       ASSERT_GT(d.pixels, 5000u);

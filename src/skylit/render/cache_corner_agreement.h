@@ -4,7 +4,8 @@
 // beside a tower (much of its sky hidden) to open grass, and interpolating across it put
 // the sky light on Fig. 7's ground up to 28 % off at 320 × 180 (99th percentile of the
 // pixels). A cell is used only where its corners' sky light agrees and, if fewer than
-// four corners lie on the point's surface, where they lie near the point, and where
+// four corners lie on the point's surface, where they lie near the point (a lone
+// corner within its obstacles' reach), and where
 // its corners lie within their obstacles' reach of the point (below); elsewhere the
 // next finer level of the cache is computed there, down to the pixel's own centre.
 #pragma once
