@@ -80,8 +80,8 @@ SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double 
                               !corners_agree(lx, kCloseSpread, other_lx);
   const bool lone_beyond_reach = spacing_ > 1 && count == 1 && !all_within_obstacle_reach;
   const bool partial_usable = all_within_reach && !lone_beyond_reach;
-  out.refused = count > 0 &&
-                (near_obstacles || !(count == 4 || partial_usable) || !corners_agree(lx, kCornerSpread, other_lx));
+  out.refused =
+      count > 0 && (near_obstacles || !(count == 4 || partial_usable) || !corners_agree(lx, kCornerSpread, other_lx));
   out.usable = count > 0 && !out.refused;
   return out;
 }
