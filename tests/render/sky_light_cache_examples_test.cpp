@@ -123,7 +123,7 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
 // 25.8 % before corners were refused at all. With the obstacles lit by their own sky
 // and the corners' 15 % spread (2026-12-04): 4.3 % and 5.3 %; with the cells' means
 // (2026-12-05, sky/sky_light.h): 3.1 % and 4.9 %; with the outlines bisected 3.1 % and
-// 3.9 %, and a lone corner kept within its obstacles' reach (2026-12-06) 2.3 % and
+// 3.9 %, and a lone corner kept within its obstacles' reach (2026-12-05) 2.3 % and
 // 3.0 %. The exact value and the cached one come from the same quadrature, so the
 // deviation is the cache's against its own points.
 constexpr double kTolerance = 0.045;
@@ -178,7 +178,7 @@ TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
   // 2026-12-05 (obstacles lit by their own sky, the cells' means, the outlines
   // bisected): Fig. 7 3.1 %, 3.9 %, 2.5 %; building 3.8 %, 3.8 %, 3.4 %; house
   // 19.2 %, 17.1 %, 15.4 % (docs/sky-light.md has what refusing more cells would give).
-  // 2026-12-06 (a lone corner within its obstacles' reach): Fig. 7 2.3 %, 3.0 %, 2.4 %;
+  // 2026-12-05 (a lone corner within its obstacles' reach): Fig. 7 2.3 %, 3.0 %, 2.4 %;
   // building 3.0 %, 3.4 %, 3.0 %; house 11.7 %, 13.1 %, 13.8 % (the rest its pixel-wide
   // frames and sills).
   for (const auto& [example, bound] :
