@@ -157,9 +157,10 @@ TEST(SkyLightCacheExamples, Fig7CacheAddsLittleToTheQuadraturesOwnError) {
 }
 
 // The house's front door and windows sit 12 cm back in their reveals. At 320 × 180 a
-// coarse cell with a single corner on the door (its edge, half its sky hidden by the
-// reveal) gave its value to every door pixel within 5 % of the camera's distance: a
-// half-disc of the door 13–20 % too dark. A lone corner now stands in only within its
+// coarse cell with a single corner on the door (at its edge, 18 % darker than the
+// middle: the reveal hides part of the sky) gave its value to every door pixel within
+// 5 % of the camera's distance: a half-disc of the door 13–20 % too dark. A lone
+// corner now stands in only within its
 // obstacles' reach. Measured (every pixel): 99th percentile 19.2 % before, 11.7 %
 // after; the rest is the window frames and sills a pixel wide, which the heavy test
 // below bounds too. 2 s.

@@ -70,8 +70,8 @@ SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double 
   // Corners whose sky light disagrees lie across a change the cell cannot follow. Fewer
   // than four corners on the surface cannot show how it changes across the cell, so
   // they must also lie near the point; a lone corner shows nothing of it, and stands
-  // in only within its obstacles' reach (a recessed door's edge, half-hidden by the
-  // reveal, stood for the door's middle).
+  // in only within its obstacles' reach (a recessed door's edge, part of its sky hidden
+  // by the reveal, stood for the door's middle).
   // In a cell that spans much depth, near obstacles, corners farther than their reach
   // must agree closely (cache_corner_agreement.h). The per-pixel level's corners are a
   // pixel apart: nothing finer to go to.
