@@ -65,9 +65,9 @@ struct Ground {
     const Ray ray{{x, y, height}, {0, 0, -1}};
     const std::optional<Hit> hit = tracer.intersect(ray);
     EXPECT_TRUE(hit.has_value());
-    const std::optional<Irradiance> value = patches.at(level, ray, *hit);
+    const std::optional<ObstacleSkyLight::Patch> value = patches.at(level, ray, *hit);
     EXPECT_TRUE(value.has_value());
-    return value.value_or(Irradiance(0.0f));
+    return value ? value->sky : Irradiance(0.0f);
   }
 };
 
@@ -92,9 +92,35 @@ TEST(ObstacleSkyLight, HitsOnOnePatchShareItsValueFromItsCentre) {
   EXPECT_EQ(g.calls.load(), 2);
   // From below, the other side: its own patch, its normal down.
   const Ray up{{20.1, 10.1, -2}, {0, 0, 1}};
-  const Irradiance below = g.patches.at(0, up, *g.tracer.intersect(up)).value();
+  const Irradiance below = g.patches.at(0, up, *g.tracer.intersect(up)).value().sky;
   EXPECT_EQ(g.calls.load(), 3);
   EXPECT_FLOAT_EQ(below.spectrum()[2], -1.0f);
+}
+
+// The sun's share of a patch: the part of it that sees the sun, from points spread over
+// it, asked once per patch. Against a shadow edge along y placed through the patch's
+// centre (half lit), before it (all lit) and past it (none).
+TEST(ObstacleSkyLight, APatchsSunlitShareIsThePartOfItTheSunReaches) {
+  Ground g;
+  const Irradiance centre = g.seen_from(20.1, 10.1, 2);  // the patch of the test above
+  const double cx = centre.spectrum()[0];
+  const Ray ray{{20.1, 10.1, 2}, {0, 0, -1}};
+  for (const auto& [edge_x, share] : {std::pair{cx, 0.5f}, std::pair{cx - 1.0, 1.0f}, std::pair{cx + 1.0, 0.0f}}) {
+    int asked = 0;
+    const ObstacleSkyLight patches(
+        g.scene, {1024}, [](int, const Vec3&, const Vec3&) { return Irradiance(1.0f); },
+        [&](const Vec3& point, const Vec3& normal) {
+          ++asked;
+          EXPECT_FLOAT_EQ(static_cast<float>(normal.z), 1.0f);
+          return point.x > edge_x;
+        });
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      const std::optional<ObstacleSkyLight::Patch> patch = patches.at(0, ray, *g.tracer.intersect(ray));
+      ASSERT_TRUE(patch.has_value());
+      EXPECT_FLOAT_EQ(patch->sunlit, share) << edge_x - cx;
+    }
+    EXPECT_EQ(asked, 4);
+  }
 }
 
 TEST(ObstacleSkyLight, PatchesGrowWithTheDistanceAsTheElements) {
@@ -118,7 +144,7 @@ TEST(ObstacleSkyLight, NoPatchIsFinerThanWhatTheImageResolvesWhereTheRayStarts) 
   Ground g;
   auto seen = [&](double x, double y) {
     const Ray ray{{x, y, 2}, {0, 0, -1}};
-    return g.patches.at(0, ray, *g.tracer.intersect(ray), 10.0).value();
+    return g.patches.at(0, ray, *g.tracer.intersect(ray), 10.0).value().sky;
   };
   const Irradiance a = seen(0, -1), b = seen(10, -1.5);
   EXPECT_EQ(g.calls.load(), 1);

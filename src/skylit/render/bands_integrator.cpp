@@ -56,8 +56,14 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   }
   lookup_directions.pop_back();
   obstacle_sky_ = std::make_unique<ObstacleSkyLight>(
-      scene.scene(), lookup_directions, [this](int level, const Vec3& point, const Vec3& normal) {
+      scene.scene(), lookup_directions,
+      [this](int level, const Vec3& point, const Vec3& normal) {
         return obstacle_sky_lights_[static_cast<size_t>(level)]->diffuse_irradiance(point, normal);
+      },
+      [this](const Vec3& point, const Vec3& normal) {
+        // No ray where the sun cannot shine (facing away, or below the point's horizon).
+        return dot(normal, to_sun_) > 0 && sky_.direct_sun(point.z)[kSpectralBins - 1] > 0.0f &&
+               !scene_.tracer().occluded(Ray{offset_from_surface(point, normal), to_sun_});
       });
   // The image's own integrals take the open sky and what obstacles hide from the same
   // cell means (sky/sky_light.h); the obstacles' patches keep the sky model's table.
@@ -150,24 +156,26 @@ Transmittance BandsIntegrator::diffuse_share(const SurfacePoint& point) const {
                                                      : sky_share(point.position, point.normal);
 }
 
-Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point) const {
+Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point, std::optional<float> sunlit_share) const {
   if (dot(point.normal, to_sun_) <= 0) return Irradiance(0.0f);
   const Irradiance sun = sky_.direct_sun(point.position.z);
   // Transmittance is largest in the red: if the last bin is dark, all are (the sun is
   // below this point's horizon).
   if (sun[kSpectralBins - 1] <= 0.0f) return sun;
-  if (scene_.tracer().occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_}))
+  if (sunlit_share ? *sunlit_share <= 0
+                   : scene_.tracer().occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_}))
     return Irradiance(0.0f);
   Irradiance reaching = scene_.fog() ? sun * scene_.fog()->sun_beam_transmittance(point.position) : sun;
   if (scene_.clouds())  // the clouds' shadows
     reaching *= static_cast<float>(scene_.clouds()->sun_transmittance(point.position));
-  return reaching;
+  return sunlit_share ? reaching * *sunlit_share : reaching;
 }
 
 Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const SurfacePoint& point,
-                                                       const Material& material, const Irradiance& sky) const {
+                                                       const Material& material, const Irradiance& sky,
+                                                       std::optional<float> sunlit_share) const {
   const Irradiance irradiance =
-      sky * diffuse_share(point) + sun_reaching(point) * static_cast<float>(dot(point.normal, to_sun_));
+      sky * diffuse_share(point) + sun_reaching(point, sunlit_share) * static_cast<float>(dot(point.normal, to_sun_));
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
   return lambertian_radiance(diffuse_albedo(material, dot(point.normal, -ray.direction)), irradiance);
@@ -185,7 +193,8 @@ double BandsIntegrator::sky_light_bound_lx(const SurfacePoint& point) const {
 }
 
 Irradiance BandsIntegrator::obstacle_sky(const Ray& ray, const Hit& hit, const SurfacePoint& point, int level) const {
-  if (const std::optional<Irradiance> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin))) return *own;
+  if (const std::optional<ObstacleSkyLight::Patch> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin)))
+    return own->sky;
   return open_sky_irradiance(point);
 }
 
@@ -195,8 +204,9 @@ ObstacleLight BandsIntegrator::element_obstacle_light(const Ray& ray, const Hit&
   if (scene_.scene().render.obstacles_own_sky) {
     // Without a patch of its own (past the last level, or too small), the integral that
     // meets the obstacle lights it as itself (SkyLight::diffuse_irradiance).
-    if (const std::optional<Irradiance> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin)))
-      return obstacle_radiance(ray, point, body, *own, level);
+    // The patch's sunlit share stands for the element's hit (obstacle_sky_light.h).
+    if (const std::optional<ObstacleSkyLight::Patch> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin)))
+      return obstacle_radiance(ray, point, body, own->sky, level, own->sunlit);
     return {obstacle_radiance(ray, point, body, Irradiance(0.0f), level),
             diffuse_albedo(body, dot(point.normal, -ray.direction))};
   }
@@ -204,9 +214,9 @@ ObstacleLight BandsIntegrator::element_obstacle_light(const Ray& ray, const Hit&
 }
 
 Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& body,
-                                            const Irradiance& sky, int level) const {
+                                            const Irradiance& sky, int level, std::optional<float> sunlit_share) const {
   const Vec3 to_viewer = -ray.direction;
-  Radiance radiance = lambertian_obstacle_radiance(ray, point, body, sky);
+  Radiance radiance = lambertian_obstacle_radiance(ray, point, body, sky, sunlit_share);
   const Reflectance fresnel = specular_fresnel(scene_.material(point.material), dot(point.normal, to_viewer));
   if (fresnel.is_black()) return radiance;
   const Ray mirrored{offset_from_surface(point.position, point.normal), mirror_direction(point.normal, to_viewer)};

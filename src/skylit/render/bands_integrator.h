@@ -171,8 +171,9 @@ class BandsIntegrator {
   double surface_extent(const SurfacePoint& point) const;
   ViewPath view_path(const Ray& ray, double distance) const;
   // The sun's direct normal irradiance at a surface point if it reaches it (0 in
-  // shadow or behind the surface).
-  Irradiance sun_reaching(const SurfacePoint& point) const;
+  // shadow or behind the surface); given `sunlit_share`, that share of it instead of
+  // a shadow ray's verdict.
+  Irradiance sun_reaching(const SurfacePoint& point, std::optional<float> sunlit_share = std::nullopt) const;
   // The light a surface sends toward the camera, before the air and fog on the way.
   // `parts`, if given: the part of it the surface leaves about alike toward every
   // direction (all but the sun's highlight and the mirror's view), and whether the sun
@@ -210,15 +211,17 @@ class BandsIntegrator {
   // ReflectedSun's), the latter lit by obstacle_sky at `level`. `body` is the material of
   // the obstacle's Lambertian part (textured or not); what it mirrors is seen by its
   // materials' means.
+  // `sunlit_share`: the sun's share of the obstacle's patch (render/obstacle_sky_light.h)
+  // instead of a shadow ray from the point.
   Radiance obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& body, const Irradiance& sky,
-                             int level) const;
+                             int level, std::optional<float> sunlit_share = std::nullopt) const;
   // The same for a ray of a sky-light integral, which stands for a sky element: textures
   // by their means (render/obstacle_materials.h); its sky light the open sky's, or with
   // "own_sky" the obstacle sky light's `level`, or where that has none the integral's own
   // (ObstacleLight::lit_as_the_point).
   ObstacleLight element_obstacle_light(const Ray& ray, const Hit& hit, int level) const;
   Radiance lambertian_obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& material,
-                                        const Irradiance& sky) const;
+                                        const Irradiance& sky, std::optional<float> sunlit_share = std::nullopt) const;
   // The sky light on an obstacle seen other than by an integral (in a mirror): the
   // obstacle sky light's `level` where it has a patch, else the open sky's.
   Irradiance obstacle_sky(const Ray& ray, const Hit& hit, const SurfacePoint& point, int level) const;

@@ -30,8 +30,12 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& v0, const Vec3& v1, co
   return v0 + (vb / denominator) * ab + (vc / denominator) * ac;
 }
 
-ObstacleSkyLight::ObstacleSkyLight(const Scene& scene, const std::vector<int>& lookup_directions, Integral integral)
-    : scene_(scene), integral_(std::move(integral)), patches_(lookup_directions.size()) {
+ObstacleSkyLight::ObstacleSkyLight(const Scene& scene, const std::vector<int>& lookup_directions, Integral integral,
+                                   SeesSun sees_sun)
+    : scene_(scene),
+      integral_(std::move(integral)),
+      sees_sun_(std::move(sees_sun)),
+      patches_(lookup_directions.size()) {
   // An element of n directions over the sphere spans about √(4π/n) radians.
   for (const int n : lookup_directions) patch_per_distance_.push_back(std::sqrt(4 * kPi / n));
   // TBB's maps grow only when their buckets hold four entries on average, each a node a
@@ -55,7 +59,8 @@ size_t ObstacleSkyLight::PatchKeyHash::operator()(const PatchKey& key) const {
   return static_cast<size_t>(h ^ (h >> 29));
 }
 
-std::optional<Irradiance> ObstacleSkyLight::at(int level, const Ray& ray, const Hit& hit, double min_side_m) const {
+std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray& ray, const Hit& hit,
+                                                            double min_side_m) const {
   if (level >= levels()) return std::nullopt;
   // The patch: a square of 2^exponent m, about an element's width at the hit's distance,
   // in the triangle's own frame (e1 along its first edge); none on a triangle too small.
@@ -86,17 +91,39 @@ std::optional<Irradiance> ObstacleSkyLight::at(int level, const Ray& ray, const 
       hit.mesh_id, hit.triangle, cell(dot(offset, e1)), cell(dot(offset, e2)), static_cast<int8_t>(exponent), back};
   auto& patches = patches_[static_cast<size_t>(level)];
   if (const auto found = patches.find(key); found != patches.end()) return found->second;
-  // The patch's centre, clamped into the triangle and drawn 1 mm toward its inside so that
-  // it lies within the face rather than on an edge shared with another.
-  const Vec3 centre = v0 + ((key.a + 0.5) * side) * e1 + ((key.b + 0.5) * side) * e2;
-  Vec3 point = closest_point_on_triangle(centre, v0, v1, v2);
-  const Vec3 inward = (v0 + v1 + v2) / 3.0 - point;
-  if (const double distance = length(inward); distance > 0)
-    point = point + std::min(1e-3, distance) / distance * inward;
+  // The point at (u, v) of the patch's side in the triangle's plane, and the same clamped
+  // into the triangle and drawn 1 mm toward its inside so that it lies within the face
+  // rather than on an edge shared with another.
+  auto in_plane = [&](double u, double v) { return v0 + ((key.a + u) * side) * e1 + ((key.b + v) * side) * e2; };
+  auto on_face = [&](const Vec3& in_plane_point) {
+    Vec3 point = closest_point_on_triangle(in_plane_point, v0, v1, v2);
+    const Vec3 inward = (v0 + v1 + v2) / 3.0 - point;
+    if (const double distance = length(inward); distance > 0)
+      point = point + std::min(1e-3, distance) / distance * inward;
+    return point;
+  };
   const Vec3 normal = back ? -face : face;
   // Two threads may compute the same patch at once: both get the same value (it depends
   // on the key alone), and the first to insert it keeps it.
-  const Irradiance value = integral_(level, point, normal);
+  const Vec3 centre = on_face(in_plane(0.5, 0.5));
+  Patch value{integral_(level, centre, normal)};
+  if (sees_sun_) {
+    // Over the part of the patch that lies on the triangle (what the hits meet); the
+    // centre where none of the lattice does.
+    int sunlit = 0, on_triangle = 0;
+    for (const double u : {0.25, 0.75})
+      for (const double v : {0.25, 0.75}) {
+        const Vec3 point = in_plane(u, v);
+        if (length(closest_point_on_triangle(point, v0, v1, v2) - point) > 1e-6 * side) continue;
+        ++on_triangle;
+        sunlit += sees_sun_(on_face(point), normal) ? 1 : 0;
+      }
+    if (on_triangle == 0) {
+      on_triangle = 1;
+      sunlit = sees_sun_(centre, normal) ? 1 : 0;
+    }
+    value.sunlit = static_cast<float>(sunlit) / static_cast<float>(on_triangle);
+  }
   return patches.insert({key, value}).first->second;
 }
 
