@@ -105,7 +105,8 @@ TEST(ObstacleSkyLight, APatchsSunlitShareIsThePartOfItTheSunReaches) {
   const Irradiance centre = g.seen_from(20.1, 10.1, 2);  // the patch of the test above
   const double cx = centre.spectrum()[0];
   const Ray ray{{20.1, 10.1, 2}, {0, 0, -1}};
-  for (const auto& [edge_x, share] : {std::pair{cx, 0.5f}, std::pair{cx - 1.0, 1.0f}, std::pair{cx + 1.0, 0.0f}}) {
+  for (const auto& [edge, share] : {std::pair{cx, 0.5f}, std::pair{cx - 1.0, 1.0f}, std::pair{cx + 1.0, 0.0f}}) {
+    const double edge_x = edge;  // Clang 14 cannot capture a structured binding in a lambda
     int asked = 0;
     const ObstacleSkyLight patches(
         g.scene, {1024}, [](int, const Vec3&, const Vec3&) { return Irradiance(1.0f); },
