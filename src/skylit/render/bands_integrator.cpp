@@ -63,7 +63,7 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       [this](const Vec3& point, const Vec3& normal) {
         // No ray where the sun cannot shine (facing away, or below the point's horizon).
         return dot(normal, to_sun_) > 0 && sky_.direct_sun(point.z)[kSpectralBins - 1] > 0.0f &&
-               !scene_.tracer().occluded(Ray{offset_from_surface(point, normal), to_sun_});
+               !sun_blocked(point, normal);
       });
   // The image's own integrals take the open sky and what obstacles hide from the same
   // cell means (sky/sky_light.h); the obstacles' patches keep the sky model's table.
@@ -156,15 +156,17 @@ Transmittance BandsIntegrator::diffuse_share(const SurfacePoint& point) const {
                                                      : sky_share(point.position, point.normal);
 }
 
+bool BandsIntegrator::sun_blocked(const Vec3& position, const Vec3& normal) const {
+  return scene_.tracer().occluded(Ray{offset_from_surface(position, normal), to_sun_});
+}
+
 Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point, std::optional<float> sunlit_share) const {
   if (dot(point.normal, to_sun_) <= 0) return Irradiance(0.0f);
   const Irradiance sun = sky_.direct_sun(point.position.z);
   // Transmittance is largest in the red: if the last bin is dark, all are (the sun is
   // below this point's horizon).
   if (sun[kSpectralBins - 1] <= 0.0f) return sun;
-  if (sunlit_share ? *sunlit_share <= 0
-                   : scene_.tracer().occluded(Ray{offset_from_surface(point.position, point.normal), to_sun_}))
-    return Irradiance(0.0f);
+  if (sunlit_share ? *sunlit_share <= 0 : sun_blocked(point.position, point.normal)) return Irradiance(0.0f);
   Irradiance reaching = scene_.fog() ? sun * scene_.fog()->sun_beam_transmittance(point.position) : sun;
   if (scene_.clouds())  // the clouds' shadows
     reaching *= static_cast<float>(scene_.clouds()->sun_transmittance(point.position));

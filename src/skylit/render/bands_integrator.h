@@ -174,6 +174,9 @@ class BandsIntegrator {
   // shadow or behind the surface); given `sunlit_share`, that share of it instead of
   // a shadow ray's verdict.
   Irradiance sun_reaching(const SurfacePoint& point, std::optional<float> sunlit_share = std::nullopt) const;
+  // Whether something stands between the sun and a point on a surface facing `normal`
+  // (the shadow ray of sun_reaching and of the obstacles' patches).
+  bool sun_blocked(const Vec3& position, const Vec3& normal) const;
   // The light a surface sends toward the camera, before the air and fog on the way.
   // `parts`, if given: the part of it the surface leaves about alike toward every
   // direction (all but the sun's highlight and the mirror's view), and whether the sun

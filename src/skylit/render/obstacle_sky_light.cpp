@@ -91,21 +91,19 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
       hit.mesh_id, hit.triangle, cell(dot(offset, e1)), cell(dot(offset, e2)), static_cast<int8_t>(exponent), back};
   auto& patches = patches_[static_cast<size_t>(level)];
   if (const auto found = patches.find(key); found != patches.end()) return found->second;
-  // The point at (u, v) of the patch's side in the triangle's plane, and the same clamped
-  // into the triangle and drawn 1 mm toward its inside so that it lies within the face
-  // rather than on an edge shared with another.
+  // The point at (u, v) of the patch's side in the triangle's plane; a point of the
+  // triangle drawn 1 mm toward its inside, so that it lies within the face rather than on
+  // an edge shared with another.
   auto in_plane = [&](double u, double v) { return v0 + ((key.a + u) * side) * e1 + ((key.b + v) * side) * e2; };
-  auto on_face = [&](const Vec3& in_plane_point) {
-    Vec3 point = closest_point_on_triangle(in_plane_point, v0, v1, v2);
-    const Vec3 inward = (v0 + v1 + v2) / 3.0 - point;
-    if (const double distance = length(inward); distance > 0)
-      point = point + std::min(1e-3, distance) / distance * inward;
-    return point;
+  auto drawn_inward = [&](const Vec3& on_triangle) {
+    const Vec3 inward = (v0 + v1 + v2) / 3.0 - on_triangle;
+    const double distance = length(inward);
+    return distance > 0 ? on_triangle + std::min(1e-3, distance) / distance * inward : on_triangle;
   };
   const Vec3 normal = back ? -face : face;
   // Two threads may compute the same patch at once: both get the same value (it depends
   // on the key alone), and the first to insert it keeps it.
-  const Vec3 centre = on_face(in_plane(0.5, 0.5));
+  const Vec3 centre = drawn_inward(closest_point_on_triangle(in_plane(0.5, 0.5), v0, v1, v2));
   Patch value{integral_(level, centre, normal)};
   if (sees_sun_) {
     // Over the part of the patch that lies on the triangle (what the hits meet); the
@@ -113,10 +111,10 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
     int sunlit = 0, on_triangle = 0;
     for (const double u : {0.25, 0.75})
       for (const double v : {0.25, 0.75}) {
-        const Vec3 point = in_plane(u, v);
-        if (length(closest_point_on_triangle(point, v0, v1, v2) - point) > 1e-6 * side) continue;
+        const Vec3 point = in_plane(u, v), nearest = closest_point_on_triangle(point, v0, v1, v2);
+        if (length(nearest - point) > 1e-6 * side) continue;
         ++on_triangle;
-        sunlit += sees_sun_(on_face(point), normal) ? 1 : 0;
+        sunlit += sees_sun_(drawn_inward(nearest), normal) ? 1 : 0;
       }
     if (on_triangle == 0) {
       on_triangle = 1;
