@@ -163,11 +163,13 @@ TEST(SkyLightCacheExamples, Fig7CacheAddsLittleToTheQuadraturesOwnError) {
 // corner now stands in only within its
 // obstacles' reach. Measured (every pixel): 99th percentile 19.2 % before, 11.7 %
 // after; the rest is the window frames and sills a pixel wide, which the heavy test
-// below bounds too. 2 s.
+// below bounds too. A sliver's nearest grid point kept within its obstacles' reach as
+// well (2026-12-06): 11.2 → 10.3 %, the worst pixel 4.77 → 0.82 of the exact value
+// off (the roof's edge had taken a point's value from beside a standing seam). 2 s.
 TEST(SkyLightCacheExamples, ALoneCornerDoesNotStandInAcrossARecess) {
   const CacheDeviation d = cache_deviation("house.json", 320, 180, 1);
   ASSERT_GT(d.pixels, 5000u);
-  EXPECT_LT(d.p99, 0.15);
+  EXPECT_LT(d.p99, 0.12);
 }
 
 TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {

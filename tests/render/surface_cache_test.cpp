@@ -167,5 +167,42 @@ TEST(SurfaceCache, SkyLightOutshoneByThePixelsOtherLightNeedsNoFinerLevel) {
   EXPECT_GT(from_17.fine_points() + from_17.pixel_points(), 0);
 }
 
+TEST(SurfaceCache, ASliverTakesANeighboursValueOnlyWithinItsObstaclesReach) {
+  // A plane seen from above through a narrow view (0.18 m a pixel, so that a grid
+  // point 5 pixels away is within the cache's reach on screen) is of one material but
+  // for two pixels of another: (8, 8), a fine grid point, and (13, 9), whose fine cell
+  // has no corner on it. The second takes the first's value as a sliver of its surface
+  // when the first's obstacles are far (5 km: it stands for points within 500 m); when
+  // they are 1 m away (within 0.1 m) it gets a point of its own.
+  const Camera narrow{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 5.0};
+  const ImageCamera camera(narrow, kWidth, kHeight);
+  const PrimaryHits hits(camera, kWidth, kHeight, [&](const Ray& ray) {
+    const double t = -ray.origin.z / ray.direction.z;
+    const Vec3 p = ray.origin + t * ray.direction;
+    const auto pixel = camera.project(p);
+    const int x = static_cast<int>(std::floor(pixel->first)), y = static_cast<int>(std::floor(pixel->second));
+    const bool other = (x == 8 && y == 8) || (x == 13 && y == 9);
+    return PrimaryHit{0, SurfacePoint{p, {0, 0, 1}, t, other ? 1u : 0u}};
+  });
+  ASSERT_EQ(hits.surface(8, 8)->material, 1u);
+  ASSERT_EQ(hits.surface(13, 9)->material, 1u);
+  auto with_obstacles_at = [](double obstacle_m) {
+    return [obstacle_m](const SurfacePoint& p, int, int) {
+      CachedSkyLight v = value_at(p);
+      v.obstacle_distance_m = obstacle_m;
+      return v;
+    };
+  };
+  const SurfacePoint& sliver = *hits.surface(13, 9);
+  const float grid_points_value = value_at(*hits.surface(8, 8)).diffuse_irradiance[0];
+  const float own_value = value_at(sliver).diffuse_irradiance[0];
+  ASSERT_GT(std::abs(own_value - grid_points_value), 0.5f);  // 0.9 m apart in x
+  const SurfaceCache far(hits, with_obstacles_at(5000));
+  const SurfaceCache near(hits, with_obstacles_at(1));
+  EXPECT_FLOAT_EQ(far.interpolate(13.5, 9.5, sliver)->diffuse_irradiance[0], grid_points_value);
+  EXPECT_FLOAT_EQ(near.interpolate(13.5, 9.5, sliver)->diffuse_irradiance[0], own_value);
+  EXPECT_EQ(near.pixel_points(), far.pixel_points() + 1);
+}
+
 }  // namespace
 }  // namespace skylit

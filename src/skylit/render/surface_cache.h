@@ -113,8 +113,9 @@ class SurfaceCache {
     // The bilinear blend of usable corners (`corners.usable`).
     CachedSkyLight blend(const Corners& corners) const;
     // The nearest grid point (on screen) within `cells` cells that lies on the same
-    // surface: for slivers of a surface next to an edge, which no corner of their own
-    // cell sees; null if none.
+    // surface (and, on the coarse and fine grids, within its obstacles' reach): for
+    // slivers of a surface next to an edge, which no corner of their own cell sees; null
+    // if none.
     const Stored* nearest(double x, double y, const SurfacePoint& point, int cells) const;
     void want(int gx, int gy) { slots_[index(gx, gy)] = kWanted; }
     // Computes the wanted points that see a surface, in parallel.
