@@ -102,7 +102,7 @@ TEST(SkyLight, UnobstructedIrradianceMatchesADenseQuadratureOfTheSky) {
   Fixture f;
   f.tracer.commit();
   const SkyLight cells(f.sky, f.tracer, black_obstacle, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr,
-                       nullptr, true);
+                       nullptr, SkyLight::Cells::kMeans);
   for (double elevation : {90.0, 45.0, 0.0, -45.0}) {
     for (double azimuth : {150.0, 240.0, 330.0}) {
       const Vec3 n = direction_from_altitude_azimuth(elevation, azimuth);
@@ -160,7 +160,7 @@ struct OverGreyGround {
     tracer.commit();
     cells = std::make_unique<SkyLight>(
         sky, tracer, [this](const Ray&, const Hit&) { return ObstacleLight(grey); },
-        fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr, true);
+        fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr, SkyLight::Cells::kMeans);
   }
   double error(const Vec3& point, const Vec3& n) const {
     return illuminance(cells->diffuse_irradiance(point, n)) / dense_illuminance(sky, tracer, point, n, grey) - 1;
@@ -182,7 +182,7 @@ TEST(SkyLight, AnOutlineAcrossTheAureoleTakesOutTheSkyItHides) {
   tracer.add_mesh(make_box({-400, -80, 0}, {400, -50, 50 * std::tan(radians(20.0))}));
   tracer.commit();
   const SkyLight cells(sky, tracer, black_obstacle, fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr,
-                       true);
+                       SkyLight::Cells::kMeans);
   const SkyLight plain(sky, tracer, black_obstacle);
   const Vec3 south{0, -1, 0};
   double worst_cells = 0, worst_plain = 0;

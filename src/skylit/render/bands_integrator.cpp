@@ -68,7 +68,7 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   // The image's own integrals take the open sky and what obstacles hide from the same
   // cell means (sky/sky_light.h); the obstacles' patches keep the sky model's table.
   sky_light_ = sky_light_with(SkyLight::kDefaultDirections);
-  one_pixel_sky_light_ = sky_light_with(kOnePixelDirections);
+  one_pixel_sky_light_ = sky_light_looking_up(0, kOnePixelDirections, SkyLight::Cells::kMeansAcrossTheAureole);
   if (scene.lamps() && scene.fog()) {  // what the image cache uses where the lamps' glow outshines the sky
     obstacles_bound_lx_ = obstacles_bound_lx(sky_, obstacle_materials_);
     // Past the obstacle levels, the integral lights its obstacles as the point.
@@ -81,10 +81,11 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
 }
 
 std::unique_ptr<SkyLight> BandsIntegrator::sky_light_with(int directions) const {
-  return sky_light_looking_up(0, directions, true);
+  return sky_light_looking_up(0, directions, SkyLight::Cells::kMeans);
 }
 
-std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int directions, bool cell_means) const {
+std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int directions,
+                                                                SkyLight::Cells cells) const {
   const auto obstacle = [this, level](const Ray& ray, const Hit& hit) {
     return element_obstacle_light(ray, hit, level);
   };
@@ -93,7 +94,7 @@ std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int d
   // of a correction (docs/fog.md).
   const FogShadowedSunlight* shadowed = level == 0 && scene_.fog() ? scene_.fog()->shadowed_sunlight() : nullptr;
   return std::make_unique<SkyLight>(sky_, scene_.tracer(), obstacle, fibonacci_sphere(directions), fog_light_, shadowed,
-                                    cell_means);
+                                    cells);
 }
 
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {

@@ -125,8 +125,10 @@ class BandsIntegrator {
   // that pixel's antialiasing samples) and a sample whose surface the cache has no
   // value for (a sliver that no pixel centre within 2 pixels sees; shared with the
   // tile's later samples on the same surface within 2 pixels). A quarter of the
-  // directions; what this changes in the image is measured against the exact sky light
-  // by tests/render/sky_light_accuracy_test.cpp (docs/sky-light.md).
+  // directions, their sub-cells traced apart only across the aureole
+  // (SkyLight::Cells::kMeansAcrossTheAureole); what this changes in the image is
+  // measured against the exact sky light by tests/render/sky_light_accuracy_test.cpp
+  // (docs/sky-light.md).
   static constexpr int kOnePixelDirections = 256;
 
   // With `render.obstacle_light` "own_sky": the directions of the sky-light integrals
@@ -161,7 +163,8 @@ class BandsIntegrator {
   // A sky-light integral of `directions` directions whose obstacles are lit by the
   // obstacle sky light's `level` (element_obstacle_light; past the last level, as the
   // point itself).
-  std::unique_ptr<SkyLight> sky_light_looking_up(int level, int directions, bool cell_means = false) const;
+  std::unique_ptr<SkyLight> sky_light_looking_up(int level, int directions,
+                                                 SkyLight::Cells cells = SkyLight::Cells::kCentres) const;
   // With the diffuse part from `diffuse_from`, the glossy part from `glossy_from`.
   CachedSkyLight sky_light_at(const SkyLight& diffuse_from, const SkyLight& glossy_from, const SurfacePoint& point,
                               const Vec3& viewer) const;

@@ -16,11 +16,12 @@ namespace skylit {
 
 SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
                    std::vector<SkyElement> elements, const FogSurfaceLight* fog,
-                   const FogShadowedSunlight* shadowed_fog_sunlight, bool cell_means)
+                   const FogShadowedSunlight* shadowed_fog_sunlight, Cells cells)
     : sky_(sky),
       tracer_(tracer),
       obstacle_radiance_(std::move(obstacle_radiance)),
       elements_(std::move(elements)),
+      cell_detail_(cells),
       fog_(fog),
       shadowed_fog_sunlight_(fog ? shadowed_fog_sunlight : nullptr) {
   for (const SkyElement& e : elements_) element_radiance_.push_back(sky_.sky_radiance_near_ground(e.direction));
@@ -29,7 +30,7 @@ SkyLight::SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadianc
     for (const SkyElement& e : elements_) directions.push_back(e.direction);
     fog_elements_ = std::make_unique<FogSurfaceLight::Directions>(*fog_, directions);
   }
-  if (cell_means) find_cells();
+  if (cell_detail_ != Cells::kCentres) find_cells();
   // Bands of equal height with about 2 × 16 elements per band for each band, so that a
   // packet of 16 rays spans about as much in height as in azimuth; within a band by
   // azimuth.
@@ -59,7 +60,7 @@ void SkyLight::find_cells() {
     const double step = std::sqrt(elements_[i].solid_angle) / 3;  // a sub-cell's width
     const Vec3 t1 = normalize(cross(d, std::abs(d.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0}));
     const Vec3 t2 = cross(d, t1);
-    Cells& c = cells_[i];
+    CellGrid& c = cells_[i];
     c.across_u = step * t1;
     c.across_v = step * t2;
     auto across = [&](double u, double v) { return c.toward(d, u, v); };
@@ -118,7 +119,7 @@ void SkyLight::find_cells() {
     }
   const double threshold = kVaryingCell * sum / std::max(1, count);
   tbb::parallel_for(size_t{0}, elements_.size(), [&](size_t i) {
-    Cells& c = cells_[i];
+    CellGrid& c = cells_[i];
     double least = std::numeric_limits<double>::infinity(), most = 0;
     for (const Radiance& r : c.radiance) {
       least = std::min(least, luminance(r));
@@ -139,9 +140,9 @@ void SkyLight::find_cells() {
   });
 }
 
-bool SkyLight::refined(const Cells& c, const Vec3& normal) {
+bool SkyLight::refined(const CellGrid& c, const Vec3& normal) const {
   if (c.varying) return true;
-  if (!c.straddles_horizon) return false;
+  if (!c.straddles_horizon || cell_detail_ == Cells::kMeansAcrossTheAureole) return false;
   for (const Vec3& d : c.directions)
     if (dot(normal, d) <= 0) return false;
   return true;
@@ -386,7 +387,7 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
   crossings.clear();
   for (size_t i = 0; !buffers.edge_rays.empty() && i < elements.size(); ++i) {
     if (edge_ray_of_element[i] < 0) continue;
-    const Cells& c = cells_[i];
+    const CellGrid& c = cells_[i];
     for (size_t u = 0; u < 3; ++u)
       for (size_t r = 0; r < 2; ++r) {
         const bool lower_hidden = sub_cell(i, kSlot[u][r]).second->has_value();
@@ -394,7 +395,8 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
         crossings.push_back({static_cast<uint32_t>(i), u, r, lower_hidden, c.centre(r), c.centre(r + 1)});
       }
   }
-  for (int round = 0; round < kOutlineBisections && !crossings.empty(); ++round) {
+  const int bisections = cell_detail_ == Cells::kMeans ? kOutlineBisections : 0;
+  for (int round = 0; round < bisections && !crossings.empty(); ++round) {
     buffers.bisection_rays.clear();
     for (const OutlineCrossing& x : crossings)
       buffers.bisection_rays.push_back(
@@ -451,7 +453,7 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
       // own horizon meets the surface itself and counts as hidden by it: counting it as
       // open or with the centre's ray measured worse on Fig. 7, the cache's 99th
       // percentile against 16,384 directions 2.84 → 3.38 %.)
-      const Cells& c = cells_[i];
+      const CellGrid& c = cells_[i];
       for (size_t u = 0; u < 3; ++u) {
         // The outlines of this column, by the lower of their two rows.
         std::array<std::optional<double>, 2> outline{};

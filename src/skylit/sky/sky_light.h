@@ -64,21 +64,35 @@ class SkyLight {
   // scatter (media/fog_shadowed_sunlight.h): for the integrals of the points seen, not
   // for the obstacles' own, so that an obstacle's light does not depend on which
   // integral asked for it first.
+  // How finely an integral resolves the sky within its elements.
+  enum class Cells {
+    // Each element's centre radiance for what an obstacle hides; the open sky from the
+    // sky model's table.
+    kCentres,
+    // Each element's sky is its cell's mean radiance (3 × 3 sub-cells of 4 × 4 samples),
+    // the open sky's irradiance is summed from the same means (a table over normals)
+    // rather than the sky model's table, and where an obstacle's outline crosses an
+    // element whose sub-cells differ by more than kVaryingCell × the sky's mean (the
+    // sun's aureole, the horizon), or that the horizon crosses (its rows laid so that
+    // the horizon is a bound between them), its sub-cells are traced apart, each hidden
+    // one taking out its own mean up to the outline found between it and an open
+    // neighbour in its column (`refined`, kOutlineBisections). The open sky and what
+    // obstacles hide then come from the same radiances: from the table's 2,048 point
+    // samples and the elements' centres, a block whose top passed near a low sun took
+    // out whole 6° elements of the aureole, ±3–5 % of a wall's sky light from one metre
+    // to the next (docs/sky-light.md).
+    kMeans,
+    // The same means, with sub-cells traced apart only where an outline crosses an
+    // element whose sub-cells differ (the aureole), and the outline not bisected: for
+    // values that stand for one pixel, where the rest cost a quarter of a model of
+    // many small parts' frame and moved its pixels by a tenth of a per cent
+    // (docs/sky-light.md, "The one-pixel level").
+    kMeansAcrossTheAureole,
+  };
   SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
            std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections),
            const FogSurfaceLight* fog = nullptr, const FogShadowedSunlight* shadowed_fog_sunlight = nullptr,
-           bool cell_means = false);
-  // With `cell_means`: each element's sky is its cell's mean radiance (3 × 3 sub-cells
-  // of 4 × 4 samples), the open sky's irradiance is summed from the same means (a table
-  // over normals) rather than the sky model's table, and where an obstacle's outline
-  // crosses an element whose sub-cells differ by more than kVaryingCell × the sky's mean
-  // (the sun's aureole, the horizon), or that the horizon crosses (its rows laid so
-  // that the horizon is a bound between them), its sub-cells are traced apart, each
-  // hidden one taking out its own mean up to the outline found between it and an open
-  // neighbour in its column (`refined`, kOutlineBisections). The open sky and what obstacles hide then come from the
-  // same radiances: from the table's 2,048 point samples and the elements' centres,
-  // a block whose top passed near a low sun took out whole 6° elements of the aureole,
-  // ±3–5 % of a wall's sky light from one metre to the next (docs/sky-light.md).
+           Cells cells = Cells::kCentres);
   static constexpr double kVaryingCell = 1.0;
 
   // Irradiance (W m⁻² nm⁻¹) on a surface at `point` with unit `normal` (facing the side
@@ -129,11 +143,11 @@ class SkyLight {
 
   std::vector<SkyElement> elements_;
   std::vector<Radiance> element_radiance_;
-  // With cell_means: per element its sub-cells (directions, the middle one last: the
+  // With the cells' means: per element its sub-cells (directions, the middle one last: the
   // element's own direction unless the horizon crosses it; mean radiances; the rows' bounds), whether they differ
   // enough to be traced apart, and then its nearest neighbours (to find the outlines that cross it).
   static constexpr int kNeighbours = 6, kSubCells = 9;
-  struct Cells {
+  struct CellGrid {
     std::array<Vec3, kSubCells> directions;
     std::array<Radiance, kSubCells> radiance;
     bool varying = false;
@@ -171,7 +185,8 @@ class SkyLight {
     bool lower_hidden;  // the lower row's ray met an obstacle (the upper's did not)
     double low, high;
   };
-  std::vector<Cells> cells_;
+  Cells cell_detail_;
+  std::vector<CellGrid> cells_;
   void find_cells();
   // Whether an element an outline crosses has its sub-cells traced apart for a surface
   // of `normal`: where they differ by more than kVaryingCell × the sky's mean, and where
@@ -182,8 +197,8 @@ class SkyLight {
   // walls read 0.9 % darker than the path tracer (docs/sky-light.md). On a surface whose
   // own horizon is the horizon (the ground) the sub-cells below it would meet the
   // surface itself: there the centre stands for the element as before.
-  static bool refined(const Cells& c, const Vec3& normal);
-  // With cell_means: the open sky's irradiance Σ max(0, n·ω_i) dω_i L̄_i over normals n, on
+  bool refined(const CellGrid& c, const Vec3& normal) const;
+  // With the cells' means: the open sky's irradiance Σ max(0, n·ω_i) dω_i L̄_i over normals n, on
   // a grid of elevation × azimuth (world frame), read bilinearly.
   static constexpr int kOpenElevations = 17, kOpenAzimuths = 33;
   SpectrumGrid2D open_irradiance_{kOpenAzimuths, kOpenElevations};  // x: azimuth, y: elevation
