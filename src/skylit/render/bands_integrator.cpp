@@ -56,7 +56,7 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   }
   lookup_directions.pop_back();
   obstacle_sky_ = std::make_unique<ObstacleSkyLight>(
-      scene.scene(), lookup_directions,
+      scene.scene(), scene.tracer(), lookup_directions,
       [this](int level, const Vec3& point, const Vec3& normal) {
         return obstacle_sky_lights_[static_cast<size_t>(level)]->diffuse_irradiance(point, normal);
       },
