@@ -9,8 +9,7 @@ namespace skylit {
 
 namespace {
 
-// The plane's normal rounded to 1e-4 and its offset to 1 mm.
-using PlaneKey = std::array<long long, 4>;
+using PlaneKey = std::array<long long, 4>;  // rounded_plane's
 
 struct PlaneKeyHash {
   size_t operator()(const PlaneKey& key) const {
@@ -23,13 +22,17 @@ struct PlaneKeyHash {
   }
 };
 
-Vec3 canonical(const Vec3& n) {
+}  // namespace
+
+Vec3 canonical_plane_normal(const Vec3& n) {
   constexpr double kEps = 1e-9;
   const bool flip = n.z < -kEps || (std::abs(n.z) <= kEps && (n.y < -kEps || (std::abs(n.y) <= kEps && n.x < 0)));
   return flip ? -n : n;
 }
 
-}  // namespace
+std::array<long long, 4> rounded_plane(const Vec3& n, double offset) {
+  return {std::llround(n.x * 1e4), std::llround(n.y * 1e4), std::llround(n.z * 1e4), std::llround(offset * 1e3)};
+}
 
 PlaneGroups::PlaneGroups(const TriangleMesh& mesh) : plane_of_triangle_(mesh.triangles.size(), -1) {
   std::unordered_map<PlaneKey, int32_t, PlaneKeyHash> plane_of_key;
@@ -39,11 +42,9 @@ PlaneGroups::PlaneGroups(const TriangleMesh& mesh) : plane_of_triangle_(mesh.tri
     const Vec3 area_vector = cross(b - a, c - a);
     const double twice_area = length(area_vector);
     if (!(twice_area > 0)) continue;
-    const Vec3 n = canonical(area_vector / twice_area);
+    const Vec3 n = canonical_plane_normal(area_vector / twice_area);
     const double offset = dot(n, a);
-    const PlaneKey key{std::llround(n.x * 1e4), std::llround(n.y * 1e4), std::llround(n.z * 1e4),
-                       std::llround(offset * 1e3)};
-    const auto [it, added] = plane_of_key.try_emplace(key, static_cast<int32_t>(planes_.size()));
+    const auto [it, added] = plane_of_key.try_emplace(rounded_plane(n, offset), static_cast<int32_t>(planes_.size()));
     if (added) {
       // The first triangle's normal and offset stand for the plane; e1 level (in a level
       // plane, along x), so that a wall's squares follow its courses and the obstacles'

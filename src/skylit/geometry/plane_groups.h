@@ -6,6 +6,7 @@
 // light was kept per triangle (render/obstacle_sky_light.h).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +14,14 @@
 #include "skylit/geometry/triangle_mesh.h"
 
 namespace skylit {
+
+// One orientation per plane, whichever side a triangle was wound on: z > 0, or z = 0
+// and y > 0, or z = y = 0 and x > 0.
+Vec3 canonical_plane_normal(const Vec3& n);
+
+// The plane n·x = offset (n canonical) rounded to its tolerance: the normal's
+// components to 1e-4 and the offset to 1 mm (far below any facade's size).
+std::array<long long, 4> rounded_plane(const Vec3& n, double offset);
 
 class PlaneGroups {
  public:

@@ -3,8 +3,9 @@
 
 #include <cmath>
 #include <map>
-#include <tuple>
+#include <utility>
 
+#include "skylit/geometry/plane_groups.h"
 #include "skylit/material/microfacet.h"
 #include "skylit/material/reflection.h"
 #include "skylit/material/reflection_sampling.h"
@@ -13,21 +14,11 @@ namespace skylit {
 
 namespace {
 
-// Triangles are one plane when their unit normals agree to 1e-4 and their planes'
-// offsets to 1 mm: the tolerance of a model's coordinates, far below any facade's size.
-using PlaneKey = std::tuple<uint32_t, long long, long long, long long, long long>;
+// Triangles are one plane when they agree within geometry/plane_groups.h's tolerance
+// (rounded_plane), here of one material.
+using PlaneKey = std::pair<uint32_t, std::array<long long, 4>>;
 
-PlaneKey plane_key(uint32_t material, Vec3 normal, double offset) {
-  return {material, std::llround(normal.x * 1e4), std::llround(normal.y * 1e4), std::llround(normal.z * 1e4),
-          std::llround(offset * 1e3)};
-}
-
-// One orientation per plane, whichever side the triangle was wound on.
-Vec3 canonical(const Vec3& n) {
-  constexpr double kEps = 1e-9;
-  const bool flip = n.z < -kEps || (std::abs(n.z) <= kEps && (n.y < -kEps || (std::abs(n.y) <= kEps && n.x < 0)));
-  return flip ? -n : n;
-}
+PlaneKey plane_key(uint32_t material, Vec3 normal, double offset) { return {material, rounded_plane(normal, offset)}; }
 
 // Whether a ray can meet the box (slab test). The box of a flat facet is flat: it is
 // padded by 1 mm so the test stays robust.
@@ -74,7 +65,7 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
       const Vec3 area_normal = cross(b - a, c - a);
       const double twice_area = length(area_normal);
       if (!(twice_area > 0)) continue;
-      const Vec3 n = canonical(area_normal / twice_area);
+      const Vec3 n = canonical_plane_normal(area_normal / twice_area);
       const auto [group_it, new_group] =
           group_of_plane.try_emplace(plane_key(material, n, dot(n, a)), static_cast<int32_t>(groups_.size()));
       if (new_group) {
