@@ -88,14 +88,17 @@ TEST(ObstacleSkyLight, HitsOnOnePatchShareItsValueFromItsCentre) {
 
 // The sun's share of a patch: the part of it that sees the sun, from points spread over
 // it, asked once per patch. Against a shadow edge along y placed through the patch's
-// centre (half lit), before it (all lit) and past it (none).
+// centre (half lit), an eighth of a metre past it (a quarter), before it (all lit) and
+// past it (none).
 TEST(ObstacleSkyLight, APatchsSunlitShareIsThePartOfItTheSunReaches) {
   Ground g;
   const Vec3 p = g.in_frame(20.1, 10.1);
   const Irradiance centre = g.seen_from(p.x, p.y, 2);  // the patch of the test above
   const double cx = centre.spectrum()[0];
   const Ray ray{{p.x, p.y, 2}, {0, 0, -1}};
-  for (const auto& [edge, share] : {std::pair{cx, 0.5f}, std::pair{cx - 1.0, 1.0f}, std::pair{cx + 1.0, 0.0f}}) {
+  // The 0.5 m patch's lattice columns lie 0.0625 and 0.1875 m either side of its centre.
+  for (const auto& [edge, share] :
+       {std::pair{cx, 0.5f}, std::pair{cx + 0.125, 0.25f}, std::pair{cx - 1.0, 1.0f}, std::pair{cx + 1.0, 0.0f}}) {
     const double edge_x = edge;  // Clang 14 cannot capture a structured binding in a lambda
     int asked = 0;
     const ObstacleSkyLight patches(
@@ -110,7 +113,7 @@ TEST(ObstacleSkyLight, APatchsSunlitShareIsThePartOfItTheSunReaches) {
       ASSERT_TRUE(patch.has_value());
       EXPECT_FLOAT_EQ(patch->sunlit, share) << edge_x - cx;
     }
-    EXPECT_EQ(asked, 4);
+    EXPECT_EQ(asked, 16);  // a 4 × 4 lattice, once per patch
   }
 }
 

@@ -88,19 +88,18 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
     return plane.origin + ((key.a + u) * side) * plane.e1 + ((key.b + v) * side) * plane.e2;
   };
   const Vec3 normal = back ? -plane.normal : plane.normal;
-  // The points of a 2 × 2 lattice over the patch that lie on the plane's triangles (what
-  // the hits meet), or of a 4 × 4 one where none of those does (a patch over a small
-  // wall's corner); the point the value is found at: the centre, or else the first of
-  // them.
+  // The points of a 4 × 4 lattice over the patch that lie on the plane's triangles (what
+  // the hits meet); the point the value is found at: the centre, or else the first of
+  // them. (A 2 × 2 lattice placed a sunlit wall's shadow edge only to half a patch: with
+  // the squares' edges on a canyon's round coordinates, its shaded wall read 0.93 and
+  // 0.91 of the path tracer at h/w 2 and 4, where 4 × 4 reads 0.99 and 0.97.)
+  constexpr int kLattice = 4;
   std::vector<Vec3> lattice;
-  for (const int n : {2, 4}) {
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        if (const std::optional<Vec3> p =
-                on_plane(hit.mesh_id, plane_index, in_plane((i + 0.5) / n, (j + 0.5) / n), normal))
-          lattice.push_back(*p);
-    if (!lattice.empty()) break;
-  }
+  for (int i = 0; i < kLattice; ++i)
+    for (int j = 0; j < kLattice; ++j)
+      if (const std::optional<Vec3> p =
+              on_plane(hit.mesh_id, plane_index, in_plane((i + 0.5) / kLattice, (j + 0.5) / kLattice), normal))
+        lattice.push_back(*p);
   std::optional<Vec3> point = on_plane(hit.mesh_id, plane_index, in_plane(0.5, 0.5), normal);
   if (!point && !lattice.empty()) point = lattice.front();
   if (point && lattice.empty()) lattice.push_back(*point);  // a strip across the centre alone
