@@ -98,7 +98,7 @@ TEST(CanyonLight, TheShadedWallDoesNotDependOnHowTheSunlitOneIsCutIntoTriangles)
   // of the same canyon with the wall of two triangles (the patches' squares and points
   // are the same; the probes and the strips' edges move single-precision bits). Kept
   // per triangle, the strips read 0.96–1.12 (1 m) and 0.82–1.02 (0.1 m) of the path
-  // tracer where the whole wall read 0.92–1.13 (docs/sky-light.md). 2 s.
+  // tracer where the whole wall read 0.92–1.13; now 0.90–1.04 (docs/sky-light.md). 2 s.
   for (double h_over_w : {1.0, 2.0, 4.0}) {
     const Scene whole_scene = canyon(h_over_w);
     const Renderer whole(whole_scene);
