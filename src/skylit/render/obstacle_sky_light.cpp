@@ -17,7 +17,9 @@ ObstacleSkyLight::ObstacleSkyLight(const Scene& scene, const RayTracer& tracer,
       patches_(lookup_directions.size()) {
   // An element of n directions over the sphere spans about √(4π/n) radians.
   for (const int n : lookup_directions) patch_per_distance_.push_back(std::sqrt(4 * kPi / n));
-  for (const SceneObject& object : scene_.objects) planes_.emplace_back(object.mesh);
+  // Without levels (the obstacles lit by the open sky) no patch is ever asked for.
+  if (!lookup_directions.empty())
+    for (const SceneObject& object : scene_.objects) planes_.emplace_back(object.mesh);
   // TBB's maps grow only when their buckets hold four entries on average, each a node a
   // look-up walks past (the walk was half of this function's own time); at one a bucket
   // Fig. 7's tile frame took 1278 ms against 1326 (aluminium 1283 against 1294), the

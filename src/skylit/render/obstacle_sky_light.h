@@ -15,7 +15,7 @@
 // no finer than what the image resolves where the looking integral sits) in the plane
 // met (geometry/plane_groups.h: the object's triangles in that plane, however the model
 // cut the surface into triangles), on the side met, evaluated at the patch's centre if
-// that lies on one of the plane's triangles, else at the first point of a 2 × 2
+// that lies on one of the plane's triangles, else at the first point of a 4 × 4
 // lattice over the patch that does (found by a short probe ray). Kept per triangle, a
 // street canyon's sunlit wall cut into strips of 1 m lit the shaded wall across 7 %
 // brighter, in strips of 0.1 m 18 % dimmer, than the same wall of two triangles. It
@@ -23,11 +23,11 @@
 // whatever the threads and their order.
 //
 // A plane smaller than a quarter of its patch (a window frame, a reveal, a facet of a
-// detailed model seen from afar) has none, nor a patch none of whose five points lies on
-// the plane's triangles (a corner of it over a wall's window): one of many small parts,
-// and a patch for each would cost a quadrature per part; the integral that meets it
-// lights it as itself, as past the last level (sky/sky_light.h,
-// ObstacleLight::lit_as_the_point).
+// detailed model seen from afar) has none, nor a patch neither whose centre nor any of
+// whose lattice points lies on the plane's triangles (a corner of it over a wall's
+// window): one of many small parts, and a patch for each would cost a quadrature per
+// part; the integral that meets it lights it as itself, as past the last level
+// (sky/sky_light.h, ObstacleLight::lit_as_the_point).
 //
 // The sun's visibility is kept per patch too, as the share of the lattice's points on
 // the plane's triangles that see the sun (what the hits meet; points clamped onto a

@@ -56,14 +56,6 @@ class SkyLight {
   // quadrature (tests/sky/specular_sky_test.cpp, docs/sky-light.md).
   static constexpr double kSpecularElementPerRoughness = 0.5;
 
-  // `fog`, when given (a fog layer with multiple scattering), lights the points it
-  // covers instead of the sky: the diffuse irradiance there is the fog field's, each
-  // hidden direction seen through the fog (media/fog_surface_light.h); it is referred
-  // to, not copied. `shadowed_fog_sunlight`, when given with it, takes out of a shaded
-  // point's diffuse irradiance the sunlight the fog in the shadows around it does not
-  // scatter (media/fog_shadowed_sunlight.h): for the integrals of the points seen, not
-  // for the obstacles' own, so that an obstacle's light does not depend on which
-  // integral asked for it first.
   // How finely an integral resolves the sky within its elements.
   enum class Cells {
     // Each element's centre radiance for what an obstacle hides; the open sky from the
@@ -84,11 +76,19 @@ class SkyLight {
     kMeans,
     // The same means, with sub-cells traced apart only where an outline crosses an
     // element whose sub-cells differ (the aureole), and the outline not bisected: for
-    // values that stand for one pixel, where the rest cost a quarter of a model of
-    // many small parts' frame and moved its pixels by a tenth of a per cent
-    // (docs/sky-light.md, "The one-pixel level").
+    // values that stand for one pixel, where the rest cost an eighth of a model of many
+    // small parts' frame and moved the examples' pixels by a tenth of a per cent at most
+    // (docs/sky-light.md, "The one-pixel level's cells").
     kMeansAcrossTheAureole,
   };
+  // `fog`, when given (a fog layer with multiple scattering), lights the points it
+  // covers instead of the sky: the diffuse irradiance there is the fog field's, each
+  // hidden direction seen through the fog (media/fog_surface_light.h); it is referred
+  // to, not copied. `shadowed_fog_sunlight`, when given with it, takes out of a shaded
+  // point's diffuse irradiance the sunlight the fog in the shadows around it does not
+  // scatter (media/fog_shadowed_sunlight.h): for the integrals of the points seen, not
+  // for the obstacles' own, so that an obstacle's light does not depend on which
+  // integral asked for it first.
   SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
            std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections),
            const FogSurfaceLight* fog = nullptr, const FogShadowedSunlight* shadowed_fog_sunlight = nullptr,
@@ -196,7 +196,8 @@ class SkyLight {
   // the ground its whole mean was taken out, the sky above the horizon with it: shaded
   // walls read 0.9 % darker than the path tracer (docs/sky-light.md). On a surface whose
   // own horizon is the horizon (the ground) the sub-cells below it would meet the
-  // surface itself: there the centre stands for the element as before.
+  // surface itself: there the centre stands for the element as before. The horizon's
+  // elements are refined with Cells::kMeans only.
   bool refined(const CellGrid& c, const Vec3& normal) const;
   // With the cells' means: the open sky's irradiance Σ max(0, n·ω_i) dω_i L̄_i over normals n, on
   // a grid of elevation × azimuth (world frame), read bilinearly.
