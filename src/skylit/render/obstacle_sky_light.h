@@ -37,6 +37,7 @@
 // shadows above the point, all smooth) stays the hit's own.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -109,8 +110,22 @@ class ObstacleSkyLight {
   // (off the edges it shares), or none if no triangle of the plane is there.
   std::optional<Vec3> on_plane(uint32_t mesh, int32_t plane, const Vec3& point, const Vec3& normal) const;
 
+  // A thread's table of the patches it met last (`at`): where a key's value is in
+  // patches_ (whose elements never move).
+  struct Recent {
+    uint64_t owner = 0;  // the ObstacleSkyLight's serial_ (0: empty)
+    int level = 0;
+    PatchKey key{};
+    const std::optional<Patch>* value = nullptr;
+  };
+  static constexpr size_t kRecentPatches = 4096;
+  static std::array<Recent, kRecentPatches>& recent_patches();
+  const std::optional<Patch>& remember(Recent& recent, int level, const PatchKey& key,
+                                       const std::optional<Patch>& value) const;
+
   const Scene& scene_;
   const RayTracer& tracer_;
+  uint64_t serial_ = 0;                     // this object's, unique: the threads' tables tell objects apart by it
   std::vector<PlaneGroups> planes_;         // per object
   std::vector<double> patch_per_distance_;  // per level: an element's width, radians
   Integral integral_;
