@@ -184,9 +184,11 @@ TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
   // 19.2 %, 17.1 %, 15.4 % (docs/sky-light.md has what refusing more cells would give).
   // 2026-12-05 (a lone corner within its obstacles' reach): Fig. 7 2.3 %, 3.0 %, 2.4 %;
   // building 3.0 %, 3.4 %, 3.0 %; house 11.7 %, 13.1 %, 13.8 % (the rest its pixel-wide
-  // frames and sills).
+  // frames and sills). 2026-12-06 (deep cells' corners within 1 %, a sliver's nearest
+  // point within its obstacles' reach): Fig. 7 2.2 %, 2.0 %, 2.3 %; building 2.7 %,
+  // 3.2 %, 2.7 %; house 10.0 %, 11.8 %, 12.5 %.
   for (const auto& [example, bound] :
-       {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", kTolerance}, std::pair{"house.json", 0.16}})
+       {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", 0.035}, std::pair{"house.json", 0.14}})
     for (const auto& [width, height] : {std::pair{320, 180}, std::pair{480, 270}, std::pair{1920, 1080}}) {
       const CacheDeviation d = cache_deviation(example, width, height, width > 1000 ? 4 : 1);
       ASSERT_GT(d.pixels, 5000u);
