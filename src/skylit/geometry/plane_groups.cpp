@@ -34,16 +34,23 @@ std::array<long long, 4> rounded_plane(const Vec3& n, double offset) {
   return {std::llround(n.x * 1e4), std::llround(n.y * 1e4), std::llround(n.z * 1e4), std::llround(offset * 1e3)};
 }
 
+std::optional<TrianglePlane> triangle_plane(const TriangleMesh& mesh, size_t t) {
+  const auto& corners = mesh.triangles[t];
+  const Vec3 &a = mesh.vertices[corners[0]], &b = mesh.vertices[corners[1]], &c = mesh.vertices[corners[2]];
+  const Vec3 area_vector = cross(b - a, c - a);
+  const double twice_area = length(area_vector);
+  if (!(twice_area > 0)) return std::nullopt;
+  const Vec3 n = canonical_plane_normal(area_vector / twice_area);
+  return TrianglePlane{n, dot(n, a), 0.5 * twice_area};
+}
+
 PlaneGroups::PlaneGroups(const TriangleMesh& mesh) : plane_of_triangle_(mesh.triangles.size(), -1) {
   std::unordered_map<PlaneKey, int32_t, PlaneKeyHash> plane_of_key;
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& corners = mesh.triangles[t];
-    const Vec3 &a = mesh.vertices[corners[0]], &b = mesh.vertices[corners[1]], &c = mesh.vertices[corners[2]];
-    const Vec3 area_vector = cross(b - a, c - a);
-    const double twice_area = length(area_vector);
-    if (!(twice_area > 0)) continue;
-    const Vec3 n = canonical_plane_normal(area_vector / twice_area);
-    const double offset = dot(n, a);
+    const std::optional<TrianglePlane> triangle = triangle_plane(mesh, t);
+    if (!triangle) continue;
+    const Vec3& n = triangle->normal;
+    const double offset = triangle->offset;
     const auto [it, added] = plane_of_key.try_emplace(rounded_plane(n, offset), static_cast<int32_t>(planes_.size()));
     if (added) {
       // The first triangle's normal and offset stand for the plane; e1 level (in a level
@@ -55,7 +62,7 @@ PlaneGroups::PlaneGroups(const TriangleMesh& mesh) : plane_of_triangle_(mesh.tri
       planes_.push_back({n, offset * n, e1, cross(n, e1), 0});
     }
     plane_of_triangle_[t] = it->second;
-    planes_[static_cast<size_t>(it->second)].area_m2 += 0.5 * twice_area;
+    planes_[static_cast<size_t>(it->second)].area_m2 += triangle->area_m2;
   }
 }
 

@@ -7,7 +7,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "skylit/core/vec3.h"
@@ -22,6 +24,15 @@ Vec3 canonical_plane_normal(const Vec3& n);
 // The plane n·x = offset (n canonical) rounded to its tolerance: the normal's
 // components to 1e-4 and the offset to 1 mm (far below any facade's size).
 std::array<long long, 4> rounded_plane(const Vec3& n, double offset);
+
+// The plane a triangle lies in: n·x = offset with n canonical, and the triangle's area.
+struct TrianglePlane {
+  Vec3 normal;
+  double offset = 0;
+  double area_m2 = 0;
+};
+// Triangle `t` of `mesh`'s plane; none for a degenerate triangle.
+std::optional<TrianglePlane> triangle_plane(const TriangleMesh& mesh, size_t t);
 
 class PlaneGroups {
  public:

@@ -96,7 +96,7 @@ class ObstacleSkyLight {
   struct PatchKey {
     uint32_t mesh;
     int32_t plane;    // PlaneGroups' index
-    int32_t a, b;     // the patch's square in the triangle's plane
+    int32_t a, b;     // the patch's square in the plane's frame (e1, e2)
     int8_t exponent;  // its side is 2^exponent m
     bool back;        // met on the side the geometric normal points away from
     bool operator==(const PatchKey&) const = default;

@@ -60,16 +60,13 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
     for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
       const uint32_t material = object.material_of(t);
       if (!reflects_sun(scene.materials[material].material)) continue;
-      const auto& tri = mesh.triangles[t];
-      const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-      const Vec3 area_normal = cross(b - a, c - a);
-      const double twice_area = length(area_normal);
-      if (!(twice_area > 0)) continue;
-      const Vec3 n = canonical_plane_normal(area_normal / twice_area);
+      const std::optional<TrianglePlane> triangle = triangle_plane(mesh, t);
+      if (!triangle) continue;
+      const Vec3& n = triangle->normal;
       const auto [group_it, new_group] =
-          group_of_plane.try_emplace(plane_key(material, n, dot(n, a)), static_cast<int32_t>(groups_.size()));
+          group_of_plane.try_emplace(plane_key(material, n, triangle->offset), static_cast<int32_t>(groups_.size()));
       if (new_group) {
-        groups_.push_back({n, dot(n, a)});
+        groups_.push_back({n, triangle->offset});
         const auto [class_it, new_class] =
             class_of_orientation.try_emplace(plane_key(material, n, 0), static_cast<int32_t>(classes_.size()));
         if (new_class) {
@@ -79,7 +76,7 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
         class_of_group_.push_back(class_it->second);
       }
       OrientationClass& orientation = classes_[static_cast<size_t>(class_of_group_[group_it->second])];
-      for (const Vec3* v : {&a, &b, &c}) orientation.box.add(*v);
+      for (const uint32_t v : mesh.triangles[t]) orientation.box.add(mesh.vertices[v]);
       if (triangle_group_[o].empty()) triangle_group_[o].assign(mesh.triangles.size(), -1);
       triangle_group_[o][t] = group_it->second;
     }
