@@ -612,7 +612,8 @@ TEST(MultipleScattering, ScatteringOrdersMatchTheSunlitLineEstimatorAtTwilight) 
   // orders ≥ 2 (the seeds are fixed: a result that passes keeps passing). Measured
   // (2026-12-05): −2.1 ± 0.7 … +0.4 ± 0.4 % at −4°, −7.1 ± 3.9 … +8.9 ± 2.8 % at −8°;
   // with four times these paths (819,200 per view, σ 1.0–2.6 %) every view at −8° is
-  // within −2.7 … +5.2 %.
+  // within −2.7 … +5.2 %; with sixteen times (3,276,800, σ 0.5–1.2 %, 2026-12-06)
+  // within −2.5 … +4.9 % (the zenith at 450 nm), and −4° within −2.1 … −0.1 %.
   // Equal bands of μ instead of the ones crowded toward the horizon and the poles failed
   // it: −12.0 ± 2.5 % at −8° (−13.3 ± 1.1 % with four times the paths).
   const MonteCarloResults& mc = monte_carlo(true);
