@@ -165,11 +165,15 @@ TEST(SkyLightCacheExamples, Fig7CacheAddsLittleToTheQuadraturesOwnError) {
 // after; the rest is the window frames and sills a pixel wide, which the heavy test
 // below bounds too. A sliver's nearest grid point kept within its obstacles' reach as
 // well (2026-12-06): 11.2 → 10.3 %, the worst pixel 4.77 → 0.82 of the exact value
-// off (the roof's edge had taken a point's value from beside a standing seam). 2 s.
+// off (the roof's edge had taken a point's value from beside a standing seam). A lone
+// corner no longer stands in at all on the grids (later that day): 10.0 → 7.2 % (the
+// wall under the eaves had taken a corner's value from lower down, 10–20 % too bright;
+// what is left is mostly the pixels beside frames, sills and the roof's seams). The
+// bound leaves 1.3 points. 2 s.
 TEST(SkyLightCacheExamples, ALoneCornerDoesNotStandInAcrossARecess) {
   const CacheDeviation d = cache_deviation("house.json", 320, 180, 1);
   ASSERT_GT(d.pixels, 5000u);
-  EXPECT_LT(d.p99, 0.12);
+  EXPECT_LT(d.p99, 0.085);
 }
 
 TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
@@ -186,7 +190,9 @@ TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
   // building 3.0 %, 3.4 %, 3.0 %; house 11.7 %, 13.1 %, 13.8 % (the rest its pixel-wide
   // frames and sills). 2026-12-06 (deep cells' corners within 1 %, a sliver's nearest
   // point within its obstacles' reach): Fig. 7 2.2 %, 2.0 %, 2.3 %; building 2.7 %,
-  // 3.2 %, 2.7 %; house 10.0 %, 11.8 %, 12.5 %.
+  // 3.2 %, 2.7 %; house 10.0 %, 11.8 %, 12.5 %. Later that day (a lone corner refused on
+  // the grids; 1920 × 1080 every 2nd pixel): Fig. 7 2.0 %, 1.9 %, 2.4 %; building 2.4 %,
+  // 3.1 %, 2.6 %; house 7.2 %, 9.4 % at the small sizes.
   for (const auto& [example, bound] :
        {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", 0.035}, std::pair{"house.json", 0.14}})
     for (const auto& [width, height] : {std::pair{320, 180}, std::pair{480, 270}, std::pair{1920, 1080}}) {

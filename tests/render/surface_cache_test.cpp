@@ -213,5 +213,37 @@ TEST(SurfaceCache, ASliverTakesANeighboursValueOnlyWithinItsObstaclesReach) {
   EXPECT_EQ(near.pixel_points(), far.pixel_points() + 1);
 }
 
+TEST(SurfaceCache, ALoneCornerStandsInForNoPointOnTheGrids) {
+  // The narrow view from above (0.18 m a pixel) of a plane of one material but for two
+  // squares of another: pixels 14–21 (one coarse grid point on it, (16, 16), and four
+  // fine ones) and pixels 40–41 (one fine grid point, (40, 40), and no coarse one). The
+  // value changes along the plane and the obstacles are far (value_at: no obstacle
+  // distance), so within its obstacles' reach a lone corner would have stood in for its
+  // whole cell (until 2026-12-06). Now the first square's point at pixel (19, 19) is
+  // interpolated from its four fine corners (value_at is linear: exact), and the second
+  // square's point at (41, 41) gets its own centre.
+  const Camera narrow{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 5.0};
+  const ImageCamera camera(narrow, kWidth, kHeight);
+  const PrimaryHits hits(camera, kWidth, kHeight, [&](const Ray& ray) {
+    const double t = -ray.origin.z / ray.direction.z;
+    const Vec3 p = ray.origin + t * ray.direction;
+    const auto pixel = camera.project(p);
+    const int x = static_cast<int>(std::floor(pixel->first)), y = static_cast<int>(std::floor(pixel->second));
+    const bool first = x >= 14 && x <= 21 && y >= 14 && y <= 21, second = x >= 40 && x <= 41 && y >= 40 && y <= 41;
+    return PrimaryHit{0, SurfacePoint{p, {0, 0, 1}, t, first || second ? 1u : 0u}};
+  });
+  const SurfaceCache cache(hits, value_at);
+  const SurfacePoint& in_first = *hits.surface(19, 19);
+  const float lone_coarse = value_at(*hits.surface(16, 16)).diffuse_irradiance[0];
+  const float own_first = value_at(in_first).diffuse_irradiance[0];
+  ASSERT_GT(std::abs(own_first - lone_coarse), 0.3f);  // 3 pixels apart in x and y
+  EXPECT_NEAR(cache.interpolate(19.5, 19.5, in_first)->diffuse_irradiance[0], own_first, 0.01f);
+  const SurfacePoint& in_second = *hits.surface(41, 41);
+  const float lone_fine = value_at(*hits.surface(40, 40)).diffuse_irradiance[0];
+  const float own_second = value_at(in_second).diffuse_irradiance[0];
+  ASSERT_GT(std::abs(own_second - lone_fine), 0.1f);
+  EXPECT_FLOAT_EQ(cache.interpolate(41.5, 41.5, in_second)->diffuse_irradiance[0], own_second);
+}
+
 }  // namespace
 }  // namespace skylit

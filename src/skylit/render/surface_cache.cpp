@@ -69,17 +69,19 @@ SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double 
     }
   // Corners whose sky light disagrees lie across a change the cell cannot follow. Fewer
   // than four corners on the surface cannot show how it changes across the cell, so
-  // they must also lie near the point; a lone corner shows nothing of it, and stands
-  // in only within its obstacles' reach (a recessed door's edge, part of its sky hidden
-  // by the reveal, stood for the door's middle).
+  // they must also lie near the point. A lone corner shows nothing of it and stands in
+  // for no point on the grids: its obstacles' reach (Ward's validity radius, which it
+  // had to be within until 2026-12-06) is its own, and a point in its cell closer to a
+  // small obstacle than it (a window's glass beside the frame, a wall under the eaves,
+  // a recessed door's edge) sees less sky (measured in cache_corner_agreement.h).
   // In a cell that spans much depth, near obstacles, corners farther than their reach
   // must agree closely (cache_corner_agreement.h). The per-pixel level's corners are a
   // pixel apart: nothing finer to go to.
   const std::span<const double> lx(corner_lx.data(), count);
   const bool near_obstacles = spacing_ > 1 && depth_span > kDepthSpan && !all_within_obstacle_reach &&
                               !corners_agree(lx, kCloseSpread, other_lx);
-  const bool lone_beyond_reach = spacing_ > 1 && count == 1 && !all_within_obstacle_reach;
-  const bool partial_usable = all_within_reach && !lone_beyond_reach;
+  const bool lone_on_a_grid = spacing_ > 1 && count == 1;
+  const bool partial_usable = all_within_reach && !lone_on_a_grid;
   out.refused =
       count > 0 && (near_obstacles || !(count == 4 || partial_usable) || !corners_agree(lx, kCornerSpread, other_lx));
   out.usable = count > 0 && !out.refused;
