@@ -176,6 +176,20 @@ TEST(SurfaceCache, SkyLightOutshoneByThePixelsOtherLightNeedsNoFinerLevel) {
   EXPECT_GT(from_17.fine_points() + from_17.pixel_points(), 0);
 }
 
+// A plane seen from above through a narrow view (0.18 m a pixel), of material 0 but
+// where `other(x, y)` holds for the pixel: material 1.
+template <typename Other>
+PrimaryHits hits_of_narrow_view(const Other& other) {
+  const ImageCamera camera(Camera{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 5.0}, kWidth, kHeight);
+  return PrimaryHits(camera, kWidth, kHeight, [&](const Ray& ray) {
+    const double t = -ray.origin.z / ray.direction.z;
+    const Vec3 p = ray.origin + t * ray.direction;
+    const auto pixel = camera.project(p);
+    const int x = static_cast<int>(std::floor(pixel->first)), y = static_cast<int>(std::floor(pixel->second));
+    return PrimaryHit{0, SurfacePoint{p, {0, 0, 1}, t, other(x, y) ? 1u : 0u}};
+  });
+}
+
 TEST(SurfaceCache, ASliverTakesANeighboursValueOnlyWithinItsObstaclesReach) {
   // A plane seen from above through a narrow view (0.18 m a pixel, so that a grid
   // point 5 pixels away is within the cache's reach on screen) is of one material but
@@ -183,16 +197,7 @@ TEST(SurfaceCache, ASliverTakesANeighboursValueOnlyWithinItsObstaclesReach) {
   // has no corner on it. The second takes the first's value as a sliver of its surface
   // when the first's obstacles are far (5 km: it stands for points within 500 m); when
   // they are 1 m away (within 0.1 m) it gets a point of its own.
-  const Camera narrow{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 5.0};
-  const ImageCamera camera(narrow, kWidth, kHeight);
-  const PrimaryHits hits(camera, kWidth, kHeight, [&](const Ray& ray) {
-    const double t = -ray.origin.z / ray.direction.z;
-    const Vec3 p = ray.origin + t * ray.direction;
-    const auto pixel = camera.project(p);
-    const int x = static_cast<int>(std::floor(pixel->first)), y = static_cast<int>(std::floor(pixel->second));
-    const bool other = (x == 8 && y == 8) || (x == 13 && y == 9);
-    return PrimaryHit{0, SurfacePoint{p, {0, 0, 1}, t, other ? 1u : 0u}};
-  });
+  const PrimaryHits hits = hits_of_narrow_view([](int x, int y) { return (x == 8 && y == 8) || (x == 13 && y == 9); });
   ASSERT_EQ(hits.surface(8, 8)->material, 1u);
   ASSERT_EQ(hits.surface(13, 9)->material, 1u);
   auto with_obstacles_at = [](double obstacle_m) {
@@ -222,15 +227,8 @@ TEST(SurfaceCache, ALoneCornerStandsInForNoPointOnTheGrids) {
   // whole cell (until 2026-12-06). Now the first square's point at pixel (19, 19) is
   // interpolated from its four fine corners (value_at is linear: exact), and the second
   // square's point at (41, 41) gets its own centre.
-  const Camera narrow{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 5.0};
-  const ImageCamera camera(narrow, kWidth, kHeight);
-  const PrimaryHits hits(camera, kWidth, kHeight, [&](const Ray& ray) {
-    const double t = -ray.origin.z / ray.direction.z;
-    const Vec3 p = ray.origin + t * ray.direction;
-    const auto pixel = camera.project(p);
-    const int x = static_cast<int>(std::floor(pixel->first)), y = static_cast<int>(std::floor(pixel->second));
-    const bool first = x >= 14 && x <= 21 && y >= 14 && y <= 21, second = x >= 40 && x <= 41 && y >= 40 && y <= 41;
-    return PrimaryHit{0, SurfacePoint{p, {0, 0, 1}, t, first || second ? 1u : 0u}};
+  const PrimaryHits hits = hits_of_narrow_view([](int x, int y) {
+    return (x >= 14 && x <= 21 && y >= 14 && y <= 21) || (x >= 40 && x <= 41 && y >= 40 && y <= 41);
   });
   const SurfaceCache cache(hits, value_at);
   const SurfacePoint& in_first = *hits.surface(19, 19);
