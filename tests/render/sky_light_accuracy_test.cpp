@@ -70,9 +70,12 @@ TEST(SkyLightAccuracy, CacheAndSliverSamplesStayCloseToTheExactSkyLight) {
   // cache's: sky light taken from a neighbouring point of the same material and plane
   // (window frames and roof facets a pixel wide). The bounds leave those a margin of
   // 2.5 points; a systematic error (a wrong direction set, a misplaced look-up) moves
-  // the mean by percents.
+  // the mean by percents. 2026-12-06, with the one-pixel level, the tiles' sliver values
+  // and a lone cache corner refused on the grids: mean ratio 1.00061, 99th percentile
+  // 6.06 %, 1.22 % of pixels beyond 5 % (8.5 % and 1.66 % the day before); the bound
+  // keeps the 2.5 points.
   EXPECT_NEAR(mean, 1.0, 0.005);
-  EXPECT_LT(p99, 0.20);
+  EXPECT_LT(p99, 0.085);
 }
 
 }  // namespace
