@@ -129,10 +129,11 @@ const SurfaceCache::Grid::Stored* SurfaceCache::Grid::nearest(double x, double y
       const Stored* e = stored(cx, cy);
       if (!e || !same_surface(e->point, point) || !within_reach(e->point, point)) continue;
       // A single point shows nothing of how the light changes away from it: on the
-      // grids it stands in only within its obstacles' reach, as a lone corner does (a
-      // roof's point beside a standing seam, 7 cm from it, gave its sixth of the roof's
-      // sky light to the roof's edge 0.6 m away). The per-pixel level's points are a
-      // pixel or two apart: nothing finer to go to.
+      // grids it stands in only within its obstacles' reach (a roof's point beside a
+      // standing seam, 7 cm from it, gave its sixth of the roof's sky light to the roof's
+      // edge 0.6 m away). Unlike a lone corner, which stands in for nothing on the grids,
+      // it is a sliver's only source short of an integral of its own. The per-pixel
+      // level's points are a pixel or two apart: nothing finer to go to.
       if (spacing_ > 1 && !within_obstacle_reach(e->point, e->value.obstacle_distance_m, point)) continue;
       const double d = std::hypot(pixel_x(cx) + 0.5 - x, pixel_y(cy) + 0.5 - y);
       if (!best || d < best_distance) {  // ties keep the first in scan order: deterministic
