@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "skylit/sun/delta_t.h"
@@ -191,6 +192,17 @@ TEST(SolarDeltaT, ContinuousAcrossIntervalsAndYearOfJulianDay) {
     EXPECT_NEAR(delta_t_estimate_s(boundary - 1e-9), delta_t_estimate_s(boundary + 1e-9), 5.0) << boundary;
   EXPECT_NEAR(decimal_year_of_julian_day(2451545.0), 2000.0, 1e-12);
   EXPECT_NEAR(decimal_year_of_julian_day(julian_day_ut({2026, 7, 2, 12, 0, 0, 0})), 2026.5, 0.01);
+}
+
+// The great circle of the mean sphere (R = 6371.0088 km): a degree of a meridian is
+// 2πR/360, a quarter of the equator πR/2; the order of the sites does not matter.
+TEST(SurfaceDistance, MeridianDegreeAndQuarterEquatorAsTheSpheresClosedForm) {
+  constexpr double kR = 6371.0088;
+  EXPECT_NEAR(surface_distance_km({52, 4.4, 0}, {53, 4.4, 0}), 2 * std::numbers::pi * kR / 360, 1e-9);
+  EXPECT_NEAR(surface_distance_km({0, -45, 0}, {0, 45, 0}), std::numbers::pi * kR / 2, 1e-9);
+  EXPECT_NEAR(surface_distance_km({-33.9, 151.2, 0}, {51.5, -0.1, 0}),
+              surface_distance_km({51.5, -0.1, 0}, {-33.9, 151.2, 0}), 1e-9);
+  EXPECT_EQ(surface_distance_km({10, 20, 0}, {10, 20, 5}), 0);
 }
 
 }  // namespace

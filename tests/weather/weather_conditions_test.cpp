@@ -113,6 +113,48 @@ TEST(WeatherConditions, ClearHoursOfTheSharedFileMatchTheModel) {
   EXPECT_EQ(checked, all ? 102 : 2);
 }
 
+// A station's weather placed at a site elsewhere: the sun as seen from the site at the
+// record's instant (the hour's middle in the file's standard time), the site's own
+// elevation for the air, and how far the station lies.
+TEST(WeatherConditions, TheSunStandsAsSeenFromTheSiteAtTheRecordsInstant) {
+  const EpwFile file = parse_epw(epw_fixture(), "fixture.epw");
+  Scene scene;
+  const SiteLocation site{52.0, 4.37, 3};
+  apply_weather_hour(file, epw_hour_containing(file, 6, 21, 13, 0, "test"), scene, site);
+  SpaOptions air;
+  air.pressure_mbar = 1013, air.temperature_c = 20;
+  const SolarPosition sun = solar_position(site, parse_offset_date_time("2001-06-21T12:30-03:30", "t"), air);
+  EXPECT_NEAR(scene.sun.altitude_deg, sun.altitude_deg, 1e-9);
+  EXPECT_NEAR(scene.sun.azimuth_deg, sun.azimuth_deg, 1e-9);
+  EXPECT_DOUBLE_EQ(scene.atmosphere.site_elevation_m, 3);
+  ASSERT_TRUE(scene.site && scene.weather);
+  EXPECT_EQ(scene.site->latitude_deg, 52.0);
+  EXPECT_NEAR(scene.weather->station_distance_km, surface_distance_km(site, {48.5, -2.25, 0}), 1e-9);
+  // Without a site the station is the site.
+  EXPECT_EQ(scene_for(file, 6, 21, 13).weather->station_distance_km, 0);
+}
+
+// A visibility beyond what clean air allows (Rayleigh scattering alone, about 320 km at
+// 550 nm; files write 999 for "unlimited") leaves the scene's aerosol; 200 km gives a
+// small one.
+TEST(WeatherConditions, AVisibilityBeyondCleanAirsOwnLeavesTheAerosol) {
+  for (const auto& [visibility, unchanged] : {std::pair{"999.0", true}, std::pair{"200.0", false}}) {
+    EpwRecordFields night;
+    night.day = 26, night.hour = 1, night.visibility = visibility;
+    night.ghi = night.dni = night.dhi = night.gh_lux = night.dn_lux = night.dh_lux = "0";
+    const EpwFile file = parse_epw(epw_fixture({night}), "fixture.epw");
+    Scene scene;
+    scene.atmosphere.aerosol.aod_550 = 0.123;
+    apply_weather_hour(file, epw_hour_containing(file, 6, 26, 1, 0, "test"), scene);
+    if (unchanged) {
+      EXPECT_EQ(scene.atmosphere.aerosol.aod_550, 0.123) << visibility;
+    } else {
+      EXPECT_GT(scene.atmosphere.aerosol.aod_550, 0.001) << visibility;
+      EXPECT_LT(scene.atmosphere.aerosol.aod_550, 0.05) << visibility;
+    }
+  }
+}
+
 TEST(WeatherConditions, TheSceneFileTakesAnHourAndInfoReportsIt) {
   const testing::TempDir dir;
   dir.write("site.epw", epw_fixture());
@@ -144,6 +186,45 @@ TEST(WeatherConditions, TheSceneFileTakesAnHourAndInfoReportsIt) {
   EXPECT_EQ(missing.exit_status, 2);
   EXPECT_NE(missing.output.find("has no record for 07-01T10:00"), std::string::npos) << missing.output;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.png"));
+}
+
+// A city model in a weather scene is placed around the scene's site, or its own centre;
+// never around the weather station, which may lie hundreds of kilometres away (the
+// fixture's is in Brittany, the example block in the Netherlands). A far station is
+// said on stderr; the render still goes ahead.
+TEST(WeatherConditions, ACityModelStaysWhereItIsAndAFarStationIsSaid) {
+  const testing::TempDir dir;
+  dir.write("site.epw", epw_fixture());
+  const std::string model = "\"" + std::string(SKYLIT_SOURCE_DIR) + "/examples/models/city_block.city.json\"";
+  auto scene_with = [&](const std::string& site) {
+    return dir.write("scene.json", R"({
+  "camera": {"position": [0, -80, 2], "look_at": [0, 0, 3]},
+  "weather": {"epw": "site.epw", "hour": "06-21T12:30"},)" + site + R"(
+  "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
+  "objects": [{"type": "plane", "material": "white", "size_m": 200},
+              {"name": "block", "type": "city", "file": )" + model + R"(}],
+  "render": {"width": 8, "height": 6}
+})");
+  };
+  const testing::CommandResult own = testing::run_skylit("info " + testing::quoted(scene_with("")));
+  EXPECT_EQ(own.exit_status, 0) << own.output;
+  EXPECT_NE(own.output.find("(the model's centre: no site given)"), std::string::npos) << own.output;
+  EXPECT_NE(own.output.find("warning: weather: the file's station lies"), std::string::npos) << own.output;
+  EXPECT_EQ(own.output.find("from the site:"), std::string::npos) << own.output;  // the block stands at the origin
+  // A site beside the station: the block is placed around it, so it lies far from the
+  // site (and is said to), and the station is near.
+  const testing::CommandResult beside = testing::run_skylit(
+      "info " + testing::quoted(scene_with(R"("site": {"latitude_deg": 48.55, "longitude_deg": -2.25},)")));
+  EXPECT_EQ(beside.exit_status, 0) << beside.output;
+  EXPECT_NE(beside.output.find("(the scene's site)"), std::string::npos) << beside.output;
+  EXPECT_NE(beside.output.find("5.6 km from the site"), std::string::npos) << beside.output;
+  EXPECT_EQ(beside.output.find("warning: weather:"), std::string::npos) << beside.output;
+  EXPECT_NE(beside.output.find("warning: object 'block' lies"), std::string::npos) << beside.output;
+  // The sun and time are still the weather file's alone.
+  const testing::CommandResult both = testing::run_skylit(
+      "info " + testing::quoted(scene_with(R"("time": "2001-06-21T12:00+01:00",)")));
+  EXPECT_EQ(both.exit_status, 2);
+  EXPECT_NE(both.output.find("give either a weather file's hour or the time"), std::string::npos) << both.output;
 }
 
 }  // namespace

@@ -19,6 +19,9 @@ struct WeatherSummary {
   std::string file;
   std::string station;  // city, country, source and WMO number as the file gives them
   double latitude_deg = 0, longitude_deg = 0, time_zone_h = 0, elevation_m = 0;
+  // How far the station lies from the site the sun is placed for (0 when no site but the
+  // station's was given).
+  double station_distance_km = 0;
   std::string record;                  // which record, e.g. "06-21 hour 13 (12:00-13:00 standard time), line 4116"
   std::string sun_time;                // the instant the sun is placed at (the hour's middle), ISO 8601
   std::vector<std::string> missing;    // this record's fields that were missing or out of range

@@ -210,4 +210,13 @@ SolarPosition solar_position(const SiteLocation& site, const OffsetDateTime& tim
   return solar_position(site, julian_day_ut(time), options);
 }
 
+double surface_distance_km(const SiteLocation& a, const SiteLocation& b) {
+  constexpr double kMeanRadiusKm = 6371.0088;  // IUGG R1 of GRS 80
+  const double phi_a = radians(a.latitude_deg), phi_b = radians(b.latitude_deg);
+  const double half_dphi = 0.5 * (phi_b - phi_a), half_dlambda = 0.5 * radians(b.longitude_deg - a.longitude_deg);
+  const double h = std::sin(half_dphi) * std::sin(half_dphi) +
+                   std::cos(phi_a) * std::cos(phi_b) * std::sin(half_dlambda) * std::sin(half_dlambda);
+  return 2 * kMeanRadiusKm * std::asin(std::sqrt(std::clamp(h, 0.0, 1.0)));
+}
+
 }  // namespace skylit

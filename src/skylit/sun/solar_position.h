@@ -25,6 +25,11 @@ struct SiteLocation {
   double elevation_m = 0;    // above mean sea level
 };
 
+// The distance between two sites along the earth's surface, km: the great circle of the
+// mean sphere (haversine), within 0.5 % of the ellipsoid's geodesic; for saying how far
+// a weather station lies from the site, not for placing anything.
+double surface_distance_km(const SiteLocation& a, const SiteLocation& b);
+
 struct SpaOptions {
   // TT − UT in seconds. Unset: estimated from the date (delta_t.h, Espenak & Meeus).
   std::optional<double> delta_t_s;

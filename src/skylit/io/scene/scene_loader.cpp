@@ -150,7 +150,8 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   const auto weather = root.optional("weather");
   bool sun_needs_site = false;
   if (weather) {
-    for (const char* key : {"sun", "site", "time"})
+    // The site may be given: the file's station is often tens of kilometres from it.
+    for (const char* key : {"sun", "time"})
       if (root.has(key)) root.required(key).fail("give either a weather file's hour or the " + std::string(key));
     if (auto a = root.optional("atmosphere")) scene.atmosphere = read_atmosphere(*a);
   } else {
@@ -159,16 +160,18 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   if (auto sky = root.optional("sky")) scene.atmosphere.cie_sky = read_sky(*sky, weather.has_value());
   if (auto fog = root.optional("fog")) scene.fog = read_fog(*fog);
   if (auto clouds = root.optional("clouds")) read_clouds(*clouds, scene);
-  // After the scene's own sky, fog and clouds, which the weather leaves as they are.
-  if (weather) read_weather(*weather, base_dir, scene);
-  // A city model without a site (and no weather file's) gives it.
-  std::optional<SiteLocation> site = weather ? scene.site : read_scene_site(root);
+  // A city model is placed around the scene's site, or else its own centre becomes the
+  // site; never the weather station's, which may lie far away.
+  std::optional<SiteLocation> site = read_scene_site(root);
   scene.materials = read_materials(root.required("materials"));
   std::vector<MaterialOverride> overrides;
   if (auto o = root.optional("material_overrides")) overrides = read_material_overrides(*o, scene.materials);
   scene.material_override_count = overrides.size();
   scene.objects = read_objects(root.required("objects"), scene.materials, overrides, base_dir,
                                scene.unused_material_overrides, site);
+  // After the scene's own sky, fog and clouds, which the weather leaves as they are; the
+  // sun for the site, or the station's where nothing gave one.
+  if (weather) read_weather(*weather, base_dir, scene, site);
   if (sun_needs_site) place_sun(root, site, scene);
   read_moon_and_night_sky(root, scene);
   if (auto lights = root.optional("lights")) scene.lights = read_lights(*lights, base_dir);

@@ -35,9 +35,11 @@ std::vector<Probe> read_probes(const JsonReader& probes);
 // projection's vertical_fov_deg and focal length, which read_camera reads).
 void read_camera_projection(const JsonReader& camera_block, Camera& camera);
 void read_clouds(const JsonReader& clouds, Scene& scene);
-// `weather`: an EPW file's hour sets the site, sun, air, sky, clouds, fog and ground
+// `weather`: an EPW file's hour sets the sun, air, sky, clouds, fog and ground, and the
+// site where `site` (the scene's, or a city model's centre) gives none
 // (io/weather/weather_conditions.h); the file is relative to base_dir.
-void read_weather(const JsonReader& weather, const std::filesystem::path& base_dir, Scene& scene);
+void read_weather(const JsonReader& weather, const std::filesystem::path& base_dir, Scene& scene,
+                  const std::optional<SiteLocation>& site);
 // `sky`: "physical" (the model's own, empty) or a CIE standard general sky.
 std::optional<CieSkySettings> read_sky(const JsonReader& sky, bool weather_gives_diffuse);
 std::vector<NamedMaterial> read_materials(const JsonReader& materials);

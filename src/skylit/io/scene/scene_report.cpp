@@ -47,6 +47,19 @@ void check_model_placement(const SceneObject& object, std::vector<std::string>& 
     warnings.push_back(who + formatted(" is only %.3f m across: is the file in another unit? Set \"units\"", largest));
 }
 
+// A city model is placed by its coordinates around the site: far from it, the site is
+// probably wrong (another city's, or a weather station's far away), and the earth's
+// curvature puts the model kilometres below the horizon.
+void check_city_placement(const SceneObject& object, std::vector<std::string>& warnings) {
+  const BoundingBox box = object.mesh.bounds();
+  if (box.empty()) return;
+  const Vec3 c = box.center();
+  const double distance = std::hypot(c.x, c.y);
+  if (distance > kFarFromOrigin_m)
+    warnings.push_back("object " + quoted(object.name) +
+                       formatted(" lies %.1f km from the site: is the scene's site the model's?", distance / 1e3));
+}
+
 // Inside a closed mesh, every ray from the camera leaves through the back of a face.
 // Fourteen directions (the cube's faces and corners) leave no way out unseen.
 void check_camera_inside(const Scene& scene, const RayTracer& tracer, std::vector<std::string>& warnings) {
@@ -155,6 +168,7 @@ std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
                          " texture image(s) of the city model not found beside its file (the first: " +
                          quoted(missing.front()) + "); their surfaces take their material or class's instead");
     }
+    if (object.city) check_city_placement(object, warnings);
     if (!object.source) continue;  // boxes and planes are where the user put them
     check_model_placement(object, warnings);
     for (const std::string& library : object.source->missing_libraries)
@@ -166,6 +180,14 @@ std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
           warnings.push_back("object " + quoted(object.name) + ": material " + quoted(m.file_name) +
                              " matched no override; used as the file describes it");
   }
+  // A station's hourly weather stands for its region's: beyond some 50 km, clouds, fog
+  // and haze commonly differ (a coast, a mountain range), and beyond a few hundred the
+  // file is probably the wrong one.
+  constexpr double kFarStationKm = 50;
+  if (scene.weather && scene.weather->station_distance_km > kFarStationKm)
+    warnings.push_back(formatted("weather: the file's station lies %.0f km from the site; its weather is taken as "
+                                 "the site's (a nearer station's file would be truer)",
+                                 scene.weather->station_distance_km));
   for (const std::string& pattern : scene.unused_material_overrides)
     warnings.push_back("material_overrides: pattern " + quoted(pattern) + " matched no material of any file");
   if (check_camera && !scene.objects.empty()) {

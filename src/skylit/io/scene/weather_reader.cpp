@@ -33,13 +33,14 @@ HourOfYear parse_hour_of_year(const JsonReader& j) {
 
 }  // namespace
 
-void read_weather(const JsonReader& j, const std::filesystem::path& base_dir, Scene& scene) {
+void read_weather(const JsonReader& j, const std::filesystem::path& base_dir, Scene& scene,
+                  const std::optional<SiteLocation>& site) {
   j.allow_only({"epw", "hour"});
   const std::filesystem::path file = base_dir / j.required("epw").string();
   const HourOfYear h = parse_hour_of_year(j.required("hour"));
   const EpwFile epw = read_epw(file);
   const EpwHour& record = epw_hour_containing(epw, h.month, h.day, h.hour, h.minute, j.source() + ": " + j.path());
-  apply_weather_hour(epw, record, scene);
+  apply_weather_hour(epw, record, scene, site);
 }
 
 std::optional<CieSkySettings> read_sky(const JsonReader& j, bool weather_gives_diffuse) {

@@ -89,8 +89,18 @@ void fit_aerosol(AtmosphereSettings& air, double sun_elevation_rad, double targe
 }
 
 void aerosol_from_visibility(const EpwHour& hour, AtmosphereSettings& air, WeatherSummary& summary, const char* why) {
-  if (hour.visibility_km && *hour.visibility_km >= kFogBelowKm) {
-    air.aerosol.aod_550 = aod_550_from_visibility(std::min(*hour.visibility_km, 1000.0), air.aerosol.scale_height_m);
+  // A visibility at or beyond the clean air's own (Rayleigh scattering alone: about 320 km
+  // at 550 nm) says nothing of the aerosol: files write 999 km for "unlimited".
+  const double from_visibility =
+      hour.visibility_km ? aod_550_from_visibility(std::min(*hour.visibility_km, 1000.0), air.aerosol.scale_height_m)
+                         : 0;
+  if (hour.visibility_km && *hour.visibility_km >= kFogBelowKm && from_visibility <= 0) {
+    summary.decisions.push_back(
+        std::string("aerosol: ") + why +
+        formatted("; aod_550 = %.3f as the scene gives it (the visibility of %.1f km is beyond clean air's own)",
+                  air.aerosol.aod_550, *hour.visibility_km));
+  } else if (hour.visibility_km && *hour.visibility_km >= kFogBelowKm) {
+    air.aerosol.aod_550 = from_visibility;
     summary.decisions.push_back(
         std::string("aerosol: ") + why +
         formatted("; aod_550 = %.3f from the visibility of %.1f km (haze)", air.aerosol.aod_550, *hour.visibility_km));
@@ -124,7 +134,8 @@ CloudLayerSettings cloud_layer_for(const EpwHour& hour, double coverage) {
 
 }  // namespace
 
-void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene) {
+void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
+                        const std::optional<SiteLocation>& scene_site) {
   const EpwLocation& where = file.location;
   WeatherSummary summary;
   summary.file = file.name;
@@ -147,7 +158,10 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene) 
   SpaOptions options;
   if (hour.pressure_pa) options.pressure_mbar = *hour.pressure_pa / 100;
   if (hour.dry_bulb_c) options.temperature_c = *hour.dry_bulb_c;
-  const SiteLocation site{where.latitude_deg, where.longitude_deg, std::clamp(where.elevation_m, -500.0, 9000.0)};
+  const SiteLocation site = scene_site ? *scene_site
+                                       : SiteLocation{where.latitude_deg, where.longitude_deg,
+                                                      std::clamp(where.elevation_m, -500.0, 9000.0)};
+  summary.station_distance_km = surface_distance_km(site, {where.latitude_deg, where.longitude_deg, 0});
   const SolarPosition sun = solar_position(site, when, options);
   scene.sun.altitude_deg = sun.altitude_deg;
   scene.sun.azimuth_deg = sun.azimuth_deg;
@@ -175,13 +189,18 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene) 
   summary.clear_fraction = 1.0 - coverage;
   const double sun_elevation = radians(sun.altitude_deg);
   bool overcast = false;
+  std::string overcast_because;
   if (sun.altitude_deg <= 0) {
     aerosol_from_visibility(hour, air, summary, "the sun is below the horizon at the hour's middle");
   } else if (!summary.file_direct_normal_lux) {
     aerosol_from_visibility(hour, air, summary, "no direct normal illuminance or irradiance in this record");
   } else if (*summary.file_direct_normal_lux < kNoBeamLux || summary.clear_fraction <= 0) {
     overcast = true;
-    aerosol_from_visibility(hour, air, summary, "no direct beam this hour");
+    overcast_because = *summary.file_direct_normal_lux < kNoBeamLux
+                           ? "no direct beam with the sun up"
+                           : formatted("the sky all covered, its %.0f lx of direct beam notwithstanding",
+                                       *summary.file_direct_normal_lux);
+    aerosol_from_visibility(hour, air, summary, overcast_because.c_str());
   } else {
     // The beam shines the clear part of the hour: its clear-sky value is the hour's mean
     // over that part.
@@ -193,8 +212,9 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene) 
     if (!air.cie_sky) air.cie_sky = CieSkySettings{1, *summary.file_diffuse_horizontal_lux, false};
     air.cie_sky->diffuse_horizontal_lux = *summary.file_diffuse_horizontal_lux;
     decisions.push_back(
-        formatted("sky: overcast (no direct beam with the sun up): CIE standard sky type %.0f scaled "
-                  "to the file's diffuse horizontal illuminance, %.0f lx; no cloud geometry",
+        "sky: overcast (" + overcast_because +
+        formatted("): CIE standard sky type %.0f scaled to the file's diffuse horizontal illuminance, %.0f lx; "
+                  "no cloud geometry",
                   air.cie_sky->type, air.cie_sky->diffuse_horizontal_lux));
   } else if (air.cie_sky && summary.file_diffuse_horizontal_lux) {
     air.cie_sky->diffuse_horizontal_lux = *summary.file_diffuse_horizontal_lux;
@@ -261,9 +281,11 @@ std::string compared(const char* what, const std::optional<double>& file, const 
 
 std::string describe_weather(const WeatherSummary& w) {
   std::string text = "weather: " + w.file + ": " + w.station + "\n";
-  text += formatted("  site %.3f, %.3f", w.latitude_deg, w.longitude_deg) +
-          formatted(", elevation %.1f m, time zone UTC%+.1f h\n", w.elevation_m, w.time_zone_h);
-  text += "  record " + w.record + "; sun at " + w.sun_time + formatted(", altitude %.2f deg\n", w.sun_altitude_deg);
+  text += formatted("  station %.3f, %.3f", w.latitude_deg, w.longitude_deg) +
+          formatted(", elevation %.1f m, time zone UTC%+.1f h", w.elevation_m, w.time_zone_h) +
+          (w.station_distance_km > 0.05 ? formatted(", %.1f km from the site\n", w.station_distance_km) : "\n");
+  text += "  record " + w.record + "; sun at " + w.sun_time +
+          formatted(", altitude %.2f deg (seen from the site)\n", w.sun_altitude_deg);
   if (!w.missing.empty()) {
     text += "  missing or out of range in this record:";
     for (size_t i = 0; i < w.missing.size(); ++i) text += (i ? ", " : " ") + w.missing[i];

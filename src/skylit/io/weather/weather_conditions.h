@@ -20,10 +20,15 @@
 
 namespace skylit {
 
-// Sets scene.sun, scene.atmosphere (site elevation, Earth–Sun distance, aod_550, ground
-// albedo, a CIE sky when overcast), scene.cloud_layer and scene.fog (unless the scene
-// gives its own clouds or fog) and scene.weather.
-void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene);
+// Sets scene.site, scene.sun, scene.atmosphere (site elevation, Earth–Sun distance,
+// aod_550, ground albedo, a CIE sky when overcast), scene.cloud_layer and scene.fog
+// (unless the scene gives its own clouds or fog) and scene.weather. The sun stands as
+// seen from `site` (the scene's own, or a city model's centre) at the record's instant,
+// else from the file's station: a station tens of kilometres away has the same weather
+// but sees the sun elsewhere, and a city model is placed around the site, not the
+// station.
+void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
+                        const std::optional<SiteLocation>& site = std::nullopt);
 
 // Fills scene.weather's model values: the model's direct normal, diffuse and global
 // horizontal illuminance for the scene's air and sky (the clear part; a generated
