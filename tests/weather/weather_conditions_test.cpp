@@ -199,10 +199,12 @@ TEST(WeatherConditions, ACityModelStaysWhereItIsAndAFarStationIsSaid) {
   auto scene_with = [&](const std::string& site) {
     return dir.write("scene.json", R"({
   "camera": {"position": [0, -80, 2], "look_at": [0, 0, 3]},
-  "weather": {"epw": "site.epw", "hour": "06-21T12:30"},)" + site + R"(
+  "weather": {"epw": "site.epw", "hour": "06-21T12:30"},)" +
+                                       site + R"(
   "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
   "objects": [{"type": "plane", "material": "white", "size_m": 200},
-              {"name": "block", "type": "city", "file": )" + model + R"(}],
+              {"name": "block", "type": "city", "file": )" +
+                                       model + R"(}],
   "render": {"width": 8, "height": 6}
 })");
   };
@@ -221,8 +223,8 @@ TEST(WeatherConditions, ACityModelStaysWhereItIsAndAFarStationIsSaid) {
   EXPECT_EQ(beside.output.find("warning: weather:"), std::string::npos) << beside.output;
   EXPECT_NE(beside.output.find("warning: object 'block' lies"), std::string::npos) << beside.output;
   // The sun and time are still the weather file's alone.
-  const testing::CommandResult both = testing::run_skylit(
-      "info " + testing::quoted(scene_with(R"("time": "2001-06-21T12:00+01:00",)")));
+  const testing::CommandResult both =
+      testing::run_skylit("info " + testing::quoted(scene_with(R"("time": "2001-06-21T12:00+01:00",)")));
   EXPECT_EQ(both.exit_status, 2);
   EXPECT_NE(both.output.find("give either a weather file's hour or the time"), std::string::npos) << both.output;
 }

@@ -158,9 +158,9 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
   SpaOptions options;
   if (hour.pressure_pa) options.pressure_mbar = *hour.pressure_pa / 100;
   if (hour.dry_bulb_c) options.temperature_c = *hour.dry_bulb_c;
-  const SiteLocation site = scene_site ? *scene_site
-                                       : SiteLocation{where.latitude_deg, where.longitude_deg,
-                                                      std::clamp(where.elevation_m, -500.0, 9000.0)};
+  const SiteLocation site =
+      scene_site ? *scene_site
+                 : SiteLocation{where.latitude_deg, where.longitude_deg, std::clamp(where.elevation_m, -500.0, 9000.0)};
   summary.station_distance_km = surface_distance_km(site, {where.latitude_deg, where.longitude_deg, 0});
   const SolarPosition sun = solar_position(site, when, options);
   scene.sun.altitude_deg = sun.altitude_deg;
