@@ -185,9 +185,10 @@ std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
   // file is probably the wrong one.
   constexpr double kFarStationKm = 50;
   if (scene.weather && scene.weather->station_distance_km > kFarStationKm)
-    warnings.push_back(formatted("weather: the file's station lies %.0f km from the site; its weather is taken as "
-                                 "the site's (a nearer station's file would be truer)",
-                                 scene.weather->station_distance_km));
+    warnings.push_back(
+        formatted("weather: the file's station lies %.0f km from the site; its weather is taken as "
+                  "the site's (a nearer station's file would be truer)",
+                  scene.weather->station_distance_km));
   for (const std::string& pattern : scene.unused_material_overrides)
     warnings.push_back("material_overrides: pattern " + quoted(pattern) + " matched no material of any file");
   if (check_camera && !scene.objects.empty()) {
