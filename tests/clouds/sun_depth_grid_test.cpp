@@ -1,6 +1,7 @@
 // The sun-depth grid (clouds/sun_depth_grid.h): interpolated t' against marching, and
 // scatter() with the grid against scatter() without, and faster.
 #include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "cloud_test_support.h"
 #include "skylit/clouds/cloud.h"
 #include "skylit/clouds/cloud_layer.h"
+#include "skylit/clouds/sun_depth_grid.h"
 
 namespace skylit {
 namespace {
@@ -103,6 +105,69 @@ TEST(CloudSunGrid, ScatterWithGridMatchesMarching) {
   EXPECT_FALSE(layer.clouds()[1].sun_prepared_for(to_sun));
   layer.clear_sun();
   EXPECT_FALSE(layer.clouds()[0].sun_prepared_for(to_sun));
+}
+
+// A grid's nodes are marched when a look-up first needs them (a dense layer's clouds are
+// met by a few rays each), by whichever thread asks: the values do not depend on the
+// order or the threads, and a cloud lit by no sun (at night) marches none.
+TEST(CloudSunGrid, NodesAreMarchedWhenFirstNeededAndTheOrderChangesNothing) {
+  const Vec3 to_sun = direction_from_altitude_azimuth(30, 120);
+  Cloud sequential(wavy_cloud()), parallel(wavy_cloud());
+  sequential.prepare_sun(to_sun);
+  parallel.prepare_sun(to_sun);
+  EXPECT_EQ(sequential.marched_sun_nodes(), 0);
+  const CloudShape& s = sequential.shape();
+  std::mt19937_64 rng(11);
+  auto uni = [&](double a, double b) { return a + (b - a) * cloud_uniform(rng()); };
+  std::vector<Vec3> points;
+  while (points.size() < 20000) {
+    const Vec3 p = local_point(s, uni(-s.semi_axis_a, s.semi_axis_a), uni(-s.semi_axis_b, s.semi_axis_b),
+                               s.altitude + uni(-0.5, 0.5) * s.max_thickness);
+    if (sequential.contains(p)) points.push_back(p);
+  }
+  (void)sequential.interpolated_sun_depth(points[0]);
+  EXPECT_GT(sequential.marched_sun_nodes(), 0);
+  EXPECT_LE(sequential.marched_sun_nodes(), 8);  // one cell's corners
+  std::vector<double> one_by_one(points.size()), together(points.size());
+  for (size_t i = 0; i < points.size(); ++i) one_by_one[i] = sequential.interpolated_sun_depth(points[i]);
+  tbb::parallel_for(size_t{0}, points.size(),
+                    [&](size_t i) { together[i] = parallel.interpolated_sun_depth(points[i]); });
+  EXPECT_EQ(one_by_one, together);
+  // Points inside the solid need the nodes in and around it, not the bounding volume's.
+  EXPECT_LT(sequential.marched_sun_nodes(), kSunGridU * kSunGridV * kSunGridZ);
+
+  Cloud night(wavy_cloud());
+  night.prepare_sun(to_sun);
+  CloudLighting dark = flat_light(to_sun);
+  dark.sun = Spectrum(0.0f);
+  const Vec3 eye{s.center_x - 3000, s.center_y - 2000, 0};
+  const Vec3 toward = normalize(Vec3{s.center_x, s.center_y, s.altitude} - eye);
+  const CloudScattering seen = night.scatter(eye, toward, 0, kInf, dark);
+  EXPECT_LT(seen.transmittance, 0.9);
+  EXPECT_GT(total(seen.in_scattered), 0.0f);  // the sky's light from above and below
+  EXPECT_EQ(night.marched_sun_nodes(), 0);
+}
+
+// A layer takes no cloud behind one that lets less than kOpaqueTransmittance through:
+// a thick cloud hides a second one above it, which is never marched (its grid never
+// made), and the light is the thick cloud's own.
+TEST(CloudSunGrid, NoCloudIsMarchedBehindAnOpaqueOne) {
+  CloudShape thick = wavy_cloud(), above = wavy_cloud();
+  thick.extinction = 0.2;  // optical depth ~80 through its 400 m
+  above.altitude += 2000;
+  CloudLayer layer({Cloud(thick), Cloud(above)});
+  const Vec3 to_sun = direction_from_altitude_azimuth(50, 30);
+  layer.prepare_sun(to_sun);
+  const CloudLighting light = flat_light(to_sun);
+  const Vec3 below{thick.center_x, thick.center_y, 0.0};
+  const CloudScattering both = layer.scatter(below, {0, 0, 1}, 0.0, 1e5, light);
+  EXPECT_LT(both.transmittance, kOpaqueTransmittance);
+  EXPECT_TRUE(layer.clouds()[0].sun_prepared_for(to_sun));
+  EXPECT_FALSE(layer.clouds()[1].sun_prepared_for(to_sun));
+  Cloud alone(thick);
+  alone.prepare_sun(to_sun);
+  const CloudScattering own = alone.scatter(below, {0, 0, 1}, 0.0, 1e5, light);
+  EXPECT_EQ(total(both.in_scattered), total(own.in_scattered));
 }
 
 }  // namespace

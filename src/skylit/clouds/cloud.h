@@ -40,6 +40,10 @@ class Cloud : public CloudGeometry {
   // t' at p toward the prepared sun by trilinear interpolation of the grid (p inside the
   // bounding volume or clamped onto it). Only meaningful when a grid is prepared.
   double interpolated_sun_depth(const Vec3& p) const { return sun_depths_.toward_sun.depth_at(*this, p); }
+  // The sun grids' nodes marched so far, toward and away from the sun (for the tests).
+  int marched_sun_nodes() const {
+    return sun_depths_.toward_sun.marched_nodes() + sun_depths_.away_from_sun.marched_nodes();
+  }
 
   // In-scattered radiance and transmittance of the segment of the viewing ray o + t·d
   // (d unit, from the viewer), t in [t_min, t_max] (Eq. 16 without I_behind;

@@ -5,8 +5,6 @@
 #include <limits>
 #include <random>
 
-#include <tbb/task_arena.h>
-
 namespace skylit {
 
 namespace {
@@ -92,11 +90,7 @@ void CloudLayer::clear_sun() {
 
 void CloudLayer::ensure_sun_grid(std::size_t index) const {
   if (!grid_sun_) return;  // Cloud::scatter then uses the grid if light.to_sun is its direction
-  std::call_once(grid_built_[index], [&] {
-    // The grid is filled by a parallel loop; isolated, this thread cannot pick up
-    // another ray's task meanwhile and wait on this same once_flag (a deadlock).
-    tbb::this_task_arena::isolate([&] { clouds_[index].prepare_sun(*grid_sun_); });
-  });
+  std::call_once(grid_built_[index], [&] { clouds_[index].prepare_sun(*grid_sun_); });
 }
 
 std::vector<CloudLayer::Crossing> CloudLayer::crossings(const Vec3& o, const Vec3& d, double t_min,
@@ -147,6 +141,10 @@ CloudScattering CloudLayer::scatter(const Vec3& o, const Vec3& d, double t_min, 
       out.distance = std::max(c.t_enter, t_min);
     out.in_scattered += s.in_scattered * static_cast<float>(out.transmittance);
     out.transmittance *= s.transmittance;
+    // The clouds behind are seen through less than a millionth: what they add is below
+    // the float spectra's own rounding of the clouds in front (a dense layer seen low
+    // crosses dozens of clouds behind the first).
+    if (out.transmittance < kOpaqueTransmittance) break;
   }
   return out;
 }

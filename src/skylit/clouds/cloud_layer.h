@@ -39,6 +39,9 @@ struct CloudLayerSettings {
 // expected count exceeds it, and generate() stops at twice it (the count is random).
 inline constexpr std::size_t kMaxGeneratedClouds = 500;
 
+// CloudLayer::scatter takes no cloud behind one that lets less than this through.
+inline constexpr double kOpaqueTransmittance = 1e-6;
+
 // How many clouds generate() makes for these settings, on average: the target footprint
 // −ln(1 − coverage)·(2·(half_extent + max_semi_axis))² over the mean footprint
 // π·E[a²]·E[b/a] of the size distribution.
@@ -65,11 +68,12 @@ class CloudLayer {
   const std::vector<Cloud>& clouds() const { return clouds_; }
 
   // From now on scatter() with light.to_sun equal to to_sun interpolates t' in each
-  // cloud's sun grid instead of marching toward the sun. A cloud's grid is built
-  // (Cloud::prepare_sun) when the first ray meets it, once, whichever thread asks first:
-  // a grid costs about 0.4 MB and 10^5 marches, and a layer of thousands of clouds of
-  // which a view meets a few must not pay for all (issue 19, item 11). The values do not
-  // depend on when a grid is built, so neither does the image.
+  // cloud's sun grid instead of marching toward the sun. A cloud's grid is made
+  // (Cloud::prepare_sun) when the first ray meets it, once, whichever thread asks first,
+  // and its nodes marched as look-ups need them (sun_depth_grid.h): a grid costs about
+  // 0.4 MB and up to 10^5 marches, and a layer of thousands of clouds of which a view
+  // meets a few must not pay for all (issue 19, item 11). The values do not depend on
+  // when a node is marched, so neither does the image.
   void prepare_sun(const Vec3& to_sun);
   void clear_sun();
   bool empty() const { return clouds_.empty(); }
@@ -89,14 +93,15 @@ class CloudLayer {
 
   // Eq. 16 along a viewing ray through all the clouds it crosses, composited front to
   // back (each cloud lit through its own shape only; overlapping bounding volumes are
-  // taken one after the other).
+  // taken one after the other), up to the first where less than kOpaqueTransmittance of
+  // what lies behind shows through.
   CloudScattering scatter(const Vec3& o, const Vec3& d, double t_min, double t_max, const CloudLighting& light) const;
 
  private:
-  // Builds cloud `index`'s sun grid if prepare_sun asked for grids and it has none yet.
+  // Makes cloud `index`'s sun grid if prepare_sun asked for grids and it has none yet.
   void ensure_sun_grid(std::size_t index) const;
 
-  // Mutable only for the sun grids built on demand, each under its own once_flag.
+  // Mutable only for the sun grids made on demand, each under its own once_flag.
   mutable std::vector<Cloud> clouds_;
   CloudGrid grid_;
   std::optional<Vec3> grid_sun_;                  // the direction prepare_sun asked for

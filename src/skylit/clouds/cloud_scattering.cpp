@@ -144,8 +144,12 @@ CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunLineD
     view_transmittance -= weight;
     view_depth += tau;
     const Vec3 mid = o + d * (0.5 * (s0 + s1));
-    const double t_sun =
-        use_grid ? sun_depths.toward_sun.depth_at(cloud, mid) : cloud_optical_depth(cloud, mid, to_sun, 0.0, kInf);
+    // t' is not needed where the sun lights no cloud (at night, in the earth's shadow)
+    // and the two-stream model leaves it out of the sky's light.
+    const bool needs_t_sun = has_sun || !two_stream;
+    const double t_sun = !needs_t_sun ? 0.0
+                         : use_grid   ? sun_depths.toward_sun.depth_at(cloud, mid)
+                                      : cloud_optical_depth(cloud, mid, to_sun, 0.0, kInf);
     if (has_sun) sun_weight += weight * std::exp(-t_sun);  // once scattered, Eq. 16
     if (!two_stream) {
       ambient_weight += weight * std::exp(-t_sun);  // I_a as printed in Eq. 16

@@ -1,13 +1,12 @@
-// The sun-depth grid (sun_depth_grid.h): built by marching (cloud_march.h) from every
-// node toward the sun, read by trilinear interpolation.
+// The sun-depth grid (sun_depth_grid.h): each node marched (cloud_march.h) toward the
+// sun when a look-up first needs it, read by trilinear interpolation.
 #include "skylit/clouds/sun_depth_grid.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "skylit/clouds/cloud_march.h"
 
@@ -18,23 +17,21 @@ void SunDepthGrid::prepare(const CloudGeometry& cloud, const Vec3& to_sun) {
   const double len = length(to_sun);
   if (cloud.empty() || !(len > 0) || !std::isfinite(len)) return;
   to_sun_ = to_sun / len;
-  std::vector<float> grid(static_cast<std::size_t>(kSunGridU) * kSunGridV * kSunGridZ);
+  depths_.assign(static_cast<std::size_t>(kSunGridU) * kSunGridV * kSunGridZ, kNotMarched);
+}
+
+double SunDepthGrid::node(const CloudGeometry& cloud, int i, int j, int k) const {
+  std::atomic_ref<float> slot(depths_[(static_cast<std::size_t>(k) * kSunGridV + j) * kSunGridU + i]);
+  const float stored = slot.load(std::memory_order_relaxed);
+  if (stored != kNotMarched) return stored;
   const CloudShape& shape = cloud.shape();
   const double a = shape.semi_axis_a, b = shape.semi_axis_b, tm = shape.max_thickness;
-  tbb::parallel_for(tbb::blocked_range<int>(0, kSunGridV * kSunGridZ), [&](const tbb::blocked_range<int>& r) {
-    for (int jk = r.begin(); jk != r.end(); ++jk) {
-      const int j = jk % kSunGridV, k = jk / kSunGridV;
-      const double v = -b + 2 * b * j / (kSunGridV - 1);
-      const double z = shape.altitude - 0.5 * tm + tm * k / (kSunGridZ - 1);
-      for (int i = 0; i < kSunGridU; ++i) {
-        const double u = -a + 2 * a * i / (kSunGridU - 1);
-        const Vec3 p = cloud.world_point(u, v, z);
-        const double value = cloud_optical_depth(cloud, p, to_sun_, 0.0, std::numeric_limits<double>::infinity());
-        grid[static_cast<std::size_t>(jk) * kSunGridU + i] = static_cast<float>(value);
-      }
-    }
-  });
-  depths_ = std::move(grid);
+  const double u = -a + 2 * a * i / (kSunGridU - 1), v = -b + 2 * b * j / (kSunGridV - 1);
+  const double z = shape.altitude - 0.5 * tm + tm * k / (kSunGridZ - 1);
+  const auto value = static_cast<float>(
+      cloud_optical_depth(cloud, cloud.world_point(u, v, z), to_sun_, 0.0, std::numeric_limits<double>::infinity()));
+  slot.store(value, std::memory_order_relaxed);
+  return value;
 }
 
 bool SunDepthGrid::prepared_for(const Vec3& to_sun) const {
@@ -43,6 +40,10 @@ bool SunDepthGrid::prepared_for(const Vec3& to_sun) const {
   if (!(len > 0) || !std::isfinite(len)) return false;
   const Vec3 d = to_sun / len;
   return std::abs(d.x - to_sun_.x) <= 1e-12 && std::abs(d.y - to_sun_.y) <= 1e-12 && std::abs(d.z - to_sun_.z) <= 1e-12;
+}
+
+int SunDepthGrid::marched_nodes() const {
+  return static_cast<int>(std::count_if(depths_.begin(), depths_.end(), [](float d) { return d != kNotMarched; }));
 }
 
 double SunDepthGrid::depth_at(const CloudGeometry& cloud, const Vec3& p) const {
@@ -61,15 +62,25 @@ double SunDepthGrid::depth_at(const CloudGeometry& cloud, const Vec3& p) const {
   cell((u + a) / (2 * a) * (kSunGridU - 1), kSunGridU, i, fu);
   cell((v + b) / (2 * b) * (kSunGridV - 1), kSunGridV, j, fv);
   cell((p.z - shape.altitude + 0.5 * tm) / tm * (kSunGridZ - 1), kSunGridZ, k, fz);
-  auto at = [&](int ii, int jj, int kk) {
-    return static_cast<double>(depths_[(static_cast<std::size_t>(kk) * kSunGridV + jj) * kSunGridU + ii]);
-  };
-  auto plane = [&](int kk) {
-    const double c0 = at(i, j, kk) + fu * (at(i + 1, j, kk) - at(i, j, kk));
-    const double c1 = at(i, j + 1, kk) + fu * (at(i + 1, j + 1, kk) - at(i, j + 1, kk));
+  // The cell's eight nodes, read as they are; those not yet marched (rare once a cloud
+  // has been looked at) are marched here.
+  std::array<double, 8> corner{};
+  bool all_marched = true;
+  for (int c = 0; c < 8; ++c) {
+    const std::size_t index =
+        (static_cast<std::size_t>(k + (c >> 2)) * kSunGridV + (j + ((c >> 1) & 1))) * kSunGridU + (i + (c & 1));
+    corner[c] = std::atomic_ref<float>(depths_[index]).load(std::memory_order_relaxed);
+    all_marched = all_marched && corner[c] != kNotMarched;
+  }
+  if (!all_marched)
+    for (int c = 0; c < 8; ++c)
+      if (corner[c] == kNotMarched) corner[c] = node(cloud, i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
+  auto plane = [&](int z) {
+    const double c0 = corner[4 * z] + fu * (corner[4 * z + 1] - corner[4 * z]);
+    const double c1 = corner[4 * z + 2] + fu * (corner[4 * z + 3] - corner[4 * z + 2]);
     return c0 + fv * (c1 - c0);
   };
-  const double p0 = plane(k), p1 = plane(k + 1);
+  const double p0 = plane(0), p1 = plane(1);
   return std::max(0.0, p0 + fz * (p1 - p0));
 }
 

@@ -1,9 +1,11 @@
 // The optical depth t' toward the sun through one cloud, tabulated: Eq. 16 needs t' at
 // every step of every viewing ray, and marching toward the sun from each would cost a
 // march per step. The grid holds t' at kSunGridU × kSunGridV × kSunGridZ nodes over the
-// cloud's bounding volume in its frame (u, v, z − z_mid), marched once per sun direction
-// (in parallel with TBB); look-ups interpolate it trilinearly (docs/clouds.md gives the
-// measured error and speed-up).
+// cloud's bounding volume in its frame (u, v, z − z_mid); look-ups interpolate it
+// trilinearly (docs/clouds.md gives the measured error and speed-up). A node is marched
+// when a look-up first needs it, by whichever thread asks: the value depends on the node
+// alone, so images do not depend on the order; a cloud that few rays meet (the sky-light
+// nodes' rays reach clouds 8 km away) costs a few nodes, not all 98,304 of them.
 #pragma once
 
 #include <vector>
@@ -23,19 +25,28 @@ inline constexpr int kSunGridZ = 24;
 // not keep a reference, so the cloud holding both can be copied and moved).
 class SunDepthGrid {
  public:
-  // Tabulates t' toward to_sun (normalised here). A zero or non-finite direction, or an
-  // empty cloud, leaves the grid cleared.
+  // Makes room for t' toward to_sun (normalised here), no node marched yet. A zero or
+  // non-finite direction, or an empty cloud, leaves the grid cleared.
   void prepare(const CloudGeometry& cloud, const Vec3& to_sun);
   void clear() { depths_.clear(); }
   // Whether a grid is prepared for this (unit or not) sun direction.
   bool prepared_for(const Vec3& to_sun) const;
   // t' at p toward the prepared sun by trilinear interpolation (p inside the bounding
-  // volume or clamped onto it); 0 when nothing is prepared.
+  // volume or clamped onto it), marching the nodes it needs that are not yet; 0 when
+  // nothing is prepared. Safe to call from several threads at once.
   double depth_at(const CloudGeometry& cloud, const Vec3& p) const;
+  // Nodes marched so far (for the tests).
+  int marched_nodes() const;
 
  private:
-  // t' at node (i, j, k), index (k·V + j)·U + i; empty when not prepared.
-  std::vector<float> depths_;
+  // t' at node (i, j, k), marched if it is not yet.
+  double node(const CloudGeometry& cloud, int i, int j, int k) const;
+
+  // t' at node (i, j, k), index (k·V + j)·U + i, or kNotMarched; empty when not
+  // prepared. Written through std::atomic_ref (threads may march the same node at once
+  // and store the same value); `mutable`: a look-up fills it.
+  static constexpr float kNotMarched = -1.0f;
+  mutable std::vector<float> depths_;
   Vec3 to_sun_{0, 0, 0};  // unit
 };
 
