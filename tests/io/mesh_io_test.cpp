@@ -252,6 +252,47 @@ TEST_F(MeshIo, GltfSkipsNonTrianglePrimitives) {
   expect_input_error(write("points.gltf", only_lines), "no triangles");
 }
 
+// Triangle strips and fans (glTF 2.0 §3.7.2.1): four vertices of the unit square in the
+// file's x-y plane drawn as a strip (0 1 2 3) and as a fan (0 1 2 3 around 0) give two
+// triangles each, facing +z (the strip's second one turned as the spec says), covering
+// the square; points and lines are counted, not drawn.
+TEST_F(MeshIo, GltfStripsAndFansByTheSpecificationAndLinesCounted) {
+  std::string square;
+  for (float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 1.f, 1.f, 0.f}) put(square, f);  // strip order
+  for (float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f}) put(square, f);  // fan order
+  const std::string gltf = R"({"asset": {"version": "2.0"}, "buffers": [)" + embedded(square) + R"(],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 48}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                  {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3"}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 5}, {"attributes": {"POSITION": 1}, "mode": 6},
+                               {"attributes": {"POSITION": 0}, "mode": 1}, {"attributes": {"POSITION": 1}, "mode": 0}]}],
+    "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
+  const LoadedModel model = load_model_file(write("modes.gltf", gltf), UpAxis::z);
+  ASSERT_EQ(model.mesh.triangles.size(), 4u);
+  EXPECT_EQ(model.skipped_primitives, 2);
+  double area = 0;
+  for (const auto& t : model.mesh.triangles) {
+    const Vec3 n = cross(model.mesh.vertices[t[1]] - model.mesh.vertices[t[0]],
+                         model.mesh.vertices[t[2]] - model.mesh.vertices[t[0]]);
+    EXPECT_GT(n.z, 0) << "every triangle faces +z";
+    area += 0.5 * length(n);
+  }
+  EXPECT_NEAR(area, 2.0, 1e-12);  // the square twice
+}
+
+// A file that requires Draco compression is refused by name, though tinygltf stops
+// earlier at the buffer views Draco leaves out.
+TEST_F(MeshIo, GltfRequiringDracoIsRefusedByName) {
+  const std::string draco = R"({"asset": {"version": "2.0"},
+    "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"],
+    "buffers": [{"byteLength": 8, "uri": "missing.bin"}],
+    "accessors": [{"componentType": 5126, "count": 3, "type": "VEC3"}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0},
+      "extensions": {"KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}}}]}],
+    "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
+  expect_input_error(write("draco.gltf", draco), "requires glTF extension KHR_draco_mesh_compression");
+}
+
 TEST_F(MeshIo, GlbLoads) {
   const std::string bin = triangle_buffer();
   std::string json = triangle_gltf(R"({"byteLength": 44})", kTranslatedNode);

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "../test_support.h"
+#include "skylit/core/base64.h"
 #include "skylit/io/image/image_encoders.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/prepared_scene.h"
@@ -129,12 +130,34 @@ TEST(ModelTextures, AMissingImageIsListedAndABrokenOneIsAnError) {
   write_gltf(dir, "nowhere.png");
   const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.gltf", "y")));
   ASSERT_TRUE(scene.objects[0].source.has_value());
-  EXPECT_EQ(scene.objects[0].source->missing_libraries, std::vector<std::string>{"nowhere.png"});
+  EXPECT_EQ(scene.objects[0].source->missing_images, std::vector<std::string>{"nowhere.png"});
+  EXPECT_TRUE(scene.objects[0].source->missing_libraries.empty());
   dir.write("broken.png", "\x89PNG\r\n\x1a\nnot really");
   write_gltf(dir, "broken.png");
   const std::string message =
       testing::input_error_of([&] { load_scene(dir.write("broken.json", scene_json("quad.gltf", "y"))); });
   EXPECT_NE(message.find("broken.png: not a PNG or JPEG image"), std::string::npos) << message;
+}
+
+// Image addresses as exporters write them: a file name with spaces percent-encoded
+// (RFC 3986: "te%20x.png" is the file "te x.png"), and the image inside the file as a
+// data URI of a media type tinygltf does not list ("image/jpg", the bytes a PNG's).
+TEST(ModelTextures, PercentEncodedNamesAndDataUrisOfAnyImageTypeAreRead) {
+  TempDir dir;
+  write_texture(dir, "te x.png");
+  write_gltf(dir, "te%20x.png");
+  const Scene spaced = load_scene(dir.write("scene.json", scene_json("quad.gltf", "y")));
+  EXPECT_TRUE(spaced.objects[0].source->missing_images.empty());
+  expect_color(point_below(PreparedScene(spaced), -0.5, 0.5), 1, 0, 0);
+
+  const uint8_t rgb[] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+  const Bytes png = encode_png_rgb8(2, 2, rgb);
+  write_gltf(dir, "data:image/jpg;base64," + base64_encode(png));
+  const Scene inside = load_scene(dir.write("scene.json", scene_json("quad.gltf", "y")));
+  EXPECT_TRUE(inside.objects[0].source->missing_images.empty());
+  const PreparedScene prepared(inside);
+  expect_color(point_below(prepared, 0.5, 0.5), 0, 1, 0);
+  expect_color(point_below(prepared, -0.5, -0.5), 0, 0, 1);
 }
 
 }  // namespace

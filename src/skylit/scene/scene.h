@@ -106,7 +106,8 @@ struct ModelSource {
     bool overridden = false;
   };
   std::vector<MaterialUse> materials;
-  std::vector<std::string> missing_libraries;
+  std::vector<std::string> missing_libraries, missing_images;
+  int skipped_primitives = 0;  // glTF points and lines, not drawn
 };
 
 // Where a city model came from and how it was placed (`skylit info`).

@@ -23,9 +23,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "skylit/core/error.h"
 #include "skylit/core/text_file.h"
@@ -125,7 +128,55 @@ std::string one_line(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
   for (char& c : s)
     if (c == '\n' || c == '\r') c = ' ';
+  // tinygltf quotes a broken data URI whole (a truncated buffer gave a 135 KB line).
+  constexpr size_t kLongest = 240;
+  if (s.size() > kLongest) s = s.substr(0, kLongest) + "…";
   return s;
+}
+
+// %XX escapes in a URI (RFC 3986): glTF writes a file "Box With Spaces.png" as
+// "Box%20With%20Spaces.png". Anything else, '+' included, is kept as it is.
+std::string percent_decoded(const std::string& uri) {
+  auto hex = [](char c) {
+    return c >= '0' && c <= '9'   ? c - '0'
+           : c >= 'a' && c <= 'f' ? c - 'a' + 10
+           : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                  : -1;
+  };
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && hex(uri[i + 1]) >= 0 && hex(uri[i + 2]) >= 0) {
+      out += static_cast<char>(hex(uri[i + 1]) * 16 + hex(uri[i + 2]));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// The first extension the file requires that skylit does not read, read from its JSON
+// directly (for .glb, the first chunk): tinygltf stops at what such an extension leaves
+// out (Draco's buffer views) with a message that does not name it.
+std::string unread_required_extension(const std::filesystem::path& path, bool binary) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text;
+  if (binary) {
+    unsigned char header[20] = {};
+    if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return {};
+    const uint32_t length = header[12] | header[13] << 8 | header[14] << 16 | static_cast<uint32_t>(header[15]) << 24;
+    if (length > kMaxMeshFileBytes) return {};
+    text.resize(length);
+    if (!in.read(text.data(), length)) return {};
+  } else {
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
+  if (!document.is_object() || !document.contains("extensionsRequired") || !document["extensionsRequired"].is_array())
+    return {};
+  for (const nlohmann::json& e : document["extensionsRequired"])
+    if (e.is_string() && !harmless_extension(e.get<std::string>())) return e.get<std::string>();
+  return {};
 }
 
 // One accessor's elements, bounds-checked against its buffer once so reads need
@@ -240,7 +291,7 @@ class GltfReader {
     return roots;
   }
 
-  Transform local_transform(const tinygltf::Node& node) const {
+  Transform local_transform(const tinygltf::Node& node, int index) const {
     if (node.matrix.size() == 16) {
       std::array<double, 16> c;
       std::copy(node.matrix.begin(), node.matrix.end(), c.begin());
@@ -252,7 +303,8 @@ class GltfReader {
     if (node.rotation.size() == 4) {
       const auto& q = node.rotation;
       if (!(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] > 0))
-        fail("node '" + node.name + "' has a zero rotation");
+        fail("node " + std::to_string(index) + (node.name.empty() ? "" : " ('" + node.name + "')") +
+             " has a zero rotation");
       t = t * Transform::rotation_quaternion(q[0], q[1], q[2], q[3]);
     }
     if (node.scale.size() == 3) t = t * Transform::scale({node.scale[0], node.scale[1], node.scale[2]});
@@ -267,7 +319,7 @@ class GltfReader {
     if (depth > model_.nodes.size() || depth > kMaxDepth)
       fail("the node hierarchy has a cycle or is deeper than " + std::to_string(kMaxDepth) + " levels");
     const tinygltf::Node& node = model_.nodes[index];
-    const Transform world = parent * local_transform(node);
+    const Transform world = parent * local_transform(node, index);
     if (node.mesh >= 0) {
       const Part& part = mesh(node.mesh);
       out_.mesh.append(transformed(part.mesh, world));
@@ -314,10 +366,15 @@ class GltfReader {
     return primitive.material;
   }
 
-  TriangleMesh read_primitive(const tinygltf::Primitive& primitive) const {
+  TriangleMesh read_primitive(const tinygltf::Primitive& primitive) {
     TriangleMesh mesh;
-    // tinygltf fills in the spec's default mode (4, triangles) when absent.
-    if (primitive.mode != TINYGLTF_MODE_TRIANGLES) return mesh;
+    // tinygltf fills in the spec's default mode (4, triangles) when absent. Points and
+    // lines are no surfaces: counted for `skylit info`, not drawn.
+    const int mode = primitive.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      ++out_.skipped_primitives;
+      return mesh;
+    }
     const auto position = primitive.attributes.find("POSITION");
     if (position == primitive.attributes.end()) return mesh;
 
@@ -344,10 +401,23 @@ class GltfReader {
       // Not indexed: consecutive vertices form triangles.
       for (size_t i = 0; i < p.count; ++i) indices.push_back(static_cast<uint32_t>(i));
     }
-    if (indices.size() % 3 != 0)
-      fail("a triangle primitive has " + std::to_string(indices.size()) + " indices, not a multiple of 3");
-    for (size_t i = 0; i < indices.size(); i += 3)
-      mesh.triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+      if (indices.size() % 3 != 0)
+        fail("a triangle primitive has " + std::to_string(indices.size()) + " indices, not a multiple of 3");
+      for (size_t i = 0; i < indices.size(); i += 3)
+        mesh.triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
+      return mesh;
+    }
+    // Strips and fans by the glTF 2.0 specification (§3.7.2.1): a strip's triangle i is
+    // (v_i, v_{i+1+i%2}, v_{i+2−i%2}), which keeps every triangle's winding; a fan's is
+    // (v_{i+1}, v_{i+2}, v_0). Triangles with a repeated vertex (a strip's joins) are
+    // left out.
+    for (size_t i = 0; i + 2 < indices.size(); ++i) {
+      const std::array<uint32_t, 3> t = mode == TINYGLTF_MODE_TRIANGLE_STRIP
+                                            ? std::array{indices[i], indices[i + 1 + i % 2], indices[i + 2 - i % 2]}
+                                            : std::array{indices[i + 1], indices[i + 2], indices[0]};
+      if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) mesh.triangles.push_back(t);
+    }
     return mesh;
   }
 
@@ -414,14 +484,23 @@ class GltfReader {
     const std::string where = name_ + ": image " + std::to_string(source);
     if (const auto bytes = images_.find(source); bytes != images_.end()) {
       it->second = decode_texture(bytes->second.data(), bytes->second.size(), encoding, where);
+    } else if (image.uri.rfind("data:", 0) == 0) {
+      // A data URI whose media type tinygltf does not list ("image/jpg", "image/webp",
+      // none): its bytes, which decode_texture takes if they are a PNG or JPEG.
+      const size_t comma = image.uri.find(',');
+      if (comma == std::string::npos || image.uri.rfind(";base64", comma) != comma - 7)
+        fail("image " + std::to_string(source) + ": a data URI that is not base64");
+      const std::string bytes = tinygltf::base64_decode(image.uri.substr(comma + 1));
+      it->second = decode_texture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), encoding, where);
     } else if (!image.uri.empty()) {
-      const std::filesystem::path file = folder_ / image.uri;
+      const std::string uri = percent_decoded(image.uri);
+      const std::filesystem::path file = folder_ / uri;
       std::error_code ec;
       if (std::filesystem::is_regular_file(file, ec))
         it->second = read_texture_file(file, encoding);
-      else if (std::find(out_.missing_libraries.begin(), out_.missing_libraries.end(), image.uri) ==
-               out_.missing_libraries.end())  // listed once, though read as colour and as data
-        out_.missing_libraries.push_back(image.uri);
+      else if (std::find(out_.missing_images.begin(), out_.missing_images.end(), uri) ==
+               out_.missing_images.end())  // listed once, though read as colour and as data
+        out_.missing_images.push_back(uri);
     }
     return it->second;
   }
@@ -499,7 +578,12 @@ LoadedModel load_gltf_file(const std::filesystem::path& path) {
   const bool binary = std::memcmp(magic, "glTF", 4) == 0;
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, name)
                          : loader.LoadASCIIFromFile(&model, &err, &warn, name);
-  if (!ok) throw InputError(name + ": cannot read glTF: " + one_line(err.empty() ? warn : err));
+  if (!ok) {
+    if (const std::string ext = unread_required_extension(path, binary); !ext.empty())
+      throw InputError(name + ": requires glTF extension " + ext + ", which skylit does not read" +
+                       (ext == "KHR_draco_mesh_compression" ? " (Draco compression: export without it)" : ""));
+    throw InputError(name + ": cannot read glTF: " + one_line(err.empty() ? warn : err));
+  }
   for (const std::string& ext : model.extensionsRequired)
     if (!harmless_extension(ext))
       throw InputError(name + ": requires glTF extension " + ext + ", which skylit does not read");

@@ -37,9 +37,13 @@ struct LoadedModel {
   // made safe by sanitize_file_normals (flat where the file gives none); empty when the
   // file gives none at all.
   std::vector<CornerNormals> corner_normals;
-  // Material libraries (OBJ `mtllib`) and texture images the file names that could not
-  // be read (the materials are then used without them).
+  // Material libraries (OBJ `mtllib`) the file names that could not be read (their
+  // triangles get kNoMaterial), and texture images (their materials are used without
+  // them).
   std::vector<std::string> missing_libraries;
+  std::vector<std::string> missing_images;
+  // glTF primitives of points or lines, which are not surfaces and are not drawn.
+  int skipped_primitives = 0;
 };
 
 // Per-corner data (texture coordinates) kept with its corners when a mirroring
@@ -57,9 +61,9 @@ inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{1} << 30;
 
 // Loads every triangle of the file in metres, in skylit's frame. The format comes
 // from the extension (.gltf, .glb, .obj; any case). For glTF, the node hierarchy
-// of the default scene (else scene 0, else every root node) is applied, and only
-// triangle-list primitives (mode 4) are taken; points, lines, strips and fans are
-// skipped. Throws InputError, naming the file, when it is missing or unreadable,
+// of the default scene (else scene 0, else every root node) is applied, and the
+// primitives of triangles, triangle strips and fans are taken; points and lines are
+// skipped (and counted). Throws InputError, naming the file, when it is missing or unreadable,
 // cannot be parsed, has an index out of range or a non-finite coordinate, holds no
 // triangles, or has an unknown extension.
 // A material library the file names that cannot be read is not an error: its

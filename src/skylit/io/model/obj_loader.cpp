@@ -143,7 +143,7 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
   std::string warnings, errors;
   tinyobj::LoadMtl(&material_ids, &materials, &libraries, &warnings, &errors);
 
-  ObjTextures textures(path.parent_path(), model.missing_libraries);
+  ObjTextures textures(path.parent_path(), model.missing_images);
   for (const tinyobj::material_t& m : materials) {
     ModelMaterial material = model_material(m);
     material.color_texture = textures.get(m.diffuse_texname);

@@ -48,8 +48,19 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
   if (!jpeg_huffman_tables_fit(bytes, size))
     throw InputError(where + ": cannot decode the image (a JPEG Huffman table codes more than 256 symbols)");
   int width = 0, height = 0, channels = 0;
+  // A PNG's size is in its header (IHDR), which stb does not report when it refuses one
+  // too large (it says "not of any known type").
+  if (size >= 24 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G') {
+    auto big_endian = [&](size_t at) {
+      return static_cast<uint32_t>(bytes[at]) << 24 | bytes[at + 1] << 16 | bytes[at + 2] << 8 | bytes[at + 3];
+    };
+    const uint32_t w = big_endian(16), h = big_endian(20);
+    if (w > static_cast<uint32_t>(kMaxTextureSide) || h > static_cast<uint32_t>(kMaxTextureSide))
+      throw InputError(where + ": the image is " + std::to_string(w) + " × " + std::to_string(h) + " texels; at most " +
+                       std::to_string(kMaxTextureSide) + " a side is read");
+  }
   if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
-    throw InputError(where + ": not a PNG or JPEG image (" + stbi_failure_reason() + ")");
+    throw InputError(where + ": not a PNG or JPEG image, or a damaged one (" + stbi_failure_reason() + ")");
   if (width <= 0 || height <= 0 || width > kMaxTextureSide || height > kMaxTextureSide)
     throw InputError(where + ": the image is " + std::to_string(width) + " × " + std::to_string(height) +
                      " texels; at most " + std::to_string(kMaxTextureSide) + " a side is read");

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "skylit/core/formatted.h"
+#include "skylit/core/text_file.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/render/camera.h"
 
@@ -135,6 +136,8 @@ std::string describe_objects(const Scene& scene) {
       if (s.offset_m.x != 0 || s.offset_m.y != 0 || s.offset_m.z != 0)
         out += formatted(", shifted by (%.3f, %.3f, %.3f) m", s.offset_m.x, s.offset_m.y, s.offset_m.z);
       out += "\n";
+      if (s.skipped_primitives > 0)
+        out += "  " + std::to_string(s.skipped_primitives) + " primitive(s) of points or lines not drawn\n";
     } else if (object.city) {
       out += describe_city(*object.city);
     } else {
@@ -172,8 +175,11 @@ std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
     if (!object.source) continue;  // boxes and planes are where the user put them
     check_model_placement(object, warnings);
     for (const std::string& library : object.source->missing_libraries)
-      warnings.push_back("object " + quoted(object.name) + ": material library " + quoted(library) +
+      warnings.push_back("object " + quoted(object.name) + ": material library " + quote_excerpt(library) +
                          " not found beside its file; its faces take the object's material");
+    for (const std::string& image : object.source->missing_images)
+      warnings.push_back("object " + quoted(object.name) + ": texture image " + quote_excerpt(image) +
+                         " not found beside its file; its materials are used without it");
     if (scene.material_override_count > 0)
       for (const auto& m : object.source->materials)
         if (!m.overridden)
