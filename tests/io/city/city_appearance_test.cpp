@@ -184,6 +184,22 @@ TEST(CityAppearance, BadCityJsonTextureValuesAreLocated) {
   EXPECT_NE(error_of(bad_uv).find("texture vertex 9 is out of range (the file has 4)"), std::string::npos);
 }
 
+// An untextured surface is [[null]] whatever its rings (CityJSON 2.0, Texture object): a
+// wall with a window hole and [[null]] loads, untextured, its hole kept (the 3DGI
+// conformance corpus's geometry_texture_multisolid was refused).
+TEST(CityAppearance, AnUntexturedSurfaceWithAHoleIsOneNull) {
+  std::string holed = cube_json("roof.png");
+  holed.replace(holed.find("[85000, 447010, 10]]"), 20,
+                "[85000, 447010, 10], [85004, 447000, 4], [85006, 447000, 4], [85006, 447000, 6], [85004, 447000, 6]]");
+  holed.replace(holed.find("[[0, 1, 5, 4]]"), 14, "[[0, 1, 5, 4], [8, 11, 10, 9]]");
+  const CityModel model = read_cityjson_text(holed, "cube.city.json");
+  ASSERT_EQ(model.objects.size(), 1u);
+  const CitySurface& wall = model.objects[0].surfaces.at(1);
+  EXPECT_EQ(wall.rings.size(), 2u);
+  EXPECT_EQ(wall.texture, CitySurface::kNone);
+  EXPECT_EQ(model.objects[0].surfaces.at(0).texture, 0);  // the roof keeps its own
+}
+
 TEST(CityAppearance, CityJsonSeqFeaturesMayBringTheirOwnAppearance) {
   const std::string header =
       R"({"type": "CityJSON", "version": "2.0", "transform": {"scale": [1, 1, 1], "translate": [0, 0, 0]},

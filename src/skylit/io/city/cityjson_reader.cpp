@@ -427,9 +427,12 @@ class Reader {
     context.object->surfaces.push_back(std::move(out));
   }
 
-  // A surface's texture values: per ring [texture, uv index per point], or [null].
+  // A surface's texture values: per ring [texture, uv index per point], or [null]; a
+  // surface without a texture, holes or not, is [[null]] (CityJSON 2.0, §Texture).
   void read_texture_values(const json& rings, const std::string& path, const Context& context,
                            CitySurface& surface) const {
+    if (rings.is_array() && rings.size() == 1 && rings[0].is_array() && rings[0].size() == 1 && rings[0][0].is_null())
+      return;
     if (!rings.is_array() || rings.size() != surface.rings.size())
       fail(path, "the texture values give " + (rings.is_array() ? std::to_string(rings.size()) : std::string("no")) +
                      " rings for a surface of " + std::to_string(surface.rings.size()));
