@@ -305,6 +305,31 @@ TEST(CityGmlReader, AReferenceMayNameAWholeMultiSurface) {
   for (const CitySurface& s : model.objects[0].surfaces) EXPECT_EQ(s.semantic, "RoofSurface");
 }
 
+// A gml:Surface of gml:PolygonPatch elements (GML 3.1.1 §10.5.10), as some exporters
+// write a roof: read as its polygons, with a hole, and named whole by a reference from
+// the solid (the building had vanished, and the reference named "no surface").
+TEST(CityGmlReader, ASurfaceOfPolygonPatchesIsItsPolygons) {
+  const std::string members =
+      R"(<core:cityObjectMember><bldg:Building gml:id="b"><bldg:lod2Solid><gml:Solid><gml:exterior>
+<gml:CompositeSurface><gml:surfaceMember xlink:href="#roof"/></gml:CompositeSurface></gml:exterior></gml:Solid></bldg:lod2Solid>
+<bldg:boundedBy><bldg:RoofSurface><bldg:lod2MultiSurface><gml:MultiSurface><gml:surfaceMember>
+<gml:Surface gml:id="roof"><gml:patches>
+<gml:PolygonPatch><gml:exterior><gml:LinearRing><gml:posList>0 0 6 10 0 6 10 8 6 0 8 6 0 0 6</gml:posList></gml:LinearRing></gml:exterior>
+<gml:interior><gml:LinearRing><gml:posList>4 2 6 4 5 6 6 5 6 6 2 6 4 2 6</gml:posList></gml:LinearRing></gml:interior></gml:PolygonPatch>
+<gml:PolygonPatch><gml:exterior><gml:LinearRing><gml:posList>10 0 6 12 0 6 12 8 6 10 8 6 10 0 6</gml:posList></gml:LinearRing></gml:exterior></gml:PolygonPatch>
+</gml:patches></gml:Surface></gml:surfaceMember></gml:MultiSurface></bldg:lod2MultiSurface></bldg:RoofSurface></bldg:boundedBy>
+</bldg:Building></core:cityObjectMember>)";
+  const CityModel model = parse_citygml(city_model(members), "patches.gml");
+  ASSERT_EQ(model.objects.size(), 1u);
+  ASSERT_EQ(model.objects[0].surfaces.size(), 2u);  // each patch once
+  double area = 0;
+  for (const CitySurface& s : model.objects[0].surfaces) {
+    EXPECT_EQ(s.semantic, "RoofSurface");
+    area += triangulated_area(s);
+  }
+  EXPECT_NEAR(area, 74.0 + 16.0, 1e-9);
+}
+
 // Two trees from one library shape: the first defines its relative geometry (a
 // triangle) with a matrix that doubles x and turns nothing else; the second refers to it
 // and has no matrix (the identity). p' = M p + reference point.

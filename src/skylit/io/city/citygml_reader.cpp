@@ -401,7 +401,9 @@ void CityGmlParser::start_gml(std::string_view local, const Attributes& a) {
       return;
     }
   }
-  if (local == "Polygon" || local == "Triangle") {
+  // A gml:Surface's patches (gml:PolygonPatch, GML 3.1.1 §10.5.10) are polygons too; the
+  // Surface's own gml:id makes it an aggregate of them, as a CompositeSurface's does.
+  if (local == "Polygon" || local == "Triangle" || local == "PolygonPatch") {
     in_polygon_ = true;
     polygon_used_ = in_geometry();
     polygon_depth_ = depth_;
