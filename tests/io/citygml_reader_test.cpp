@@ -330,6 +330,37 @@ TEST(CityGmlReader, ASurfaceOfPolygonPatchesIsItsPolygons) {
   EXPECT_NEAR(area, 74.0 + 16.0, 1e-9);
 }
 
+// CityGML 3.0 (OGC 20-010): thematic surfaces are core:boundary members in the
+// construction module, a window is a con:WindowSurface filling a wall's opening, and the
+// inside is a bldg:BuildingRoom. The window reads as the 2.0 Window; the room's interior
+// wall is not drawn (it had been, and the window lost).
+TEST(CityGmlReader, CityGml3WindowsAreWindowsAndRoomsStayInside) {
+  const std::string model = R"(<?xml version="1.0" encoding="UTF-8"?>
+<core:CityModel xmlns:core="http://www.opengis.net/citygml/3.0" xmlns:gml="http://www.opengis.net/gml/3.2"
+ xmlns:bldg="http://www.opengis.net/citygml/building/3.0" xmlns:con="http://www.opengis.net/citygml/construction/3.0">
+<gml:boundedBy><gml:Envelope srsName="urn:ogc:def:crs:EPSG::25832" srsDimension="3">
+<gml:lowerCorner>0 0 0</gml:lowerCorner><gml:upperCorner>10 10 10</gml:upperCorner></gml:Envelope></gml:boundedBy>
+<core:cityObjectMember><bldg:Building gml:id="b">
+<core:boundary><con:WallSurface gml:id="w"><core:lod3MultiSurface><gml:MultiSurface><gml:surfaceMember><gml:Polygon>
+<gml:exterior><gml:LinearRing><gml:posList>0 0 0 10 0 0 10 0 3 0 0 3 0 0 0</gml:posList></gml:LinearRing></gml:exterior>
+<gml:interior><gml:LinearRing><gml:posList>4 0 1 4 0 2 6 0 2 6 0 1 4 0 1</gml:posList></gml:LinearRing></gml:interior>
+</gml:Polygon></gml:surfaceMember></gml:MultiSurface></core:lod3MultiSurface>
+<con:fillingSurface><con:WindowSurface gml:id="win"><core:lod3MultiSurface><gml:MultiSurface><gml:surfaceMember><gml:Polygon>
+<gml:exterior><gml:LinearRing><gml:posList>4 0 1 6 0 1 6 0 2 4 0 2 4 0 1</gml:posList></gml:LinearRing></gml:exterior>
+</gml:Polygon></gml:surfaceMember></gml:MultiSurface></core:lod3MultiSurface></con:WindowSurface></con:fillingSurface>
+</con:WallSurface></core:boundary>
+<bldg:buildingRoom><bldg:BuildingRoom><core:boundary><con:InteriorWallSurface><core:lod3MultiSurface><gml:MultiSurface>
+<gml:surfaceMember><gml:Polygon><gml:exterior><gml:LinearRing><gml:posList>0 0.2 0 0 0.2 3 10 0.2 3 10 0.2 0 0 0.2 0</gml:posList>
+</gml:LinearRing></gml:exterior></gml:Polygon></gml:surfaceMember></gml:MultiSurface></core:lod3MultiSurface>
+</con:InteriorWallSurface></core:boundary></bldg:BuildingRoom></bldg:buildingRoom>
+</bldg:Building></core:cityObjectMember></core:CityModel>)";
+  const CityModel parsed = parse_citygml(model, "v3.gml");
+  ASSERT_EQ(parsed.objects.size(), 1u);
+  std::vector<std::string> semantics;
+  for (const CitySurface& surface : parsed.objects[0].surfaces) semantics.push_back(surface.semantic);
+  EXPECT_EQ(semantics, (std::vector<std::string>{"WallSurface", "Window"}));
+}
+
 // Two trees from one library shape: the first defines its relative geometry (a
 // triangle) with a matrix that doubles x and turns nothing else; the second refers to it
 // and has no matrix (the identity). p' = M p + reference point.

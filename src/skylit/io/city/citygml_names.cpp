@@ -1,5 +1,6 @@
-// CityGML's vocabulary, as listed in the OGC CityGML 2.0 standard (OGC 12-019),
-// mapped onto CityJSON 2.0's city-object types (its specification, section 4).
+// CityGML's vocabulary, as listed in the OGC CityGML 2.0 standard (OGC 12-019) and the
+// names 3.0 (OGC 20-010) changed, mapped onto CityJSON 2.0's city-object types (its
+// specification, section 4).
 #include "skylit/io/city/citygml_names.h"
 
 #include <algorithm>
@@ -34,8 +35,16 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 18> kObjectT
     {"CityFurniture", "CityFurniture"},
 }};
 
-constexpr std::array<std::string_view, 5> kInteriorFeatures{"Room", "IntBuildingInstallation", "BuildingFurniture",
-                                                            "IntBridgeInstallation", "IntTunnelInstallation"};
+// CityGML 3.0 (OGC 20-010) keeps a building's inside in BuildingRoom (its boundaries the
+// interior wall, floor and ceiling surfaces) and its furniture.
+constexpr std::array<std::string_view, 8> kInteriorFeatures{"Room",
+                                                            "IntBuildingInstallation",
+                                                            "BuildingFurniture",
+                                                            "IntBridgeInstallation",
+                                                            "IntTunnelInstallation",
+                                                            "BuildingRoom",
+                                                            "BridgeRoom",
+                                                            "HollowSpace"};
 
 constexpr std::array<std::string_view, 16> kSemanticSurfaces{"RoofSurface",
                                                              "WallSurface",
@@ -104,7 +113,16 @@ bool is_interior_feature(std::string_view local_name) {
 }
 
 bool is_semantic_surface(std::string_view local_name) {
-  return std::find(kSemanticSurfaces.begin(), kSemanticSurfaces.end(), local_name) != kSemanticSurfaces.end();
+  return std::find(kSemanticSurfaces.begin(), kSemanticSurfaces.end(), local_name) != kSemanticSurfaces.end() ||
+         local_name == "WindowSurface" || local_name == "DoorSurface";
+}
+
+std::string semantic_surface_class(std::string_view local_name) {
+  // CityGML 3.0's fillings of an opening (con:WindowSurface, con:DoorSurface) are 2.0's
+  // Window and Door, as CityJSON names them.
+  if (local_name == "WindowSurface") return "Window";
+  if (local_name == "DoorSurface") return "Door";
+  return std::string(local_name);
 }
 
 std::optional<int> lod_of_property(std::string_view local_name) {

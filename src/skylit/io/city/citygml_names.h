@@ -22,6 +22,9 @@ bool is_interior_feature(std::string_view local_name);
 // polygons inside it (RoofSurface, WallSurface, GroundSurface, Window, Door,
 // TrafficArea, WaterSurface, ...).
 bool is_semantic_surface(std::string_view local_name);
+// The semantic class of such a surface as CityJSON names it: its own name, but 3.0's
+// WindowSurface and DoorSurface are Window and Door.
+std::string semantic_surface_class(std::string_view local_name);
 
 // The level of detail a geometry property names, ×10 (lod2MultiSurface → 20,
 // lod1Solid → 10, lod0FootPrint → 0), or nullopt for other names.

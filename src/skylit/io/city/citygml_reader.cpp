@@ -325,7 +325,7 @@ void CityGmlParser::start(const XML_Char* name, const XML_Char** attribute_list)
   const Name n = namespaces_.resolve(name, false);
   const Attributes a = read_attributes(attribute_list, namespaces_);
   if (depth_ == 1 && !(n.local == "CityModel" && is_citygml(n.uri)))
-    fail("the root element is <" + std::string(n.local) + ">, not a CityGML 1.0/2.0 CityModel");
+    fail("the root element is <" + std::string(n.local) + ">, not a CityGML 1.0, 2.0 or 3.0 CityModel");
   if (!a.srs_name.empty()) note_crs(a.srs_name);
   if (!a.srs_dimension.empty()) {
     int d = 0;
@@ -379,7 +379,7 @@ void CityGmlParser::start_citygml(std::string_view local, const Attributes& a) {
   }
   if (objects_.empty()) return;
   if (citygml::is_semantic_surface(local)) {
-    semantics_.emplace_back(std::string(local), depth_);
+    semantics_.emplace_back(citygml::semantic_surface_class(local), depth_);
   } else if (auto lod = citygml::lod_of_property(local)) {
     lods_.emplace_back(*lod, depth_);
     if (!a.href.empty() && a.href.front() == '#')  // a whole geometry given by reference
