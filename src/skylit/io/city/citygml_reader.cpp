@@ -614,9 +614,17 @@ void CityGmlParser::finish_ring() {
   if (ring_.size() > 1 && ring_.front().x == ring_.back().x && ring_.front().y == ring_.back().y &&
       ring_.front().z == ring_.back().z)
     ring_.pop_back();  // GML closes rings by repeating the first point
-  if (ring_.size() < 3)
-    fail_at(ring_line_, "a ring (gml:LinearRing) with " + std::to_string(ring_.size()) +
-                            " distinct points; a polygon's ring needs at least three");
+  // A ring of one or two distinct points encloses nothing. Real files hold such rings
+  // (the OGC's own CityGML 3.0 sample of Lyon, in a posList of two points), and refusing
+  // the file lost a whole district for one: an exterior of them is kept, its polygon
+  // then counted among the surfaces of zero area (city_placement.h), and a hole of them
+  // is dropped. An empty ring is no ring at all.
+  if (ring_.empty()) fail_at(ring_line_, "a ring (gml:LinearRing) without points");
+  if (ring_is_interior_ && ring_.size() < 3) {
+    ring_.clear();
+    ring_id_.clear();
+    return;
+  }
   if (ring_is_interior_) {
     interiors_.push_back(std::move(ring_));
     interior_ids_.push_back(std::move(ring_id_));
