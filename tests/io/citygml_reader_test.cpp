@@ -16,8 +16,8 @@
 
 #include "../test_support.h"
 #include "skylit/geometry/polygon_triangulation.h"
-#include "skylit/io/city/citygml_names.h"
 #include "skylit/io/city/city_placement.h"
+#include "skylit/io/city/citygml_names.h"
 
 namespace skylit {
 namespace {

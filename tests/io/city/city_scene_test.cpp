@@ -89,5 +89,24 @@ TEST(CityScene, MalformedModelIsOneLineAndExitStatusTwo) {
   EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
 }
 
+// A model whose every surface collapses once placed (a CityJSON transform's scale of
+// 1e300 sends its vertices beyond any CRS) is said to be so, pointing at the
+// coordinates and the transform, not at the region or the LoD.
+TEST(CityScene, AModelOfOnlyCollapsedSurfacesPointsAtItsCoordinates) {
+  testing::TempDir dir;
+  dir.write("huge.city.json", R"({"type": "CityJSON", "version": "2.0",
+    "transform": {"scale": [1e300, 1e300, 1e300], "translate": [85000, 447000, 0]},
+    "vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 1]], "metadata": {"referenceSystem": "EPSG:7415"},
+    "CityObjects": {"b": {"type": "Building", "geometry": [{"type": "MultiSurface", "lod": "1",
+      "boundaries": [[[0, 1, 2, 3]]]}]}}})");
+  const auto scene_file = dir.write("s.json", scene_with(R"({"type": "city", "file": "huge.city.json"})",
+                                                         R"("sun": {"altitude_deg": 30, "azimuth_deg": 180})"));
+  const auto result = testing::run_skylit("info " + testing::quoted(scene_file));
+  EXPECT_EQ(result.exit_status, 2);
+  EXPECT_NE(result.output.find("all 1 surfaces of the city model have zero area once placed"), std::string::npos)
+      << result.output;
+  EXPECT_EQ(result.output.find("in the region, at the LoD"), std::string::npos) << result.output;
+}
+
 }  // namespace
 }  // namespace skylit

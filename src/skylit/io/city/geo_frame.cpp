@@ -32,8 +32,10 @@ struct ProjHandle {
 bool finite(const PJ_COORD& c) { return std::isfinite(c.v[0]) && std::isfinite(c.v[1]) && std::isfinite(c.v[2]); }
 
 std::string describe(const Vec3& p) {
+  // Ten significant digits: millimetres of a projected coordinate, and a wild one
+  // (1e117) short enough to read.
   char text[120];
-  std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", p.x, p.y, p.z);
+  std::snprintf(text, sizeof text, "(%.10g, %.10g, %.10g)", p.x, p.y, p.z);
   return text;
 }
 

@@ -239,7 +239,12 @@ SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir
   if (auto c = j.optional("earth_curvature")) options.curvature = read_curvature(*c);
   if (auto k = j.optional("refraction_k")) options.refraction_k = k->number_in(0, 1);
   PlacedCity placed = place_city_model(model, options, file.string());
-  if (placed.objects.empty()) file_value.fail("the city model has no surfaces to show (in the region, at the LoD)");
+  if (placed.objects.empty())
+    file_value.fail(placed.degenerate_surfaces > 0
+                        ? "all " + std::to_string(placed.degenerate_surfaces) +
+                              " surfaces of the city model have zero area once placed: are its coordinates (or a "
+                              "CityJSON transform's scale and translate) right?"
+                        : "the city model has no surfaces to show (in the region, at the LoD)");
   if (auto terrain = j.optional("terrain")) add_dem_terrain(*terrain, base_dir, options, placed);
   if (!site)  // the model's centre becomes the site, for the sun
     site = SiteLocation{placed.origin.latitude_deg, placed.origin.longitude_deg,
