@@ -45,6 +45,8 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       to_sun_(scene.to_sun()),
       fog_light_(scene.fog() ? scene.fog()->surface_light() : nullptr),
       obstacle_materials_(obstacle_materials(scene.scene().materials)) {
+  for (const NamedMaterial& m : scene.scene().materials)
+    broad_lobe_.push_back(has_specular(m.material) && specular_roughness(m.material) >= kBroadLobeRoughness);
   // Obstacles of level i are lit by the integrals of level i; the surfaces seen look up level 0.
   const bool own_sky = scene.scene().render.obstacles_own_sky;
   const int levels = own_sky ? static_cast<int>(kObstacleLevelDirections.size()) : 0;
@@ -220,6 +222,11 @@ Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& 
                                             const Irradiance& sky, int level, std::optional<float> sunlit_share) const {
   const Vec3 to_viewer = -ray.direction;
   Radiance radiance = lambertian_obstacle_radiance(ray, point, body, sky, sunlit_share);
+  // A broad lobe's sunlight toward the ray's origin: the integral whose ray this is
+  // gathers it over its directions, as smooth in them as the lobe is wide.
+  if (broad_lobe_[point.material])
+    radiance += specular_reflection(scene_.material(point.material), point.normal, to_sun_, to_viewer)
+                    .reflect(sun_reaching(point, sunlit_share));
   const Reflectance fresnel = specular_fresnel(scene_.material(point.material), dot(point.normal, to_viewer));
   if (fresnel.is_black()) return radiance;
   const Ray mirrored{offset_from_surface(point.position, point.normal), mirror_direction(point.normal, to_viewer)};

@@ -214,7 +214,8 @@ class BandsIntegrator {
   // sun and by `sky`; and for glass and metal, the sky or the Lambertian obstacle it
   // mirrors (its Fresnel reflectance times the light from the mirror direction: a glossy
   // lobe's blur is left out, the sky being smooth; the sun it reflects is
-  // ReflectedSun's), the latter lit by obstacle_sky at `level`. `body` is the material of
+  // ReflectedSun's, but a broad lobe's (kBroadLobeRoughness) is added here, toward the
+  // ray's origin), the latter lit by obstacle_sky at `level`. `body` is the material of
   // the obstacle's Lambertian part (textured or not); what it mirrors is seen by its
   // materials' means.
   // `sunlit_share`: the sun's share of the obstacle's patch (render/obstacle_sky_light.h)
@@ -252,6 +253,9 @@ class BandsIntegrator {
   std::unique_ptr<ObstacleSkyLight> obstacle_sky_;
   std::unique_ptr<ReflectedSun> reflected_sun_;
   std::vector<Material> obstacle_materials_;  // per scene material: what obstacle rays see
+  // Per scene material: whether its glossy lobe is at least kBroadLobeRoughness wide,
+  // so that obstacle rays carry the sun it reflects (reflected_sun.h).
+  std::vector<char> broad_lobe_;
   // With lamps in fog only (what the image cache's glow needs): sky_light_bound_lx's
   // obstacles' part, and the integral of faint_sky_light_at.
   double obstacles_bound_lx_ = 0;

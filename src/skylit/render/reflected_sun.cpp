@@ -42,7 +42,8 @@ bool ray_meets_box(const Vec3& origin, const Vec3& direction, const BoundingBox&
 }
 
 bool reflects_sun(const Material& material) {
-  return std::holds_alternative<CookTorranceMaterial>(material) || std::holds_alternative<GlassMaterial>(material);
+  if (std::holds_alternative<GlassMaterial>(material)) return true;
+  return std::holds_alternative<CookTorranceMaterial>(material) && specular_roughness(material) < kBroadLobeRoughness;
 }
 
 }  // namespace

@@ -40,6 +40,15 @@ namespace skylit {
 // tilt times azimuths. docs/reflected-sun.md gives its error against a dense grid.
 inline constexpr int kLobeRings = 6, kLobeAzimuths = 12;
 
+// Lobes at least this rough (Beckmann m; glTF's roughness 0.71) are left to the sky-light
+// integral, whose rays meeting such a surface take the sun it reflects toward them
+// (BandsIntegrator::obstacle_radiance): a lobe this wide (its half vectors spread over
+// some 30°, its reflection over 60° and more) is smooth over the integral's elements
+// (6° with 1,024 directions), and the node rays grew with the orientation classes: a
+// curved glTF model of default roughness 1 had one class per triangle, 72 rays each
+// (docs/reflected-sun.md, "Broad lobes").
+inline constexpr double kBroadLobeRoughness = 0.5;
+
 class ReflectedSun {
  public:
   // The sun's direct normal irradiance at a point of a facet with this normal, 0 where
