@@ -41,6 +41,17 @@ bool ray_meets_box(const Vec3& origin, const Vec3& direction, const BoundingBox&
   return true;
 }
 
+// Whether the box may lie within the cone of directions about `axis` (unit) of
+// cos_spread from `origin`: the angle to the box's centre, less the angle its bounding
+// sphere subtends, within the cone's. Conservative: a box that might meet it does.
+bool box_in_cone(const Vec3& origin, const Vec3& axis, double cos_spread, const BoundingBox& box) {
+  const Vec3 to_centre = box.center() - origin;
+  const double d = length(to_centre), radius = 0.5 * length(box.size()) + 1e-3;
+  if (d <= radius || cos_spread <= -1) return true;
+  const double toward = std::acos(std::clamp(dot(to_centre, axis) / d, -1.0, 1.0));
+  return toward - std::asin(radius / d) <= std::acos(std::clamp(cos_spread, -1.0, 1.0));
+}
+
 bool reflects_sun(const Material& material) {
   if (std::holds_alternative<GlassMaterial>(material)) return true;
   return std::holds_alternative<CookTorranceMaterial>(material) && specular_roughness(material) < kBroadLobeRoughness;
@@ -94,6 +105,14 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
     OrientationClass& orientation = classes_[c];
     if (dot(orientation.normal, to_sun_) < 0) orientation.normal = -orientation.normal;
     add_nodes(orientation, scene.materials[class_material[c]].material);
+    if (!orientation.nodes.empty()) {
+      Vec3 sum{0, 0, 0};
+      for (const Node& node : orientation.nodes) sum += node.toward;
+      orientation.axis = length(sum) > 1e-9 ? normalize(sum) : orientation.nodes.front().toward;
+      orientation.cos_spread = 1;
+      for (const Node& node : orientation.nodes)
+        orientation.cos_spread = std::min(orientation.cos_spread, dot(node.toward, orientation.axis));
+    }
     has_mirrors_ = has_mirrors_ || (orientation.mirror && !orientation.nodes.empty());
     has_rough_ = has_rough_ || (!orientation.mirror && !orientation.nodes.empty());
   }
@@ -147,7 +166,9 @@ Irradiance ReflectedSun::from(const Vec3& position, const Vec3& normal, bool mir
   thread_local std::vector<std::optional<Hit>> hits;
   for (size_t c = 0; c < classes_.size(); ++c) {
     const OrientationClass& orientation = classes_[c];
-    if (orientation.mirror != mirrors) continue;
+    if (orientation.mirror != mirrors || orientation.nodes.empty() ||
+        !box_in_cone(origin, orientation.axis, orientation.cos_spread, orientation.box))
+      continue;
     rays.clear();
     ray_nodes.clear();
     for (const Node& node : orientation.nodes) {

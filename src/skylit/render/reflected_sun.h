@@ -83,6 +83,12 @@ class ReflectedSun {
     BoundingBox box;
     bool mirror = false;
     std::vector<Node> nodes;
+    // The cone about `axis` (unit) that holds every node's direction within the angle
+    // whose cosine is `cos_spread`: a class whose box lies outside it, seen from a point,
+    // is passed over with one test instead of one per node (a curved model has a class
+    // per triangle).
+    Vec3 axis{0, 0, 1};
+    double cos_spread = -1;
   };
 
   Irradiance from(const Vec3& position, const Vec3& normal, bool mirrors) const;
