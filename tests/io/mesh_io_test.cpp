@@ -293,6 +293,17 @@ TEST_F(MeshIo, GltfRequiringDracoIsRefusedByName) {
   expect_input_error(write("draco.gltf", draco), "requires glTF extension KHR_draco_mesh_compression");
 }
 
+// A default scene the file does not hold, and a glTF 1.0 file (another format, which
+// tinygltf half reads), are refused by name; they had fallen back to scene 0 and loaded.
+TEST_F(MeshIo, GltfMissingDefaultSceneAndVersionOneAreRefused) {
+  std::string no_scene = triangle_gltf(embedded(triangle_buffer()), kTranslatedNode);
+  no_scene.replace(no_scene.find(R"("scene": 0)"), 10, R"("scene": 5)");
+  expect_input_error(write("scene5.gltf", no_scene), "the default scene is scene 5, but the file has 1");
+  std::string old = triangle_gltf(embedded(triangle_buffer()), kTranslatedNode);
+  old.replace(old.find(R"("version": "2.0")"), 16, R"("version": "1.0")");
+  expect_input_error(write("old.gltf", old), "glTF version '1.0'; skylit reads glTF 2.0");
+}
+
 TEST_F(MeshIo, GlbLoads) {
   const std::string bin = triangle_buffer();
   std::string json = triangle_gltf(R"({"byteLength": 44})", kTranslatedNode);

@@ -136,7 +136,9 @@ TEST(ModelTextures, AMissingImageIsListedAndABrokenOneIsAnError) {
   write_gltf(dir, "broken.png");
   const std::string message =
       testing::input_error_of([&] { load_scene(dir.write("broken.json", scene_json("quad.gltf", "y"))); });
-  EXPECT_NE(message.find("broken.png: not a PNG or JPEG image"), std::string::npos) << message;
+  // Named with the model that names it, then the file.
+  EXPECT_NE(message.find("quad.gltf: image 0 ("), std::string::npos) << message;
+  EXPECT_NE(message.find("broken.png): not a PNG or JPEG image"), std::string::npos) << message;
 }
 
 // Image addresses as exporters write them: a file name with spaces percent-encoded

@@ -265,7 +265,10 @@ class GltfReader {
 
   LoadedModel read_scene() {
     std::vector<int> roots;
-    if (model_.defaultScene >= 0 && static_cast<size_t>(model_.defaultScene) < model_.scenes.size())
+    if (model_.defaultScene >= 0 && static_cast<size_t>(model_.defaultScene) >= model_.scenes.size())
+      fail("the default scene is scene " + std::to_string(model_.defaultScene) + ", but the file has " +
+           std::to_string(model_.scenes.size()));
+    if (model_.defaultScene >= 0)
       roots = model_.scenes[model_.defaultScene].nodes;
     else if (!model_.scenes.empty())
       roots = model_.scenes[0].nodes;
@@ -497,7 +500,7 @@ class GltfReader {
       const std::filesystem::path file = folder_ / uri;
       std::error_code ec;
       if (std::filesystem::is_regular_file(file, ec))
-        it->second = read_texture_file(file, encoding);
+        it->second = read_texture_file(file, encoding, where);
       else if (std::find(out_.missing_images.begin(), out_.missing_images.end(), uri) ==
                out_.missing_images.end())  // listed once, though read as colour and as data
         out_.missing_images.push_back(uri);
@@ -584,6 +587,10 @@ LoadedModel load_gltf_file(const std::filesystem::path& path) {
                        (ext == "KHR_draco_mesh_compression" ? " (Draco compression: export without it)" : ""));
     throw InputError(name + ": cannot read glTF: " + one_line(err.empty() ? warn : err));
   }
+  // glTF 1.0 is another format (techniques, shaders, no PBR materials) that tinygltf
+  // half reads.
+  if (model.asset.version.rfind("2.", 0) != 0)
+    throw InputError(name + ": glTF version '" + one_line(model.asset.version) + "'; skylit reads glTF 2.0");
   for (const std::string& ext : model.extensionsRequired)
     if (!harmless_extension(ext))
       throw InputError(name + ": requires glTF extension " + ext + ", which skylit does not read");

@@ -71,15 +71,17 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
   return std::make_shared<const Texture>(width, height, std::move(rgba), encoding);
 }
 
-std::shared_ptr<const Texture> read_texture_file(const std::filesystem::path& path, TextureEncoding encoding) {
+std::shared_ptr<const Texture> read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
+                                                 const std::string& named_by) {
+  const std::string where = named_by.empty() ? path.string() : named_by + " (" + path.string() + ")";
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": texture file not found");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(where + ": texture file not found");
   if (std::filesystem::file_size(path, ec) > kMaxMeshFileBytes)
-    throw InputError(path.string() + ": texture file larger than the limit of 1 GiB");
+    throw InputError(where + ": texture file larger than the limit of 1 GiB");
   std::ifstream in(path, std::ios::binary);
   const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw InputError(path.string() + ": cannot read the texture file");
-  return decode_texture(bytes.data(), bytes.size(), encoding, path.string());
+  if (!in && !in.eof()) throw InputError(where + ": cannot read the texture file");
+  return decode_texture(bytes.data(), bytes.size(), encoding, where);
 }
 
 }  // namespace skylit

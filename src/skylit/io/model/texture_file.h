@@ -21,6 +21,9 @@ inline constexpr int kMaxTextureSide = 16384;
 std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t size, TextureEncoding encoding,
                                               const std::string& where);
 // The same from a file (a regular file of at most kMaxMeshFileBytes).
-std::shared_ptr<const Texture> read_texture_file(const std::filesystem::path& path, TextureEncoding encoding);
+// Errors name `path`, after `named_by` if given ("house.gltf: image 2 'brick.png'"): the
+// model that names the file says where to look.
+std::shared_ptr<const Texture> read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
+                                                 const std::string& named_by = {});
 
 }  // namespace skylit
