@@ -134,6 +134,25 @@ TEST(WeatherConditions, TheSunStandsAsSeenFromTheSiteAtTheRecordsInstant) {
   EXPECT_EQ(scene_for(file, 6, 21, 13).weather->station_distance_km, 0);
 }
 
+// Opaque cover is part of the total: a record giving more of it than the total (a Long
+// Beach file's 5 against 2) is said, and its opaque cover used.
+TEST(WeatherConditions, OpaqueCoverBeyondTheTotalIsSaid) {
+  EpwRecordFields odd;
+  odd.day = 26, odd.total_cover = "2", odd.opaque_cover = "5";
+  const EpwFile file = parse_epw(epw_fixture({odd}), "fixture.epw");
+  const Scene scene = scene_for(file, 6, 26, 13);
+  bool said = false;
+  for (const std::string& d : scene.weather->decisions)
+    said = said || d.find("the opaque cover (5 tenths) exceeds the total (2)") != std::string::npos;
+  EXPECT_TRUE(said);
+  EXPECT_NEAR(scene.weather->clear_fraction, 0.5, 1e-12);
+  bool consistent_said = false;
+  const Scene consistent = scene_for(file, 6, 21, 13);
+  for (const std::string& d : consistent.weather->decisions)
+    consistent_said = consistent_said || d.find("exceeds the total") != std::string::npos;
+  EXPECT_FALSE(consistent_said);
+}
+
 // A visibility beyond what clean air allows (Rayleigh scattering alone, about 320 km at
 // 550 nm; files write 999 for "unlimited") leaves the scene's aerosol; 200 km gives a
 // small one.

@@ -185,6 +185,13 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
 
   const std::optional<double> cover =
       hour.opaque_sky_cover_tenths ? hour.opaque_sky_cover_tenths : hour.total_sky_cover_tenths;
+  // Opaque cover is part of the total: more of it is a slip of the file's, said here.
+  if (hour.opaque_sky_cover_tenths && hour.total_sky_cover_tenths &&
+      *hour.opaque_sky_cover_tenths > *hour.total_sky_cover_tenths)
+    decisions.push_back(
+        formatted("sky cover: the opaque cover (%.0f tenths) exceeds the total (%.0f) in this record; "
+                  "the opaque cover is used",
+                  *hour.opaque_sky_cover_tenths, *hour.total_sky_cover_tenths));
   const double coverage = cover ? *cover / 10.0 : 0.0;
   summary.clear_fraction = 1.0 - coverage;
   const double sun_elevation = radians(sun.altitude_deg);
