@@ -28,7 +28,8 @@ inline std::filesystem::path find_chromium() {
 
 // Runs tests/browser/SCRIPT in CHROMIUM on PAGE with the further ARGUMENTS (already
 // quoted); playwright-core is installed into the build folder's browser-test-deps at the
-// first run. The command's result, and its JSON line parsed when it succeeded.
+// first run (there whatever folder the tests run from: run from the sources, they had
+// left a copy there). The command's result, and its JSON line parsed when it succeeded.
 struct PageResult {
   CommandResult command;
   nlohmann::json json;
@@ -37,9 +38,9 @@ struct PageResult {
 inline PageResult run_page_script(const std::string& script, const std::filesystem::path& chromium,
                                   const std::filesystem::path& page, const std::string& arguments = "") {
   PageResult result;
-  result.command =
-      run_command(quoted(std::filesystem::path(SKYLIT_SOURCE_DIR) / "tests/browser/run-in-chromium.sh") +
-                  " browser-test-deps " + script + " " + quoted(chromium) + " " + quoted(page) + " " + arguments);
+  result.command = run_command(quoted(std::filesystem::path(SKYLIT_SOURCE_DIR) / "tests/browser/run-in-chromium.sh") +
+                               " " + quoted(std::filesystem::path(SKYLIT_BINARY_DIR) / "browser-test-deps") + " " +
+                               script + " " + quoted(chromium) + " " + quoted(page) + " " + arguments);
   const std::size_t brace = result.command.output.find('{');
   if (result.command.exit_status == 0 && brace != std::string::npos)
     result.json = nlohmann::json::parse(result.command.output.substr(brace), nullptr, false);
