@@ -43,7 +43,9 @@ bool SunDepthGrid::prepared_for(const Vec3& to_sun) const {
 }
 
 int SunDepthGrid::marched_nodes() const {
-  return static_cast<int>(std::count_if(depths_.begin(), depths_.end(), [](float d) { return d != kNotMarched; }));
+  return static_cast<int>(std::count_if(depths_.begin(), depths_.end(), [](float& d) {
+    return std::atomic_ref<float>(d).load(std::memory_order_relaxed) != kNotMarched;
+  }));
 }
 
 double SunDepthGrid::depth_at(const CloudGeometry& cloud, const Vec3& p) const {

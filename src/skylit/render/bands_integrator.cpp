@@ -45,8 +45,7 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
       to_sun_(scene.to_sun()),
       fog_light_(scene.fog() ? scene.fog()->surface_light() : nullptr),
       obstacle_materials_(obstacle_materials(scene.scene().materials)) {
-  for (const NamedMaterial& m : scene.scene().materials)
-    broad_lobe_.push_back(has_specular(m.material) && specular_roughness(m.material) >= kBroadLobeRoughness);
+  for (const NamedMaterial& m : scene.scene().materials) broad_lobe_.push_back(is_broad_lobe(m.material));
   // Obstacles of level i are lit by the integrals of level i; the surfaces seen look up level 0.
   const bool own_sky = scene.scene().render.obstacles_own_sky;
   const int levels = own_sky ? static_cast<int>(kObstacleLevelDirections.size()) : 0;

@@ -18,8 +18,8 @@ struct PixelLayers {
   std::vector<float> normal;      // 3 per pixel, world frame, facing the camera; 0 where no object
   // lx on the surface seen (render/surface_illuminance.h); 0 where no object; empty: not computed
   std::vector<float> illuminance_lx;
-  // lx of that from sunlight reflected by glass and metal facades alone
-  // (render/reflected_sun.h); empty: not computed
+  // lx of that from sunlight reflected by glass and metal facades alone, lobes narrower
+  // than kBroadLobeRoughness (render/reflected_sun.h); empty: not computed
   std::vector<float> reflected_sun_lx;
 };
 

@@ -46,18 +46,23 @@ bool ray_meets_box(const Vec3& origin, const Vec3& direction, const BoundingBox&
 // sphere subtends, within the cone's. Conservative: a box that might meet it does.
 bool box_in_cone(const Vec3& origin, const Vec3& axis, double cos_spread, const BoundingBox& box) {
   const Vec3 to_centre = box.center() - origin;
-  const double d = length(to_centre), radius = 0.5 * length(box.size()) + 1e-3;
+  // ray_meets_box pads each axis by 1 mm: √3 mm along the diagonal.
+  const double d = length(to_centre), radius = 0.5 * length(box.size()) + std::sqrt(3.0) * 1e-3;
   if (d <= radius || cos_spread <= -1) return true;
   const double toward = std::acos(std::clamp(dot(to_centre, axis) / d, -1.0, 1.0));
   return toward - std::asin(radius / d) <= std::acos(std::clamp(cos_spread, -1.0, 1.0));
 }
 
 bool reflects_sun(const Material& material) {
-  if (std::holds_alternative<GlassMaterial>(material)) return true;
-  return std::holds_alternative<CookTorranceMaterial>(material) && specular_roughness(material) < kBroadLobeRoughness;
+  return (std::holds_alternative<CookTorranceMaterial>(material) || std::holds_alternative<GlassMaterial>(material)) &&
+         !is_broad_lobe(material);
 }
 
 }  // namespace
+
+bool is_broad_lobe(const Material& material) {
+  return has_specular(material) && specular_roughness(material) >= kBroadLobeRoughness;
+}
 
 ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Vec3& to_sun, SunAt sun_at)
     : tracer_(tracer), to_sun_(to_sun), sun_at_(std::move(sun_at)) {

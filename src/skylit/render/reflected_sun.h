@@ -48,6 +48,9 @@ inline constexpr int kLobeRings = 6, kLobeAzimuths = 12;
 // curved glTF model of default roughness 1 had one class per triangle, 72 rays each
 // (docs/reflected-sun.md, "Broad lobes").
 inline constexpr double kBroadLobeRoughness = 0.5;
+// Whether a material's glossy lobe (metal, coat or frosted glass) is that broad: its
+// reflected sun is the sky-light integral's, not ReflectedSun's.
+bool is_broad_lobe(const Material& material);
 
 class ReflectedSun {
  public:

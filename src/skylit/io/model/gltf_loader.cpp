@@ -590,7 +590,7 @@ LoadedModel load_gltf_file(const std::filesystem::path& path) {
   // glTF 1.0 is another format (techniques, shaders, no PBR materials) that tinygltf
   // half reads.
   if (model.asset.version.rfind("2.", 0) != 0)
-    throw InputError(name + ": glTF version '" + one_line(model.asset.version) + "'; skylit reads glTF 2.0");
+    throw InputError(name + ": glTF version " + quote_excerpt(model.asset.version) + "; skylit reads glTF 2.0");
   for (const std::string& ext : model.extensionsRequired)
     if (!harmless_extension(ext))
       throw InputError(name + ": requires glTF extension " + ext + ", which skylit does not read");
