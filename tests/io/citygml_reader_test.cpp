@@ -373,6 +373,16 @@ TEST(CityGmlReader, RingsOfTwoPointsEncloseNothingAndStopNothing) {
   EXPECT_EQ(holed.objects[0].surfaces[0].rings.size(), 1u);  // the hole dropped
   EXPECT_NEAR(triangulated_area(holed.objects[0].surfaces[0]), 80.0, 1e-9);
 
+  // A texture's coordinates for the dropped hole are skipped with it.
+  std::string textured = two_point_hole;
+  textured.replace(textured.find("<gml:interior><gml:LinearRing>"), 30,
+                   R"(<gml:interior><gml:LinearRing gml:id="well">)");
+  textured += R"(<app:appearanceMember><app:Appearance><app:surfaceDataMember><app:ParameterizedTexture>
+<app:imageURI>roof.png</app:imageURI><app:target uri="#roof"><app:TexCoordList>
+<app:textureCoordinates ring="#well">0 0 1 0 0 0</app:textureCoordinates>
+</app:TexCoordList></app:target></app:ParameterizedTexture></app:surfaceDataMember></app:Appearance></app:appearanceMember>)";
+  EXPECT_EQ(parse_citygml(city_model(textured), "hole.gml").objects.at(0).surfaces.at(0).rings.size(), 1u);
+
   two_point_roof.replace(two_point_roof.find("0 0 6 10 0 6 10 8 6 0 8 6 0 0 6"), 31, "0 0 6 10 0 6 0 0 6");
   const CityModel flat = parse_citygml(city_model(two_point_roof), "roof.gml");
   ASSERT_EQ(flat.objects.at(0).surfaces.size(), 1u);

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -316,6 +317,7 @@ class CityGmlParser {
   std::unordered_map<std::string, int> polygon_ids_;
   std::unordered_map<std::string, std::vector<int>> aggregate_polygons_;
   std::unordered_map<std::string, std::pair<int, int>> ring_ids_;  // (polygon, ring) by gml:id
+  std::unordered_set<std::string> dropped_ring_ids_;               // holes of fewer than three points (finish_ring)
 };
 
 void CityGmlParser::start(const XML_Char* name, const XML_Char** attribute_list) {
@@ -621,6 +623,7 @@ void CityGmlParser::finish_ring() {
   // is dropped. An empty ring is no ring at all.
   if (ring_.empty()) fail_at(ring_line_, "a ring (gml:LinearRing) without points");
   if (ring_is_interior_ && ring_.size() < 3) {
+    if (!ring_id_.empty()) dropped_ring_ids_.insert(std::move(ring_id_));  // its texture coordinates are skipped
     ring_.clear();
     ring_id_.clear();
     return;
@@ -753,6 +756,7 @@ void CityGmlParser::resolve_appearances(CityModel& model) {
     if (d.texture.image.empty()) fail_at(d.line, "an app:ParameterizedTexture without an app:imageURI");
     const int index = static_cast<int>(model.textures.size());
     for (const RingCoordinates& coordinates : d.rings) {
+      if (dropped_ring_ids_.contains(coordinates.ring)) continue;
       const auto found = ring_ids_.find(coordinates.ring);
       if (found == ring_ids_.end())
         fail_at(coordinates.line,

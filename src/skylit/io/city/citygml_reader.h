@@ -1,4 +1,5 @@
-// Reading CityGML 2.0 and 1.0 files (OGC 12-019, 08-007r1), including Japan's PLATEAU
+// Reading CityGML 2.0 and 1.0 files (OGC 12-019, 08-007r1) and the exterior of 3.0 ones
+// (OGC 20-010; docs/citygml.md says what of it), including Japan's PLATEAU
 // files with their i-UR extension (uro: elements are skipped; the city objects are
 // plain CityGML): buildings and their parts (LoD0–LoD4, solids and boundary surfaces
 // with their semantics, openings), roads, railways, squares, land use, vegetation,
@@ -44,8 +45,8 @@ struct CityGmlOptions {
 // Reads the file as it streams in (a tile of millions of triangles is never held as
 // text). Throws InputError "<file>:<line>: <what>" for a file that is missing, not
 // well-formed XML (truncated, ...), not a CityGML CityModel, names a CRS this reader
-// cannot turn into an EPSG code or two different CRSs, has a ring with fewer than
-// three points, a polygon without an exterior ring, a coordinate that is not a finite
+// cannot turn into an EPSG code or two different CRSs, has a ring without points, a
+// polygon without an exterior ring, a coordinate that is not a finite
 // number, a coordinate list whose length is not a multiple of its dimension, a
 // reference (xlink:href="#id") to a surface that is not in the file, an X3D colour
 // outside [0, 1], or texture coordinates (of the chosen theme) for a ring that is not
