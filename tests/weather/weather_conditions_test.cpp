@@ -153,10 +153,10 @@ TEST(WeatherConditions, OpaqueCoverBeyondTheTotalIsSaid) {
   EXPECT_FALSE(consistent_said);
 }
 
-// A visibility beyond what clean air allows (Rayleigh scattering alone, about 320 km at
-// 550 nm; files write 999 for "unlimited") leaves the scene's aerosol; 200 km gives a
-// small one.
-TEST(WeatherConditions, AVisibilityBeyondCleanAirsOwnLeavesTheAerosol) {
+// A visibility of 999 km, which files write for "unlimited", leaves the scene's aerosol
+// (taken literally it is beyond clean air's own, about 320 km at 550 nm, and gave none);
+// 200 km gives a small one.
+TEST(WeatherConditions, AnUnlimitedVisibilityLeavesTheAerosol) {
   for (const auto& [visibility, unchanged] : {std::pair{"999.0", true}, std::pair{"200.0", false}}) {
     EpwRecordFields night;
     night.day = 26, night.hour = 1, night.visibility = visibility;

@@ -89,18 +89,18 @@ void fit_aerosol(AtmosphereSettings& air, double sun_elevation_rad, double targe
 }
 
 void aerosol_from_visibility(const EpwHour& hour, AtmosphereSettings& air, WeatherSummary& summary, const char* why) {
-  // A visibility at or beyond the clean air's own (Rayleigh scattering alone: about 320 km
-  // at 550 nm) says nothing of the aerosol: files write 999 km for "unlimited".
-  const double from_visibility =
-      hour.visibility_km ? aod_550_from_visibility(std::min(*hour.visibility_km, 1000.0), air.aerosol.scale_height_m)
-                         : 0;
-  if (hour.visibility_km && *hour.visibility_km >= kFogBelowKm && from_visibility <= 0) {
+  // Files write 999 km for "unlimited" (German test reference years among others): no
+  // measure of the aerosol, which taken literally (beyond clean air's own visibility,
+  // about 320 km at 550 nm) would be none at all. Other values are taken as they are, so
+  // that a clearer report never gives a hazier sky.
+  constexpr double kUnlimitedVisibilityKm = 999;
+  if (hour.visibility_km && *hour.visibility_km >= kUnlimitedVisibilityKm) {
     summary.decisions.push_back(
         std::string("aerosol: ") + why +
-        formatted("; aod_550 = %.3f as the scene gives it (the visibility of %.1f km is beyond clean air's own)",
+        formatted("; aod_550 = %.3f as the scene gives it (a visibility of %.0f km marks it unlimited)",
                   air.aerosol.aod_550, *hour.visibility_km));
   } else if (hour.visibility_km && *hour.visibility_km >= kFogBelowKm) {
-    air.aerosol.aod_550 = from_visibility;
+    air.aerosol.aod_550 = aod_550_from_visibility(*hour.visibility_km, air.aerosol.scale_height_m);
     summary.decisions.push_back(
         std::string("aerosol: ") + why +
         formatted("; aod_550 = %.3f from the visibility of %.1f km (haze)", air.aerosol.aod_550, *hour.visibility_km));
