@@ -30,9 +30,10 @@ class Cloud : public CloudGeometry {
   // the bounding volume if the sun grid is prepared for to_sun, else marched.
   double sun_transmittance(const Vec3& p, const Vec3& to_sun) const;
 
-  // Tabulates t' toward to_sun and the depth away from it (SunLineDepths). Call once per scene / sun direction; not
-  // thread-safe against concurrent scatter() calls. A zero or non-finite direction
-  // clears the grid.
+  // Makes room for t' toward to_sun and the depth away from it (SunLineDepths), whose
+  // nodes look-ups march as they need them. Call once per scene / sun direction; not
+  // thread-safe against concurrent scatter() calls (look-ups are safe among themselves).
+  // A zero or non-finite direction clears the grid.
   void prepare_sun(const Vec3& to_sun) { sun_depths_.prepare(*this, to_sun); }
   void clear_sun() { sun_depths_.clear(); }
   // Whether scatter() with this (unit or not) sun direction will use the grid.

@@ -23,12 +23,17 @@ constexpr double kSmallestModel_m = 0.2;
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
+// How far a box's centre lies from the origin (the site) across the ground, m.
+double centre_distance_m(const BoundingBox& box) {
+  const Vec3 c = box.center();
+  return std::hypot(c.x, c.y);
+}
+
 void check_model_placement(const SceneObject& object, std::vector<std::string>& warnings) {
   const BoundingBox box = object.mesh.bounds();
   if (box.empty()) return;
   const std::string who = "object " + quoted(object.name);
-  const Vec3 c = box.center();
-  const double distance = std::hypot(c.x, c.y);
+  const double distance = centre_distance_m(box);
   if (distance > kFarFromOrigin_m)
     warnings.push_back(who + formatted(" lies %.1f km from the origin: set \"center\": true (or translate it) so that "
                                        "single-precision ray tracing keeps its detail",
@@ -54,8 +59,7 @@ void check_model_placement(const SceneObject& object, std::vector<std::string>& 
 void check_city_placement(const SceneObject& object, std::vector<std::string>& warnings) {
   const BoundingBox box = object.mesh.bounds();
   if (box.empty()) return;
-  const Vec3 c = box.center();
-  const double distance = std::hypot(c.x, c.y);
+  const double distance = centre_distance_m(box);
   if (distance > kFarFromOrigin_m)
     warnings.push_back("object " + quoted(object.name) +
                        formatted(" lies %.1f km from the site: is the scene's site the model's?", distance / 1e3));
