@@ -144,6 +144,22 @@ TEST(ModelTextures, AMissingImageIsListedAndABrokenOneIsAnError) {
 // Image addresses as exporters write them: a file name with spaces percent-encoded
 // (RFC 3986: "te%20x.png" is the file "te x.png"), and the image inside the file as a
 // data URI of a media type tinygltf does not list ("image/jpg", the bytes a PNG's).
+// Windows exporters write MTL paths with backslashes ("map_Kd .\maps\tex.png"): read
+// as slashes when the name as written is not there (an outside trial's textures were
+// reported missing beside their file).
+TEST(ModelTextures, ObjTexturePathsWithBackslashesAreFound) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "maps");
+  write_texture(dir, "maps/tex.png");
+  dir.write("quad.mtl", "newmtl Painted\nKd 1 1 1\nmap_Kd .\\maps\\tex.png\n");
+  dir.write("quad.obj",
+            "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl Painted\nf 1/1 2/2 3/3 4/4\n");
+  const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.obj", "z")));
+  EXPECT_TRUE(scene.objects[0].source->missing_images.empty());
+  expect_color(point_below(PreparedScene(scene), 0.5, 0.5), 0, 1, 0);
+}
+
 TEST(ModelTextures, PercentEncodedNamesAndDataUrisOfAnyImageTypeAreRead) {
   TempDir dir;
   write_texture(dir, "te x.png");

@@ -98,9 +98,27 @@ TEST(ObjParser, BadCornersAndVerticesNameTheLine) {
   };
   EXPECT_NE(message("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n").find("m.obj:4:"), std::string::npos);
   EXPECT_NE(message("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 two 3\n").find("m.obj:5:"), std::string::npos);
-  EXPECT_NE(message("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/ 2 3\n").find("m.obj:4:"), std::string::npos);
+  EXPECT_NE(message("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/x 2 3\n").find("m.obj:4:"), std::string::npos);
   EXPECT_NE(message("v 0 0 0\rv 1 inf 0\n").find("m.obj:2:"), std::string::npos);
   EXPECT_EQ(message("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "no error");
+}
+
+// Forms real exporters write that are not errors: empty index fields ("1//", "2/2/",
+// "3/": none given) and a face continued on the next line by a backslash (the OBJ
+// specification's continuation, CRLF line ends too). An outside trial found both refused.
+TEST(ObjParser, EmptyFieldsAndContinuedLines) {
+  const ObjGeometry obj = parse_obj(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nf 1// 2/2/ 3/\nf 2 4 \\\r\n  3\r\nf 1 2 \\\n3 \\\n",
+      "m.obj");
+  ASSERT_EQ(obj.face_ends, (std::vector<uint32_t>{3, 6, 9}));
+  EXPECT_EQ(obj.corners[0].vertex, 0);
+  EXPECT_EQ(obj.corners[0].texcoord, -1);
+  EXPECT_EQ(obj.corners[0].normal, -1);
+  EXPECT_EQ(obj.corners[1].texcoord, 1);
+  EXPECT_EQ(obj.corners[1].normal, -1);
+  EXPECT_EQ(obj.corners[2].texcoord, -1);
+  EXPECT_EQ(obj.corners[5].vertex, 2);  // the continued face's last corner
+  EXPECT_EQ(obj.corners[8].vertex, 2);  // continued to the end of the file
 }
 
 TEST(ObjParser, FacesOfManyCornersAreKept) {

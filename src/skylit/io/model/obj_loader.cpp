@@ -26,6 +26,16 @@
 namespace skylit {
 namespace {
 
+// A file an OBJ or MTL names, beside it: as written, else with Windows' backslashes read
+// as slashes ("map_Kd .\textures\brick.jpg", as Windows exporters write it).
+std::filesystem::path beside(const std::filesystem::path& dir, const std::string& name) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir / name, ec) || name.find('\\') == std::string::npos) return dir / name;
+  std::string slashed = name;
+  std::replace(slashed.begin(), slashed.end(), '\\', '/');
+  return dir / slashed;
+}
+
 // The text of every library the `mtllib` lines name, read beside the file. A name with
 // spaces is tried whole first, then as several names. Libraries that cannot be read are
 // listed in `missing`.
@@ -34,8 +44,9 @@ std::string read_material_libraries(const std::vector<std::string>& mtllib_lines
   std::string libraries;
   const auto read = [&](const std::string& file) {
     std::error_code ec;  // a folder, device or FIFO is not read (a FIFO would block)
-    if (!std::filesystem::is_regular_file(dir / file, ec)) return false;
-    std::ifstream in(dir / file, std::ios::binary);
+    const std::filesystem::path path = beside(dir, file);
+    if (!std::filesystem::is_regular_file(path, ec)) return false;
+    std::ifstream in(path, std::ios::binary);
     if (!in) return false;
     std::ostringstream buffer;
     buffer << in.rdbuf();
@@ -95,7 +106,7 @@ class ObjTextures {
     auto [it, added] = cache_.try_emplace({name, encoding});
     if (!added) return it->second;
     std::error_code ec;
-    const std::filesystem::path file = folder_ / name;
+    const std::filesystem::path file = beside(folder_, name);
     if (std::filesystem::is_regular_file(file, ec))
       it->second = read_texture_file(file, encoding);
     else if (std::find(missing_.begin(), missing_.end(), name) == missing_.end())

@@ -63,9 +63,25 @@ class Parser {
         next = cr + 1;
       }
       ++line_;
-      line(skip_blanks(p, stop), stop);
+      // A line whose last character (before a "\r") is a backslash goes on in the next
+      // (the OBJ specification's continuation; long faces are written so).
+      const char* last = stop;
+      while (last > p && (last[-1] == '\r' || blank(last[-1]))) --last;
+      if (last > p && last[-1] == '\\') {
+        continued_.append(p, last - 1).push_back(' ');
+      } else if (!continued_.empty()) {
+        continued_.append(p, stop);
+        const std::string joined = std::move(continued_);
+        continued_.clear();
+        line(skip_blanks(joined.data(), joined.data() + joined.size()), joined.data() + joined.size());
+      } else {
+        line(skip_blanks(p, stop), stop);
+      }
       p = next;
     }
+    if (!continued_.empty())
+      line(skip_blanks(continued_.data(), continued_.data() + continued_.size()),
+           continued_.data() + continued_.size());
     return std::move(out_);
   }
 
@@ -109,18 +125,20 @@ class Parser {
     out_.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
   }
 
-  // Corners "v", "v/vt", "v//vn" or "v/vt/vn"; after a number, anything up to the next
+  // Corners "v", "v/vt", "v//vn" or "v/vt/vn", an empty field standing for none ("1//",
+  // "2/2/", "3/" as some exporters write them); after a number, anything up to the next
   // '/' or blank is skipped, as tinyobjloader does.
   void face(const char* p, const char* stop) {
+    const auto field_here = [&] { return p < stop && *p != '/' && !blank(*p); };
     for (p = skip_blanks(p, stop); p < stop; p = skip_blanks(p, stop)) {
       ObjCorner corner;
       corner.vertex = index(p, stop, out_.positions.size());
       if (p < stop && *p == '/') {
         ++p;
-        if (p < stop && *p != '/') corner.texcoord = index(p, stop, out_.texcoords.size());
+        if (field_here()) corner.texcoord = index(p, stop, out_.texcoords.size());
         if (p < stop && *p == '/') {
           ++p;
-          corner.normal = index(p, stop, out_.normals.size());
+          if (field_here()) corner.normal = index(p, stop, out_.normals.size());
         }
       }
       out_.corners.push_back(corner);
@@ -162,6 +180,7 @@ class Parser {
   std::string_view text_;
   const std::string& file_name_;
   size_t line_ = 0;
+  std::string continued_;  // the lines so far of one ending in a backslash
   int32_t material_ = -1;
   std::map<std::string, int32_t, std::less<>> material_index_;
   ObjGeometry out_;
