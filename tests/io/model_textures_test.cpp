@@ -125,6 +125,33 @@ TEST(ModelTextures, GltfBaseColorTextureAndEmissiveStrength) {
   EXPECT_FLOAT_EQ(p.emission_cd_m2[2], 10);
 }
 
+// KHR_texture_transform (a material's tiling, as Blender exports it) moves the texture:
+// uv' = T(offset) R(rotation) S(scale) (u, v, 1). Offset half the image: the top left of
+// the quad shows the top right texel, green, and the top right (u 1.25, repeating) red.
+// Rotation π/2: (u, v) → (v, −u), so the top left point (u, v) = (0.25, 0.25) reads
+// (0.25, 0.75): the bottom left texel, blue. (It was ignored: an outside trial's
+// Khronos TextureTransformTest showed its "not supported" panels.)
+TEST(ModelTextures, GltfTextureTransformMovesTheTexture) {
+  TempDir dir;
+  write_texture(dir, "tex.png");
+  write_gltf(dir, "tex.png");
+  const std::string plain = testing::read_file(dir.path() / "quad.gltf");
+  auto with_transform = [&](const std::string& transform) {
+    std::string text = plain;
+    const std::string from = R"("baseColorTexture": {"index": 0})";
+    text.replace(text.find(from), from.size(),
+                 R"("baseColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": )" + transform + "}}");
+    dir.write("quad.gltf", text);
+    return load_scene(dir.write("scene.json", scene_json("quad.gltf", "y")));
+  };
+  const Scene shifted = with_transform(R"({"offset": [0.5, 0]})");
+  const PreparedScene prepared(shifted);
+  expect_color(point_below(prepared, -0.5, 0.5), 0, 1, 0);
+  expect_color(point_below(prepared, 0.5, 0.5), 1, 0, 0);
+  const Scene turned = with_transform(R"({"rotation": 1.5707963267948966})");
+  expect_color(point_below(PreparedScene(turned), -0.5, 0.5), 0, 0, 1);
+}
+
 TEST(ModelTextures, AMissingImageIsListedAndABrokenOneIsAnError) {
   TempDir dir;
   write_gltf(dir, "nowhere.png");

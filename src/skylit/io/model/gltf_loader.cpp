@@ -229,11 +229,14 @@ class GltfReader {
       material.emission_texture = texture(m.emissiveTexture.index, TextureEncoding::srgb);
       material.normal_texture = texture(m.normalTexture.index, TextureEncoding::linear);  // data, not colour
       material.normal_scale = m.normalTexture.scale;
-      // One texture coordinate set per material: the base colour's, else the emission's,
-      // else the normal map's (exporters give them all TEXCOORD_0).
-      if (material.normal_texture) uv_set_[i] = m.normalTexture.texCoord;
-      if (material.emission_texture) uv_set_[i] = m.emissiveTexture.texCoord;
-      if (material.color_texture) uv_set_[i] = m.pbrMetallicRoughness.baseColorTexture.texCoord;
+      // One texture coordinate set per material, with its KHR_texture_transform: the base
+      // colour's, else the emission's, else the normal map's (exporters give them all
+      // TEXCOORD_0 and one transform: a material's tiling).
+      if (material.normal_texture) use_uvs_of(i, m.normalTexture.texCoord, m.normalTexture.extensions);
+      if (material.emission_texture) use_uvs_of(i, m.emissiveTexture.texCoord, m.emissiveTexture.extensions);
+      if (material.color_texture)
+        use_uvs_of(i, m.pbrMetallicRoughness.baseColorTexture.texCoord,
+                   m.pbrMetallicRoughness.baseColorTexture.extensions);
       set_alpha(m, material);
       out_.materials.push_back(std::move(material));
     }
@@ -439,10 +442,16 @@ class GltfReader {
     const AccessorView t = view(attribute->second, "TEXCOORD");
     if (t.components != 2) fail("a TEXCOORD accessor is not VEC2");
     if (t.count < triangles.vertices.size()) fail("a TEXCOORD accessor has fewer elements than POSITION");
+    const auto transform = uv_transform_.find(material);
     for (const auto& tri : triangles.triangles) {
       CornerUvs corner{};
       for (size_t k = 0; k < 3; ++k) {
-        const double u = t.get(tri[k], 0), v = t.get(tri[k], 1);
+        double u = t.get(tri[k], 0), v = t.get(tri[k], 1);
+        if (transform != uv_transform_.end()) {
+          const std::array<double, 6>& m = transform->second;
+          const double tu = m[0] * u + m[1] * v + m[2], tv = m[3] * u + m[4] * v + m[5];
+          u = tu, v = tv;
+        }
         corner[k] = {std::isfinite(u) ? static_cast<float>(u) : 0.0f, std::isfinite(v) ? static_cast<float>(v) : 0.0f};
       }
       uvs.push_back(corner);
@@ -469,6 +478,31 @@ class GltfReader {
       normals.push_back(corner);
     }
     any_normal_ = true;
+  }
+
+  // Material `index` reads TEXCOORD_`set`, or the set and transform its textureInfo's
+  // KHR_texture_transform gives: uv' = T(offset) R(rotation) S(scale) (u, v, 1), with
+  // R = [cos r, sin r; −sin r, cos r] as the extension's specification writes it.
+  void use_uvs_of(int32_t index, int set, const tinygltf::ExtensionMap& extensions) {
+    uv_set_[index] = set;
+    uv_transform_.erase(index);
+    const auto found = extensions.find("KHR_texture_transform");
+    if (found == extensions.end() || !found->second.IsObject()) return;
+    const tinygltf::Value& t = found->second;
+    auto number = [&](const tinygltf::Value& v, double fallback) {
+      return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? v.GetNumberAsDouble() : fallback;
+    };
+    auto pair = [&](const char* key, double fallback) {
+      std::array<double, 2> out{fallback, fallback};
+      if (t.Has(key) && t.Get(key).IsArray() && t.Get(key).ArrayLen() == 2)
+        for (int k = 0; k < 2; ++k) out[k] = number(t.Get(key).Get(k), fallback);
+      return out;
+    };
+    const auto offset = pair("offset", 0.0), scale = pair("scale", 1.0);
+    const double r = t.Has("rotation") ? number(t.Get("rotation"), 0.0) : 0.0;
+    if (t.Has("texCoord") && t.Get("texCoord").IsInt()) uv_set_[index] = t.Get("texCoord").GetNumberAsInt();
+    const double c = std::cos(r), sn = std::sin(r);
+    uv_transform_[index] = {c * scale[0], sn * scale[1], offset[0], -sn * scale[0], c * scale[1], offset[1]};
   }
 
   // The texture a material's textureInfo names, decoded once per image; null for none,
@@ -553,6 +587,8 @@ class GltfReader {
   std::filesystem::path folder_;
   std::map<std::pair<int, TextureEncoding>, std::shared_ptr<const Texture>> textures_;  // by image
   std::map<int32_t, int> uv_set_;  // by material: its texture's TEXCOORD set
+  // By material: its texture's KHR_texture_transform, uv' = M (u, v, 1), row-major 2 × 3.
+  std::map<int32_t, std::array<double, 6>> uv_transform_;
   bool any_uv_ = false;
   bool any_normal_ = false;
   std::map<int, Part> meshes_;
