@@ -52,12 +52,12 @@ TEST(SceneModelPlacement, UnitsCentreAndGround) {
   EXPECT_NEAR(box.hi.x, 6, 1e-9);
   EXPECT_NEAR(box.lo.y, -4, 1e-9);
   EXPECT_NEAR(box.hi.y, 4, 1e-9);
-  EXPECT_NEAR(box.lo.z, 0, 1e-9);
-  EXPECT_NEAR(box.hi.z, 6, 1e-9);
+  EXPECT_NEAR(box.lo.z, 1e-3, 1e-9);  // a millimetre above a ground plane, not in it
+  EXPECT_NEAR(box.hi.z, 6.001, 1e-9);
   const ModelSource& source = *scene.objects[0].source;
   EXPECT_EQ(source.units, "mm");
   EXPECT_NEAR(source.offset_m.x, -500006, 1e-6);  // the survey easting removed, recorded
-  EXPECT_NEAR(source.offset_m.z, 150, 1e-9);
+  EXPECT_NEAR(source.offset_m.z, 150.001, 1e-9);
   EXPECT_TRUE(scene_warnings(scene, true).empty()) << scene_warnings(scene, true)[0];
   const std::string report = describe_objects(scene);
   EXPECT_NE(report.find("12 triangles"), std::string::npos) << report;

@@ -113,8 +113,11 @@ double metres_per_unit(const std::string& unit) {
 }
 
 // `center`: the model's box centred on the origin in x and y (survey coordinates
-// brought to the site); `place_on_ground`: its lowest point on z = 0. Returns the
-// shift.
+// brought to the site); `place_on_ground`: its lowest point kOnGroundM above z = 0, so
+// that faces lying on the ground do not fight a ground plane for the same hits (an
+// outside trial's paving and flat models rendered as speckle). Returns the shift.
+constexpr double kOnGroundM = 1e-3;  // below any drawing's precision
+
 Vec3 place(const JsonReader& j, TriangleMesh& mesh) {
   const bool center = j.optional("center") && j.required("center").boolean();
   const bool ground = j.optional("place_on_ground") && j.required("place_on_ground").boolean();
@@ -122,7 +125,7 @@ Vec3 place(const JsonReader& j, TriangleMesh& mesh) {
   Vec3 shift{0, 0, 0};
   if (box.empty()) return shift;
   if (center) shift = {-box.center().x, -box.center().y, 0};
-  if (ground) shift.z = -box.lo.z;
+  if (ground) shift.z = kOnGroundM - box.lo.z;
   if (center || ground)
     for (Vec3& v : mesh.vertices) v += shift;
   return shift;
