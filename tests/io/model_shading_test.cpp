@@ -233,6 +233,14 @@ TEST(ModelShading, ObjMapDCutsHolesFromAGreyMask) {
   EXPECT_EQ(object_below(prepared, -kTexel, kTexel), -1);
   EXPECT_EQ(object_below(prepared, kTexel, kTexel), 0);
   EXPECT_EQ(object_below(prepared, -kTexel, -kTexel), 0);
+  // Exporters write "d 0" (or illum 4) beside the mask: still cut-outs, not glass (an
+  // outside trial's barn had turned to glass).
+  write_obj_square(dir, "card", "newmtl Leaves\nKd 0.3 0.6 0.2\nd 0\nillum 4\nmap_d mask.png\n", "1");
+  const Scene exported = load_scene(dir.write("exported.json", scene_json("card.obj")));
+  EXPECT_EQ(exported.objects[0].source->materials.at(0).became.find("glass"), std::string::npos);
+  const Traced cut(exported);
+  EXPECT_EQ(object_below(cut, -kTexel, kTexel), -1);
+  EXPECT_EQ(object_below(cut, kTexel, kTexel), 0);
 }
 
 TEST(ModelShading, ASingleSidedBackFaceIsInvisibleButCastsShadow) {

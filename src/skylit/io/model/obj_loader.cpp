@@ -76,7 +76,10 @@ ModelMaterial model_material(const tinyobj::material_t& m) {
   out.roughness =
       m.roughness > 0 ? beckmann_from_gltf_roughness(m.roughness) : beckmann_from_phong_exponent(m.shininess);
   const bool transparent_illum = m.illum == 4 || m.illum == 6 || m.illum == 7 || m.illum == 9;
-  if (m.dissolve < 0.99 || transparent_illum) {  // d, or Tr = 1 − d
+  // With a map_d, d and illum describe the cut-outs it makes (foliage cards, railings:
+  // exporters write "d 0" beside the mask), not a pane of glass.
+  const bool cut_out = !m.alpha_texname.empty();
+  if (!cut_out && (m.dissolve < 0.99 || transparent_illum)) {  // d, or Tr = 1 − d
     out.kind = ModelMaterial::Kind::glass;
     out.roughness = 0;             // window glass is flat; Ns describes a highlight's size, not a pane
   } else if (m.metallic >= 0.5) {  // the PBR extension's Pm
