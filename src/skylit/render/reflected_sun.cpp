@@ -41,18 +41,6 @@ bool ray_meets_box(const Vec3& origin, const Vec3& direction, const BoundingBox&
   return true;
 }
 
-// Whether the box may lie within the cone of directions about `axis` (unit) of
-// cos_spread from `origin`: the angle to the box's centre, less the angle its bounding
-// sphere subtends, within the cone's. Conservative: a box that might meet it does.
-bool box_in_cone(const Vec3& origin, const Vec3& axis, double cos_spread, const BoundingBox& box) {
-  const Vec3 to_centre = box.center() - origin;
-  // ray_meets_box pads each axis by 1 mm: √3 mm along the diagonal.
-  const double d = length(to_centre), radius = 0.5 * length(box.size()) + std::sqrt(3.0) * 1e-3;
-  if (d <= radius || cos_spread <= -1) return true;
-  const double toward = std::acos(std::clamp(dot(to_centre, axis) / d, -1.0, 1.0));
-  return toward - std::asin(radius / d) <= std::acos(std::clamp(cos_spread, -1.0, 1.0));
-}
-
 bool reflects_sun(const Material& material) {
   return (std::holds_alternative<CookTorranceMaterial>(material) || std::holds_alternative<GlassMaterial>(material)) &&
          !is_broad_lobe(material);
@@ -121,6 +109,19 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
     has_mirrors_ = has_mirrors_ || (orientation.mirror && !orientation.nodes.empty());
     has_rough_ = has_rough_ || (!orientation.mirror && !orientation.nodes.empty());
   }
+  // The classes with nodes, mirrors and rough apart, in trees of their boxes and cones.
+  for (const bool mirrors : {true, false}) {
+    std::vector<BoxCone> items;
+    std::vector<int32_t>& classes = mirrors ? mirror_classes_ : rough_classes_;
+    for (size_t c = 0; c < classes_.size(); ++c) {
+      const OrientationClass& orientation = classes_[c];
+      if (orientation.mirror != mirrors || orientation.nodes.empty()) continue;
+      items.push_back({orientation.box, orientation.axis, orientation.cos_spread});
+      classes.push_back(static_cast<int32_t>(c));
+    }
+    // ray_meets_box pads each axis by 1 mm: √3 mm along the diagonal.
+    (mirrors ? mirror_tree_ : rough_tree_) = ConeTree(items, std::sqrt(3.0) * 1e-3);
+  }
 }
 
 void ReflectedSun::add_nodes(OrientationClass& orientation, const Material& material) const {
@@ -169,11 +170,10 @@ Irradiance ReflectedSun::from(const Vec3& position, const Vec3& normal, bool mir
   thread_local std::vector<Ray> rays;
   thread_local std::vector<const Node*> ray_nodes;
   thread_local std::vector<std::optional<Hit>> hits;
-  for (size_t c = 0; c < classes_.size(); ++c) {
+  const std::vector<int32_t>& classes = mirrors ? mirror_classes_ : rough_classes_;
+  (mirrors ? mirror_tree_ : rough_tree_).visit(origin, [&](size_t item) {
+    const auto c = static_cast<size_t>(classes[item]);
     const OrientationClass& orientation = classes_[c];
-    if (orientation.mirror != mirrors || orientation.nodes.empty() ||
-        !box_in_cone(origin, orientation.axis, orientation.cos_spread, orientation.box))
-      continue;
     rays.clear();
     ray_nodes.clear();
     for (const Node& node : orientation.nodes) {
@@ -182,7 +182,7 @@ Irradiance ReflectedSun::from(const Vec3& position, const Vec3& normal, bool mir
       rays.push_back(Ray{origin, node.toward});
       ray_nodes.push_back(&node);
     }
-    if (rays.empty()) continue;
+    if (rays.empty()) return;
     tracer_.intersect(rays, hits);
     for (size_t r = 0; r < rays.size(); ++r) {
       const Node& node = *ray_nodes[r];
@@ -200,7 +200,7 @@ Irradiance ReflectedSun::from(const Vec3& position, const Vec3& normal, bool mir
       if (sun.is_black()) continue;
       sum += node.weight * sun.spectrum() * static_cast<float>(cos_point);
     }
-  }
+  });
   return Irradiance(sum);
 }
 

@@ -30,6 +30,7 @@
 
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/material/material.h"
+#include "skylit/render/cone_tree.h"
 #include "skylit/render/surface_point.h"
 #include "skylit/scene/scene.h"
 #include "skylit/spectrum/radiometry.h"
@@ -88,8 +89,8 @@ class ReflectedSun {
     std::vector<Node> nodes;
     // The cone about `axis` (unit) that holds every node's direction within the angle
     // whose cosine is `cos_spread`: a class whose box lies outside it, seen from a point,
-    // is passed over with one test instead of one per node (a curved model has a class
-    // per triangle).
+    // is passed over with one test instead of one per node, and neighbouring classes of
+    // a curved model together (render/cone_tree.h).
     Vec3 axis{0, 0, 1};
     double cos_spread = -1;
   };
@@ -102,6 +103,10 @@ class ReflectedSun {
   SunAt sun_at_;
   std::vector<Group> groups_;
   std::vector<OrientationClass> classes_;
+  // The classes with nodes, mirrors and rough apart, and their trees (items by the
+  // same indices).
+  std::vector<int32_t> mirror_classes_, rough_classes_;
+  ConeTree mirror_tree_, rough_tree_;
   std::vector<int32_t> class_of_group_;
   // Per object, the group of each triangle (−1: none); empty for objects without any.
   std::vector<std::vector<int32_t>> triangle_group_;
