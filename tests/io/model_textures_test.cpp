@@ -25,6 +25,13 @@ void write_texture(const TempDir& dir, const std::string& name) {
   dir.write(name, std::string(png.begin(), png.end()));
 }
 
+// A 2 m quad on the ground, its material "Painted" from quad.mtl, the image across it.
+void write_obj_quad(const TempDir& dir) {
+  dir.write("quad.obj",
+            "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl Painted\nf 1/1 2/2 3/3 4/4\n");
+}
+
 std::string scene_json(const std::string& file, const std::string& up, const std::string& more = "") {
   return R"({"camera": {"position": [0, 0, 10], "look_at": [0, 0.001, 0]},
     "sun": {"altitude_deg": 40, "azimuth_deg": 135},
@@ -56,9 +63,7 @@ TEST(ModelTextures, ObjMapKdAtKnownUvs) {
   // A 2 m quad on the ground with the image across it; OBJ's v runs up from the image's
   // bottom row. Kd 0.5 scales the texels (as glTF's factor does).
   dir.write("quad.mtl", "newmtl Painted\nKd 0.5 1 1\nmap_Kd tex.png\nKe 20 10 5\n");
-  dir.write("quad.obj",
-            "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl Painted\nf 1/1 2/2 3/3 4/4\n");
+  write_obj_quad(dir);
   const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.obj", "z")));
   const PreparedScene prepared(scene);
   expect_color(point_below(prepared, -0.5, 0.5), 0.5, 0, 0);  // top left: red
@@ -179,9 +184,7 @@ TEST(ModelTextures, ObjTexturePathsWithBackslashesAreFound) {
   std::filesystem::create_directories(dir.path() / "maps");
   write_texture(dir, "maps/tex.png");
   dir.write("quad.mtl", "newmtl Painted\nKd 1 1 1\nmap_Kd .\\maps\\tex.png\n");
-  dir.write("quad.obj",
-            "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl Painted\nf 1/1 2/2 3/3 4/4\n");
+  write_obj_quad(dir);
   const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.obj", "z")));
   EXPECT_TRUE(scene.objects[0].source->missing_images.empty());
   expect_color(point_below(PreparedScene(scene), 0.5, 0.5), 0, 1, 0);

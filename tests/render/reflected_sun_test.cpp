@@ -139,26 +139,23 @@ TEST(ReflectedSun, OnlyWhereTheLitFacetIsSeen) {
   EXPECT_EQ(illuminance(facades.from_mirrors({x_shaded, 0, 0}, {0, 0, 1})), 0);
 }
 
-// A rough aluminium wall (m = 0.15) far wider and taller than the distance to the
-// point: the nodes' sum against a dense midpoint grid of directions from the point,
-// ∫ f_s(s, −ω)(n·s) E_sun cos θ_P dω over the directions that meet the wall.
-TEST(ReflectedSun, RoughLobeQuadratureMatchesADenseGrid) {
-  testing::TempDir dir;
-  const Scene scene = load_scene(dir.write("scene.json", R"({
-    "camera": {"position": [0, -25, 30], "look_at": [0, 2, 0], "vertical_fov_deg": 50},
-    "sun": {"altitude_deg": 30, "azimuth_deg": 160},
-    "materials": {"grey": {"type": "diffuse", "reflectance": 0.3},
-                  "wall": {"type": "cook_torrance", "metal": "aluminium", "roughness": 0.15}},
-    "objects": [
-      {"name": "ground", "type": "plane", "material": "grey", "size_m": 400},
-      {"name": "wall", "type": "box", "material": "wall", "min": [-150, 10, 0], "max": [150, 10.3, 150]}
-    ]
-  })"));
-  const Renderer renderer(scene);
-  const Material& wall = scene.materials[1].material;
+// A rough aluminium wall 300 m wide and 150 m tall (its face y = 10 toward the sun), the
+// ground of `ground_reflectance`, and `sky` spliced in.
+std::string big_wall_scene(double roughness, double ground_reflectance, const std::string& sky = "") {
+  return R"({"camera": {"position": [0, -25, 30], "look_at": [0, 2, 0], "vertical_fov_deg": 50},
+    "sun": {"altitude_deg": 30, "azimuth_deg": 160}, )" +
+         sky + R"("materials": {"ground": {"type": "diffuse", "reflectance": )" + std::to_string(ground_reflectance) +
+         R"(}, "wall": {"type": "cook_torrance", "metal": "aluminium", "roughness": )" + std::to_string(roughness) +
+         R"(}}, "objects": [{"name": "ground", "type": "plane", "material": "ground", "size_m": 400},
+      {"name": "wall", "type": "box", "material": "wall", "min": [-150, 10, 0], "max": [150, 10.3, 150]}]})";
+}
+
+// The sun a 300 m × 150 m wall of `wall` (its face y = 10 toward −y, x within ±150 m,
+// z up to 150 m) reflects onto the ground point p facing up: a dense midpoint grid of
+// directions from p, ∫ f_s(s, −ω)(n·s) E_sun cos θ_P dω over those that meet the wall, lx.
+// Its cells (0.15° × 0.3°) resolve a lobe of m = 0.15 (≈ 17° wide at half maximum) to 10⁻⁴.
+double dense_wall_lobe_lux(const Material& wall, const Irradiance& sun, const Vec3& p) {
   const Vec3 s = to_sun(), n{0, -1, 0};
-  const Irradiance sun = renderer.sky().direct_sun(0);
-  const Vec3 p{0, 0, 0};
   Spectrum dense;
   constexpr int kTheta = 600, kPhi = 1200;
   for (int i = 0; i < kTheta; ++i) {
@@ -174,10 +171,22 @@ TEST(ReflectedSun, RoughLobeQuadratureMatchesADenseGrid) {
       dense += specular_reflection(wall, n, s, -w).per_sr * sun.spectrum() * static_cast<float>(w.z * d_omega);
     }
   }
-  const double expected = illuminance(Irradiance(dense));
+  return illuminance(Irradiance(dense));
+}
+
+// A rough aluminium wall (m = 0.15) far wider and taller than the distance to the
+// point: the nodes' sum against a dense midpoint grid of directions from the point,
+// ∫ f_s(s, −ω)(n·s) E_sun cos θ_P dω over the directions that meet the wall.
+TEST(ReflectedSun, RoughLobeQuadratureMatchesADenseGrid) {
+  testing::TempDir dir;
+  const Scene scene = load_scene(dir.write("scene.json", big_wall_scene(0.15, 0.3)));
+  const Renderer renderer(scene);
+  const Material& wall = scene.materials[1].material;
+  const Irradiance sun = renderer.sky().direct_sun(0);
+  const Vec3 p{0, 0, 0};
+  const double expected = dense_wall_lobe_lux(wall, sun, p);
   const double got = illuminance(renderer.bands().facades().from_rough(p, {0, 0, 1}));
-  // The grid's cells (0.15° × 0.3°) resolve the lobe (≈ 17° wide at half maximum) to
-  // 10⁻⁴; the nodes' error on an unobstructed lobe is what docs/reflected-sun.md states.
+  // The nodes' error on an unobstructed lobe is what docs/reflected-sun.md states.
   EXPECT_NEAR(got, expected, 0.02 * expected);
   EXPECT_GT(expected, 0.1 * illuminance(sun));  // the lobe does reach the point
 }
@@ -188,38 +197,15 @@ TEST(ReflectedSun, RoughLobeQuadratureMatchesADenseGrid) {
 // wall is the sun the wall reflects, against the same dense grid as above.
 TEST(ReflectedSun, ABroadLobesSunComesThroughTheSkyLightIntegral) {
   testing::TempDir dir;
-  const Scene scene = load_scene(dir.write("scene.json", R"({
-    "camera": {"position": [0, -25, 30], "look_at": [0, 2, 0], "vertical_fov_deg": 50},
-    "sun": {"altitude_deg": 30, "azimuth_deg": 160},
-    "sky": {"type": "cie", "cie_type": 12, "diffuse_horizontal_lux": 1e-6, "direct_sun": true},
-    "materials": {"black": {"type": "diffuse", "reflectance": 0},
-                  "wall": {"type": "cook_torrance", "metal": "aluminium", "roughness": 0.7}},
-    "objects": [
-      {"name": "ground", "type": "plane", "material": "black", "size_m": 400},
-      {"name": "wall", "type": "box", "material": "wall", "min": [-150, 10, 0], "max": [150, 10.3, 150]}
-    ]
-  })"));
+  const Scene scene = load_scene(
+      dir.write("scene.json", big_wall_scene(0.7, 0.0,
+                                             R"("sky": {"type": "cie", "cie_type": 12, "diffuse_horizontal_lux": 1e-6,
+                                                        "direct_sun": true},)")));
   const Renderer renderer(scene);
   const Material& wall = scene.materials[1].material;
-  const Vec3 s = to_sun(), n{0, -1, 0};
   const Irradiance sun = renderer.sky().direct_sun(0);
   const Vec3 p{0, 0, 0};
-  Spectrum dense;
-  constexpr int kTheta = 600, kPhi = 1200;
-  for (int i = 0; i < kTheta; ++i) {
-    const double theta = 0.5 * kPi * (i + 0.5) / kTheta;
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = 2 * kPi * (j + 0.5) / kPhi;
-      const Vec3 w{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-      if (w.y <= 0) continue;
-      const double t = (kWallY - p.y) / w.y;
-      const Vec3 q = p + t * w;
-      if (std::abs(q.x) > 150 || q.z > 150) continue;
-      const double d_omega = std::sin(theta) * (0.5 * kPi / kTheta) * (2 * kPi / kPhi);
-      dense += specular_reflection(wall, n, s, -w).per_sr * sun.spectrum() * static_cast<float>(w.z * d_omega);
-    }
-  }
-  const double expected = illuminance(Irradiance(dense));
+  const double expected = dense_wall_lobe_lux(wall, sun, p);
   const double got = illuminance(renderer.sky_light().diffuse_irradiance(p, {0, 0, 1}));
   EXPECT_EQ(illuminance(renderer.bands().facades().from_rough(p, {0, 0, 1})), 0.0);  // no node rays
   EXPECT_GT(expected, 0.02 * illuminance(sun));
