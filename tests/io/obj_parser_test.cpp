@@ -121,6 +121,19 @@ TEST(ObjParser, EmptyFieldsAndContinuedLines) {
   EXPECT_EQ(obj.corners[8].vertex, 2);  // continued to the end of the file
 }
 
+// A UTF-8 byte-order mark (as Windows tools write) is skipped: the first vertex kept; a
+// UTF-16 file is refused as such.
+TEST(ObjParser, AByteOrderMarkIsSkippedAndUtf16Named) {
+  const ObjGeometry obj = parse_obj("\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "m.obj");
+  EXPECT_EQ(obj.positions.size(), 3u);
+  try {
+    parse_obj(std::string("\xFF\xFEv\0 \0", 6), "w.obj");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("w.obj: the file is UTF-16 text"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ObjParser, FacesOfManyCornersAreKept) {
   // tinyobjloader counts a face's corners in a byte; a 300-gon keeps all of its corners.
   std::string obj, face = "f";

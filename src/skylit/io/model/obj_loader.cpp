@@ -50,7 +50,9 @@ std::string read_material_libraries(const std::vector<std::string>& mtllib_lines
     if (!in) return false;
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    libraries += buffer.str();
+    std::string text = buffer.str();
+    if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // a UTF-8 byte-order mark hid the first newmtl
+    libraries += text;
     libraries += '\n';
     return true;
   };
