@@ -21,6 +21,12 @@ inline constexpr std::uintmax_t kMaxTextFileBytes = 64u << 20;
 std::string read_text_file(const std::filesystem::path& file, const std::string& what,
                            std::uintmax_t max_bytes = kMaxTextFileBytes);
 
+// The text without a UTF-8 byte order mark at its start (Windows editors write one; it
+// is not part of the first line).
+inline std::string_view without_byte_order_mark(std::string_view text) {
+  return text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text;
+}
+
 // Throws InputError "<file>: <what>: not a regular file" (or "not found") unless `file`
 // is a regular file, for the readers that hand a path to a library.
 void require_regular_file(const std::filesystem::path& file, const std::string& what);

@@ -177,9 +177,8 @@ Irradiance BandsIntegrator::sun_reaching(const SurfacePoint& point, std::optiona
 
 Radiance BandsIntegrator::lambertian_obstacle_radiance(const Ray& ray, const SurfacePoint& point,
                                                        const Material& material, const Irradiance& sky,
-                                                       std::optional<float> sunlit_share) const {
-  const Irradiance irradiance =
-      sky * diffuse_share(point) + sun_reaching(point, sunlit_share) * static_cast<float>(dot(point.normal, to_sun_));
+                                                       const Irradiance& sun) const {
+  const Irradiance irradiance = sky * diffuse_share(point) + sun * static_cast<float>(dot(point.normal, to_sun_));
   // No emission here: an emitting surface is seen, but does not light others (a sky band
   // element's ray that meets a small lit window would stand for the whole element).
   return lambertian_radiance(diffuse_albedo(material, dot(point.normal, -ray.direction)), irradiance);
@@ -220,19 +219,20 @@ ObstacleLight BandsIntegrator::element_obstacle_light(const Ray& ray, const Hit&
 Radiance BandsIntegrator::obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& body,
                                             const Irradiance& sky, int level, std::optional<float> sunlit_share) const {
   const Vec3 to_viewer = -ray.direction;
-  Radiance radiance = lambertian_obstacle_radiance(ray, point, body, sky, sunlit_share);
+  const Irradiance sun = sun_reaching(point, sunlit_share);
+  Radiance radiance = lambertian_obstacle_radiance(ray, point, body, sky, sun);
   // A broad lobe's sunlight toward the ray's origin: the integral whose ray this is
   // gathers it over its directions, as smooth in them as the lobe is wide.
   if (broad_lobe_[point.material])
-    radiance += specular_reflection(scene_.material(point.material), point.normal, to_sun_, to_viewer)
-                    .reflect(sun_reaching(point, sunlit_share));
+    radiance += specular_reflection(scene_.material(point.material), point.normal, to_sun_, to_viewer).reflect(sun);
   const Reflectance fresnel = specular_fresnel(scene_.material(point.material), dot(point.normal, to_viewer));
   if (fresnel.is_black()) return radiance;
   const Ray mirrored{offset_from_surface(point.position, point.normal), mirror_direction(point.normal, to_viewer)};
   if (const std::optional<Hit> next = scene_.tracer().intersect(mirrored)) {
     const SurfacePoint seen = scene_.untextured_point(mirrored, *next);
     return radiance + fresnel * lambertian_obstacle_radiance(mirrored, seen, obstacle_materials_[seen.material],
-                                                             obstacle_sky(mirrored, *next, seen, level));
+                                                             obstacle_sky(mirrored, *next, seen, level),
+                                                             sun_reaching(seen));
   }
   return radiance + fresnel * sky_seen_from(point.position, mirrored.direction);
 }

@@ -227,8 +227,9 @@ class BandsIntegrator {
   // "own_sky" the obstacle sky light's `level`, or where that has none the integral's own
   // (ObstacleLight::lit_as_the_point).
   ObstacleLight element_obstacle_light(const Ray& ray, const Hit& hit, int level) const;
+  // `sun`: the direct sun reaching the point, on a plane facing it (sun_reaching).
   Radiance lambertian_obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& material,
-                                        const Irradiance& sky, std::optional<float> sunlit_share = std::nullopt) const;
+                                        const Irradiance& sky, const Irradiance& sun) const;
   // The sky light on an obstacle seen other than by an integral (in a mirror): the
   // obstacle sky light's `level` where it has a patch, else the open sky's.
   Irradiance obstacle_sky(const Ray& ray, const Hit& hit, const SurfacePoint& point, int level) const;

@@ -21,13 +21,13 @@ using PlaneKey = std::pair<uint32_t, std::array<long long, 4>>;
 PlaneKey plane_key(uint32_t material, Vec3 normal, double offset) { return {material, rounded_plane(normal, offset)}; }
 
 // Whether a ray can meet the box (slab test). The box of a flat facet is flat: it is
-// padded by 1 mm so the test stays robust.
+// padded by kBoxPadM on every axis so the test stays robust.
+constexpr double kBoxPadM = 1e-3;
 bool ray_meets_box(const Vec3& origin, const Vec3& direction, const BoundingBox& box) {
-  constexpr double kPadM = 1e-3;
   double t0 = 0, t1 = std::numeric_limits<double>::infinity();
   for (int axis = 0; axis < 3; ++axis) {
     const double o = origin[axis], d = direction[axis];
-    const double lo = box.lo[axis] - kPadM, hi = box.hi[axis] + kPadM;
+    const double lo = box.lo[axis] - kBoxPadM, hi = box.hi[axis] + kBoxPadM;
     if (std::abs(d) < 1e-15) {
       if (o < lo || o > hi) return false;
       continue;
@@ -98,14 +98,6 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
     OrientationClass& orientation = classes_[c];
     if (dot(orientation.normal, to_sun_) < 0) orientation.normal = -orientation.normal;
     add_nodes(orientation, scene.materials[class_material[c]].material);
-    if (!orientation.nodes.empty()) {
-      Vec3 sum{0, 0, 0};
-      for (const Node& node : orientation.nodes) sum += node.toward;
-      orientation.axis = length(sum) > 1e-9 ? normalize(sum) : orientation.nodes.front().toward;
-      orientation.cos_spread = 1;
-      for (const Node& node : orientation.nodes)
-        orientation.cos_spread = std::min(orientation.cos_spread, dot(node.toward, orientation.axis));
-    }
     has_mirrors_ = has_mirrors_ || (orientation.mirror && !orientation.nodes.empty());
     has_rough_ = has_rough_ || (!orientation.mirror && !orientation.nodes.empty());
   }
@@ -116,11 +108,17 @@ ReflectedSun::ReflectedSun(const Scene& scene, const RayTracer& tracer, const Ve
     for (size_t c = 0; c < classes_.size(); ++c) {
       const OrientationClass& orientation = classes_[c];
       if (orientation.mirror != mirrors || orientation.nodes.empty()) continue;
-      items.push_back({orientation.box, orientation.axis, orientation.cos_spread});
+      // The cone about the nodes' mean direction that holds them all.
+      BoxCone item{orientation.box, {0, 0, 0}, 1};
+      for (const Node& node : orientation.nodes) item.axis += node.toward;
+      item.axis = length(item.axis) > 1e-9 ? normalize(item.axis) : orientation.nodes.front().toward;
+      for (const Node& node : orientation.nodes)
+        item.cos_spread = std::min(item.cos_spread, dot(node.toward, item.axis));
+      items.push_back(item);
       classes.push_back(static_cast<int32_t>(c));
     }
-    // ray_meets_box pads each axis by 1 mm: √3 mm along the diagonal.
-    (mirrors ? mirror_tree_ : rough_tree_) = ConeTree(items, std::sqrt(3.0) * 1e-3);
+    // ray_meets_box's pad on each axis is √3 of it along the diagonal.
+    (mirrors ? mirror_tree_ : rough_tree_) = ConeTree(items, std::sqrt(3.0) * kBoxPadM);
   }
 }
 

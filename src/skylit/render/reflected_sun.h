@@ -87,12 +87,6 @@ class ReflectedSun {
     BoundingBox box;
     bool mirror = false;
     std::vector<Node> nodes;
-    // The cone about `axis` (unit) that holds every node's direction within the angle
-    // whose cosine is `cos_spread`: a class whose box lies outside it, seen from a point,
-    // is passed over with one test instead of one per node, and neighbouring classes of
-    // a curved model together (render/cone_tree.h).
-    Vec3 axis{0, 0, 1};
-    double cos_spread = -1;
   };
 
   Irradiance from(const Vec3& position, const Vec3& normal, bool mirrors) const;
@@ -103,8 +97,11 @@ class ReflectedSun {
   SunAt sun_at_;
   std::vector<Group> groups_;
   std::vector<OrientationClass> classes_;
-  // The classes with nodes, mirrors and rough apart, and their trees (items by the
-  // same indices).
+  // The classes with nodes, mirrors and rough apart, and their trees of boxes and the
+  // cones that hold their nodes' directions (items by the same indices): a class whose
+  // box lies outside its cone, seen from a point, is passed over with one test instead
+  // of one per node, and neighbouring classes of a curved model together
+  // (render/cone_tree.h).
   std::vector<int32_t> mirror_classes_, rough_classes_;
   ConeTree mirror_tree_, rough_tree_;
   std::vector<int32_t> class_of_group_;

@@ -525,7 +525,7 @@ class GltfReader {
       // A data URI whose media type tinygltf does not list ("image/jpg", "image/webp",
       // none): its bytes, which decode_texture takes if they are a PNG or JPEG.
       const size_t comma = image.uri.find(',');
-      if (comma == std::string::npos || image.uri.rfind(";base64", comma) != comma - 7)
+      if (comma == std::string::npos || !std::string_view(image.uri).substr(0, comma).ends_with(";base64"))
         fail("image " + std::to_string(source) + ": a data URI that is not base64");
       const std::string bytes = tinygltf::base64_decode(image.uri.substr(comma + 1));
       it->second = decode_texture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), encoding, where);

@@ -50,9 +50,7 @@ std::string read_material_libraries(const std::vector<std::string>& mtllib_lines
     if (!in) return false;
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    std::string text = buffer.str();
-    if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);  // a UTF-8 byte-order mark hid the first newmtl
-    libraries += text;
+    libraries += without_byte_order_mark(buffer.str());  // a byte order mark hid the first newmtl
     libraries += '\n';
     return true;
   };

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "skylit/core/error.h"
+#include "skylit/core/text_file.h"
 
 namespace skylit {
 namespace {
@@ -189,10 +190,10 @@ class Parser {
 }  // namespace
 
 ObjGeometry parse_obj(std::string_view text, const std::string& file_name) {
-  // Windows tools start UTF-8 text with a byte-order mark, which hid the first line's
-  // keyword (a first vertex lost shifted every index after it); UTF-16 text is not OBJ
-  // as the parser reads it, and is said to be so rather than "no triangles".
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  // A byte order mark had hidden the first line's keyword (a first vertex lost shifted
+  // every index after it); UTF-16 text is not OBJ as the parser reads it, and is said to
+  // be so rather than "no triangles".
+  text = without_byte_order_mark(text);
   if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
     throw InputError(file_name + ": the file is UTF-16 text; save it as UTF-8 (or ASCII) to read it");
   return Parser(text, file_name).parse();

@@ -177,8 +177,8 @@ EpwFile parse_epw(std::string_view text, const std::string& name) {
   file.name = name;
   int line_number = 0;
   bool location_seen = false, data_periods_seen = false;
-  // A byte order mark (Windows editors write one) is not part of the first line.
-  size_t start = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+  text = without_byte_order_mark(text);
+  size_t start = 0;
   while (start < text.size()) {
     // Lines end in LF, CR LF (Windows) or a lone CR (classic Mac OS exports).
     size_t end = text.find_first_of("\r\n", start);
