@@ -206,6 +206,11 @@ TEST(ModelTextures, PercentEncodedNamesAndDataUrisOfAnyImageTypeAreRead) {
   const PreparedScene prepared(inside);
   expect_color(point_below(prepared, 0.5, 0.5), 0, 1, 0);
   expect_color(point_below(prepared, -0.5, -0.5), 0, 0, 1);
+  // A data URI that is not base64 is refused, naming the model and the image.
+  write_gltf(dir, "data:image/png,not-base64");
+  const std::string message =
+      testing::input_error_of([&] { load_scene(dir.write("scene.json", scene_json("quad.gltf", "y"))); });
+  EXPECT_NE(message.find("quad.gltf: image 0: a data URI that is not base64"), std::string::npos) << message;
 }
 
 }  // namespace
