@@ -3,6 +3,7 @@
 #include "process_group.h"
 
 #include <cstdlib>
+#include <span>
 #include <string>
 
 #include "skylit/core/error.h"
@@ -32,7 +33,7 @@ int launcher_rank_count() {
 // Floats are sent in pieces of at most this many, as MPI counts are ints.
 constexpr std::size_t kMaxFloatsPerMessage = std::size_t{1} << 28;
 
-void send_floats(std::vector<float>& values, int peer, int tag, bool sending) {
+void send_floats(std::span<float> values, int peer, int tag, bool sending) {
   for (std::size_t start = 0; start < values.size(); start += kMaxFloatsPerMessage) {
     const int count = static_cast<int>(std::min(kMaxFloatsPerMessage, values.size() - start));
     if (sending)

@@ -31,7 +31,7 @@ XyzImage sky_pixels(const XyzImage& image, SkyProjection projection) {
         inside.insert(inside.end(), {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)});
       }
   XyzImage out(static_cast<int>(inside.size() / 3), 1);
-  out.xyz = std::move(inside);
+  out.xyz.assign(inside.begin(), inside.end());
   return out;
 }
 

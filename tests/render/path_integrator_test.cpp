@@ -127,7 +127,7 @@ TEST(PathIntegrator, BytesDoNotDependOnThreads) {
   scene.objects.push_back({"tower", make_box({-5, -5, 0}, {5, 5, 30}), 0});
   scene.camera = Camera{{3, -40, 8}, {0, 0, 10}, {0, 0, 1}, 60.0};
   const Renderer renderer(scene);
-  std::vector<std::vector<float>> images;
+  std::vector<HugePageVector<float>> images;
   for (int threads : {1, 2, 7}) {
     const Renderer::Result result = renderer.render_with_error({threads, {}});
     ASSERT_TRUE(result.standard_error.has_value());

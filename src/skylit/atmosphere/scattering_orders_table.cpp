@@ -177,7 +177,7 @@ void exp_above_floor(const Bins log_r, const Bins log_a, Bins& out_r, Bins& out_
 // S at a table position by multilinear interpolation of log S on the grid: the 16
 // corners blended one axis at a time (azimuth, μ, μ_s, altitude), so that each bin
 // waits on four blends in a row rather than on sixteen sums.
-void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c, Bins& out_r, Bins& out_a) {
+void gather(const HugePageVector<Table::LogSource>& logs, const TableCoordinates& c, Bins& out_r, Bins& out_a) {
   auto entry = [&logs](int altitude, int mu_sun, int mu, int azimuth) -> const Table::LogSource& {
     return logs[static_cast<size_t>((altitude * Table::kMuSunSize + mu_sun) * kDirections + mu * Table::kAzimuthSize +
                                     azimuth)];
@@ -217,7 +217,7 @@ void gather(const std::vector<Table::LogSource>& logs, const TableCoordinates& c
 // (μ_s, φ) is blended along altitude and μ (and toward the pole's mean) once, and each
 // of the rays that share the path (every sun and azimuth) reads it with 4 corners
 // instead of 16.
-void blend_segment(const std::vector<Table::LogSource>& logs, const RayCoordinates& where, Table::LogSource* plane) {
+void blend_segment(const HugePageVector<Table::LogSource>& logs, const RayCoordinates& where, Table::LogSource* plane) {
   auto entry = [&logs](int altitude, int mu_sun, int mu, int azimuth) -> const Table::LogSource& {
     return logs[static_cast<size_t>((altitude * Table::kMuSunSize + mu_sun) * kDirections + mu * Table::kAzimuthSize +
                                     azimuth)];
@@ -414,7 +414,7 @@ struct ScatteringOrdersTable::Grid {
   }
 
   // Irradiance on the ground from the radiance on the grid's lowest row, per μ_s.
-  static std::vector<Bins> ground_irradiance(const std::vector<Bins>& radiance) {
+  static std::vector<Bins> ground_irradiance(const HugePageVector<Bins>& radiance) {
     std::vector<Bins> e(kMuSunSize, Bins{});
     for (int j = 0; j < kMuSunSize; ++j)
       for (int d = 0; d < kDirections; ++d) {
@@ -455,9 +455,11 @@ ScatteringOrdersTable::ScatteringOrdersTable(const AtmosphereMedium& medium, con
                                              [&grid](double c) { return grid.aerosol_phase(c); });
 
   const size_t size = static_cast<size_t>(kPoints * kDirections);
-  std::vector<Bins> radiance(size), order_r(size), order_a(size), ground;
-  std::vector<LogSource> logs(size);
-  std::vector<Bins> total_r(size, Bins{}), total_a(size, Bins{});
+  // The orders' tables are 2.4–4.7 MB each, new memory: in 2 MiB pages (core/huge_pages.h).
+  HugePageVector<Bins> radiance(size), order_r(size), order_a(size);
+  std::vector<Bins> ground;
+  HugePageVector<LogSource> logs(size);
+  HugePageVector<Bins> total_r(size, Bins{}), total_a(size, Bins{});
   Bins last_sum_r{}, last_sum_a{}, before_sum_r{}, before_sum_a{};
   for (int order = 1; order <= kOrders; ++order) {
     // L_order at every point and direction, path by path: the rays from one altitude in

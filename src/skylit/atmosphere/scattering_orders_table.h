@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "skylit/atmosphere/transmittance_table.h"
+#include "skylit/core/huge_pages.h"
 #include "skylit/spectrum/spectrum.h"
 
 namespace skylit {
@@ -76,7 +77,7 @@ class ScatteringOrdersTable {
   // terminator, and interpolating its logarithm follows that fall where interpolating
   // S overshot it (docs/atmosphere.md, Twilight). Both phase functions' values side by
   // side, so that a look-up's 16 corners touch 16 cache lines rather than 32.
-  std::vector<LogSource> log_source_;
+  HugePageVector<LogSource> log_source_;
 };
 
 }  // namespace skylit

@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "skylit/core/huge_pages.h"
 #include "skylit/geometry/ray_tracer.h"
 #include "skylit/render/camera.h"
 #include "skylit/render/surface_point.h"
@@ -42,7 +43,7 @@ class PrimaryHits {
 
  private:
   int width_, height_;
-  std::vector<PrimaryHit> hits_;  // row by row from the top
+  HugePageVector<PrimaryHit> hits_;  // row by row from the top
 };
 
 }  // namespace skylit

@@ -146,7 +146,9 @@ const SurfaceCache::Grid::Stored* SurfaceCache::Grid::nearest(double x, double y
 }
 
 void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute) {
-  // Slots in scan order, then the values in parallel: deterministic.
+  // Slots in scan order, then the values in parallel: deterministic. Room for every
+  // wanted point first: growing the store copied it, into new pages each time.
+  stored_.reserve(stored_.size() + static_cast<size_t>(std::count(slots_.begin(), slots_.end(), kWanted)));
   for (int gy = 0; gy < grid_height_; ++gy)
     for (int gx = 0; gx < grid_width_; ++gx) {
       int32_t& slot = slots_[index(gx, gy)];

@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "skylit/core/huge_pages.h"
 #include "skylit/media/fog_behind_surface.h"
 #include "skylit/render/primary_hits.h"
 #include "skylit/spectrum/radiometry.h"
@@ -130,8 +131,8 @@ class SurfaceCache {
       return slot >= 0 ? &stored_[static_cast<size_t>(slot)] : nullptr;
     }
     int width_, height_, spacing_, grid_width_, grid_height_;
-    std::vector<int32_t> slots_;
-    std::vector<Stored> stored_;
+    HugePageVector<int32_t> slots_;  // per cell: as many as the image's pixels at the pixel level
+    HugePageVector<Stored> stored_;  // up to tens of MB (a Stored is about 1.1 KB)
   };
 
   // Where the coarse grid or else the fine one has a value for a point (interpolate's

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "skylit/core/huge_pages.h"
 #include "skylit/spectrum/spectral_math.h"
 #include "skylit/spectrum/spectrum.h"
 
@@ -63,7 +64,7 @@ class SpectrumGrid2D {
   }
 
   int size_x_, size_y_;
-  std::vector<Spectrum> cells_;
+  HugePageVector<Spectrum> cells_;
 };
 
 // e^(−τ) in the given bins of a table of optical depths τ, at the grid coordinates
@@ -109,7 +110,7 @@ class SpectrumGrid3D {
  private:
   size_t index(int x, int y, int z) const { return static_cast<size_t>((z * size_y_ + y) * size_x_ + x); }
   int size_x_, size_y_, size_z_;
-  std::vector<Spectrum> cells_;
+  HugePageVector<Spectrum> cells_;
 };
 
 }  // namespace skylit
