@@ -439,6 +439,35 @@ TEST_F(MeshIo, ObjMaterialsFromMtlPerFace) {
   EXPECT_NEAR(model.materials[4].ior, 1.5, 1e-12);
 }
 
+// MeshLab writes `Tr` as an opacity: `Tr 1` alone is an opaque material, with a warning
+// naming the library, the material and the rule. A transparent illum, a `d` (which wins)
+// or a Tr below 0.99 keep Tr = 1 − d. The second library, with CRLF lines, checks that
+// each material is matched to its own lines.
+TEST_F(MeshIo, MtlTrOfOneAloneIsMeshLabsOpacity) {
+  write("a.mtl",
+        "newmtl material_0\nKa 0.2 0.2 0.2\nKd 0.6 0.5 0.4\nKs 0 0 0\nTr 1.000000\nillum 2\nNs 0\n"
+        "newmtl Pane\nKd 0.1 0.1 0.1\nTr 1\nillum 4\n"
+        "newmtl Dissolved\nKd 0.5 0.5 0.5\nd 0\nTr 1\n"
+        "newmtl Half\nKd 0.5 0.5 0.5\nTr 0.5\n");
+  write("b.mtl", "newmtl Painted\r\nKd 0.3 0.3 0.3\r\nKs 0.5 0.5 0.5\r\nillum 2\r\nTr 0.995\r\n");
+  const fs::path p = write("m.obj", "mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl material_0\nf 1 2 3\n");
+  const LoadedModel model = load_model_file(p, UpAxis::z);
+  ASSERT_EQ(model.materials.size(), 5u);
+  EXPECT_EQ(model.materials[0].kind, ModelMaterial::Kind::diffuse);
+  expect_same_spectrum(std::get<DiffuseMaterial>(material_from_model(model.materials[0])).reflectance,
+                       reflectance_from_linear_srgb({0.6, 0.5, 0.4}), 1e-6);
+  EXPECT_EQ(model.materials[1].kind, ModelMaterial::Kind::glass);  // illum 4: meant clear
+  EXPECT_EQ(model.materials[2].kind, ModelMaterial::Kind::glass);  // d 0 wins over Tr
+  EXPECT_EQ(model.materials[3].kind, ModelMaterial::Kind::glass);  // Tr 0.5: d 0.5 either way
+  EXPECT_EQ(model.materials[4].kind, ModelMaterial::Kind::coated);
+  EXPECT_EQ(model.read_warnings,
+            (std::vector<std::string>{
+                "material library 'a.mtl', material 'material_0': Tr 1 without d read as MeshLab writes it, an "
+                "opacity (opaque), not as 1 − d (clear glass)",
+                "material library 'b.mtl', material 'Painted': Tr 0.995 without d read as MeshLab writes it, an "
+                "opacity (opaque), not as 1 − d (clear glass)"}));
+}
+
 TEST_F(MeshIo, ObjMissingMaterialLibraryIsNotAnError) {
   const fs::path p = write("lost.obj", "mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Brick\nf 1 2 3\n");
   const LoadedModel model = load_model_file(p, UpAxis::z);

@@ -107,7 +107,8 @@ struct ModelSource {
   };
   std::vector<MaterialUse> materials;
   std::vector<std::string> missing_libraries, missing_images;
-  int skipped_primitives = 0;  // glTF points and lines, not drawn
+  int skipped_primitives = 0;              // glTF points and lines, not drawn
+  std::vector<std::string> read_warnings;  // LoadedModel::read_warnings
 };
 
 // Where a city model came from and how it was placed (`skylit info`).

@@ -44,6 +44,10 @@ struct LoadedModel {
   std::vector<std::string> missing_images;
   // glTF primitives of points or lines, which are not surfaces and are not drawn.
   int skipped_primitives = 0;
+  // Where the file was read other than by its format's letter, because read so it would
+  // describe what no model means (MTL's `Tr 1` from MeshLab): one line each, naming the
+  // file and the rule, for `skylit info` and `render` to warn with.
+  std::vector<std::string> read_warnings;
 };
 
 // Per-corner data (texture coordinates) kept with its corners when a mirroring

@@ -17,6 +17,7 @@
 #include <tiny_obj_loader.h>
 
 #include "skylit/core/error.h"
+#include "skylit/core/formatted.h"
 #include "skylit/core/text_file.h"
 #include "skylit/geometry/polygon_triangulation.h"
 #include "skylit/io/model/mesh_io.h"
@@ -36,12 +37,18 @@ std::filesystem::path beside(const std::filesystem::path& dir, const std::string
   return dir / slashed;
 }
 
-// The text of every library the `mtllib` lines name, read beside the file. A name with
-// spaces is tried whole first, then as several names. Libraries that cannot be read are
-// listed in `missing`.
-std::string read_material_libraries(const std::vector<std::string>& mtllib_lines, const std::filesystem::path& dir,
-                                    std::vector<std::string>& missing) {
-  std::string libraries;
+// A material library the file names, read beside it.
+struct MtlLibrary {
+  std::string name;  // as the `mtllib` line gives it
+  std::string text;
+};
+
+// Every library the `mtllib` lines name, read beside the file. A name with spaces is
+// tried whole first, then as several names. Libraries that cannot be read are listed in
+// `missing`.
+std::vector<MtlLibrary> read_material_libraries(const std::vector<std::string>& mtllib_lines,
+                                                const std::filesystem::path& dir, std::vector<std::string>& missing) {
+  std::vector<MtlLibrary> libraries;
   const auto read = [&](const std::string& file) {
     std::error_code ec;  // a folder, device or FIFO is not read (a FIFO would block)
     const std::filesystem::path path = beside(dir, file);
@@ -50,8 +57,8 @@ std::string read_material_libraries(const std::vector<std::string>& mtllib_lines
     if (!in) return false;
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    libraries += without_byte_order_mark(buffer.str());  // a byte order mark hid the first newmtl
-    libraries += '\n';
+    // A byte order mark hid the first newmtl.
+    libraries.push_back({file, std::string(without_byte_order_mark(buffer.str())) + '\n'});
     return true;
   };
   for (const std::string& names : mtllib_lines) {
@@ -63,7 +70,54 @@ std::string read_material_libraries(const std::vector<std::string>& mtllib_lines
   return libraries;
 }
 
+// Per material, in the order tinyobjloader's LoadMtl lists them: the library that
+// defines it and whether it gives `d`. LoadMtl reads `Tr` as 1 − d unless the material
+// gives `d`, and does not say which of the two it read. Lines are split and recognised
+// as LoadMtl splits and recognises them, the libraries read as one text.
+struct MtlDefinition {
+  std::string library;
+  bool gives_d = false;
+};
+
+std::vector<MtlDefinition> mtl_definitions(const std::vector<MtlLibrary>& libraries) {
+  const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+  std::vector<MtlDefinition> out;
+  MtlDefinition current;  // before any newmtl, LoadMtl's unnamed default, listed only at the end
+  bool named = false;
+  for (const MtlLibrary& library : libraries) {
+    for (std::string_view text = library.text; !text.empty();) {
+      const size_t end = std::min(text.find_first_of("\r\n"), text.size());
+      std::string_view line = text.substr(0, end);
+      text.remove_prefix(std::min(text.substr(end, 2) == "\r\n" ? end + 2 : end + 1, text.size()));
+      while (!line.empty() && blank(line.back())) line.remove_suffix(1);
+      line = line.substr(0, line.find('\0'));  // LoadMtl reads the trimmed line as a C string
+      while (!line.empty() && blank(line.front())) line.remove_prefix(1);
+      if (line.size() > 6 && line.starts_with("newmtl") && blank(line[6])) {
+        if (named) out.push_back(current);
+        current = {library.name, false};
+        named = line.size() > 7;  // LoadMtl lists a material without a name only last
+      } else if (line.size() > 1 && line[0] == 'd' && blank(line[1])) {
+        current.gives_d = true;
+      }
+    }
+  }
+  out.push_back(current);
+  return out;
+}
+
 double largest(const tinyobj::real_t* rgb) { return std::max({rgb[0], rgb[1], rgb[2]}); }
+
+bool transparent_illum(const tinyobj::material_t& m) {
+  return m.illum == 4 || m.illum == 6 || m.illum == 7 || m.illum == 9;
+}
+
+// MeshLab writes `Tr` as an opacity, Tr 1 for opaque: read as tinyobjloader reads it,
+// 1 − d, that is a pane that lets all light through and reflects nothing, which no
+// model means. So a Tr of 0.99 or more with no `d`, no transparent illum and no map_d
+// is taken as MeshLab's (docs/model-materials.md).
+bool tr_is_meshlab_opacity(const tinyobj::material_t& m, const MtlDefinition& definition) {
+  return !definition.gives_d && m.dissolve <= 0.01 && !transparent_illum(m) && m.alpha_texname.empty();
+}
 
 // MTL's parameters onto skylit's kinds (docs/model-materials.md). Colours are
 // taken as linear reflectances, as exporters write them (Blender's base colour, say).
@@ -75,11 +129,10 @@ ModelMaterial model_material(const tinyobj::material_t& m) {
   out.ior = m.ior >= 1.05 && m.ior <= 3.0 ? m.ior : 1.5;
   out.roughness =
       m.roughness > 0 ? beckmann_from_gltf_roughness(m.roughness) : beckmann_from_phong_exponent(m.shininess);
-  const bool transparent_illum = m.illum == 4 || m.illum == 6 || m.illum == 7 || m.illum == 9;
   // With a map_d, d and illum describe the cut-outs it makes (foliage cards, railings:
   // exporters write "d 0" beside the mask), not a pane of glass.
   const bool cut_out = !m.alpha_texname.empty();
-  if (!cut_out && (m.dissolve < 0.99 || transparent_illum)) {  // d, or Tr = 1 − d
+  if (!cut_out && (m.dissolve < 0.99 || transparent_illum(m))) {  // d, or Tr = 1 − d
     out.kind = ModelMaterial::Kind::glass;
     out.roughness = 0;             // window glass is flat; Ns describes a highlight's size, not a pane
   } else if (m.metallic >= 0.5) {  // the PBR extension's Pm
@@ -150,15 +203,27 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
 
   // The libraries are read here, so a missing one does not stop the load.
   LoadedModel model;
-  std::istringstream libraries(
-      read_material_libraries(obj.material_libraries, path.parent_path(), model.missing_libraries));
+  const std::vector<MtlLibrary> libraries =
+      read_material_libraries(obj.material_libraries, path.parent_path(), model.missing_libraries);
+  std::string all_libraries;
+  for (const MtlLibrary& library : libraries) all_libraries += library.text;
+  std::istringstream libraries_text(all_libraries);
   std::map<std::string, int> material_ids;  // the first of two materials of one name wins
   std::vector<tinyobj::material_t> materials;
   std::string warnings, errors;
-  tinyobj::LoadMtl(&material_ids, &materials, &libraries, &warnings, &errors);
+  tinyobj::LoadMtl(&material_ids, &materials, &libraries_text, &warnings, &errors);
+  const std::vector<MtlDefinition> definitions = mtl_definitions(libraries);
 
   ObjTextures textures(path.parent_path(), model.missing_images);
-  for (const tinyobj::material_t& m : materials) {
+  for (size_t i = 0; i < materials.size(); ++i) {
+    tinyobj::material_t m = materials[i];
+    if (i < definitions.size() && tr_is_meshlab_opacity(m, definitions[i])) {
+      model.read_warnings.push_back(
+          "material library " + quote_excerpt(definitions[i].library) + ", material '" + m.name + "'" +
+          formatted(": Tr %g without d read as MeshLab writes it, an opacity (opaque), not as 1 − d (clear glass)",
+                    1.0 - m.dissolve));
+      m.dissolve = 1;
+    }
     ModelMaterial material = model_material(m);
     material.color_texture = textures.get(m.diffuse_texname);
     material.emission_texture = textures.get(m.emissive_texname);

@@ -146,6 +146,7 @@ LoadedModel read_mesh(const JsonReader& j, const std::filesystem::path& base_dir
   source.missing_libraries = model.missing_libraries;
   source.missing_images = model.missing_images;
   source.skipped_primitives = model.skipped_primitives;
+  source.read_warnings = model.read_warnings;
   if (auto u = j.optional("units")) source.units = u->one_of({"m", "cm", "mm", "ft", "in"});
   if (const double f = metres_per_unit(source.units); f != 1.0)
     model.mesh = transformed(model.mesh, Transform::scale({f, f, f}));

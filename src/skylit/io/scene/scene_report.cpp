@@ -184,6 +184,8 @@ std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
     for (const std::string& image : object.source->missing_images)
       warnings.push_back("object " + quoted(object.name) + ": texture image " + quote_excerpt(image) +
                          " not found beside its file; its materials are used without it");
+    for (const std::string& line : object.source->read_warnings)
+      warnings.push_back("object " + quoted(object.name) + ": " + line);
     if (scene.material_override_count > 0)
       for (const auto& m : object.source->materials)
         if (!m.overridden)
