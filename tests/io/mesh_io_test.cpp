@@ -339,6 +339,66 @@ TEST_F(MeshIo, GltfQuantizedPositionsAreScaledByTheNode) {
   EXPECT_EQ(m.vertices[2], Vec3(0, 1, 0));
 }
 
+// The triangle with normals (0, 0, 1) and one morph target that moves vertex 1 by
+// (0.4, 0.6, 0.8) and turns vertex 2's normal by (0, 2, 0); the mesh's default weight
+// 0.5. Node 0 takes it, node 1 (10 m along x) gives its own weight 1. `target_accessor`
+// is spliced into the target's POSITION accessor (a sparse one, say).
+std::string morphed_gltf(const std::string& target_accessor = "") {
+  std::string b = triangle_buffer();
+  for (int i = 0; i < 3; ++i)
+    for (float f : {0.f, 0.f, 1.f}) put(b, f);
+  for (float f : {0.f, 0.f, 0.f, 0.4f, 0.6f, 0.8f, 0.f, 0.f, 0.f}) put(b, f);
+  for (float f : {0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 2.f, 0.f}) put(b, f);
+  return R"({"asset": {"version": "2.0"}, "buffers": [)" + embedded(b) + R"(],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6},
+                  {"buffer": 0, "byteOffset": 44, "byteLength": 36}, {"buffer": 0, "byteOffset": 80, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 116, "byteLength": 36}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
+                {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC3"},
+                {"bufferView": 3, "componentType": 5126, "count": 3, "type": "VEC3")" +
+         target_accessor + R"(},
+                {"bufferView": 4, "componentType": 5126, "count": 3, "type": "VEC3"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 2}, "indices": 1,
+                              "targets": [{"POSITION": 3, "NORMAL": 4}]}], "weights": [0.5]}],
+  "nodes": [{"mesh": 0}, {"mesh": 0, "weights": [1], "translation": [10, 0, 0]}],
+  "scenes": [{"nodes": [0, 1]}], "scene": 0})";
+}
+
+// glTF 2.0 §3.7.2.2: positions and normals are base + Σ wᵢ targetᵢ, the weights the
+// node's, else the mesh's defaults.
+TEST_F(MeshIo, GltfMorphTargetsTakeTheirDefaultWeights) {
+  const LoadedModel model = load_model_file(write("morph.gltf", morphed_gltf()), UpAxis::z);
+  ASSERT_EQ(model.mesh.vertices.size(), 6u);
+  const auto expect_near = [](const Vec3& a, const Vec3& b) {
+    EXPECT_NEAR(length(a - b), 0, 1e-6) << a.x << " " << a.y << " " << a.z;
+  };
+  expect_near(model.mesh.vertices[1], {1.2, 0.3, 0.4});   // the mesh's weight 0.5
+  expect_near(model.mesh.vertices[4], {11.4, 0.6, 0.8});  // node 1's weight 1
+  expect_near(model.mesh.vertices[3], {10, 0, 0});        // vertex 0 does not move
+  ASSERT_EQ(model.corner_normals.size(), 2u);
+  const auto normal = [&](size_t triangle, size_t corner) {
+    const auto& n = model.corner_normals[triangle][corner];
+    return Vec3{n[0], n[1], n[2]};
+  };
+  expect_near(normal(0, 2), normalize(Vec3{0, 1, 1}));  // (0, 0, 1) + 0.5 (0, 2, 0)
+  expect_near(normal(1, 2), normalize(Vec3{0, 2, 1}));
+  expect_near(normal(0, 0), {0, 0, 1});
+}
+
+// Sparse accessors are not read: a morph target of one is refused by name unless its
+// weight is 0, when it does not count.
+TEST_F(MeshIo, GltfSparseMorphTargetIsRefusedUnlessItsWeightIsZero) {
+  const std::string sparse = R"(, "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5123},
+                                             "values": {"bufferView": 3}})";
+  expect_input_error(write("sparse.gltf", morphed_gltf(sparse)), "POSITION morph target accessor 3 is sparse");
+  std::string unweighted = morphed_gltf(sparse);
+  unweighted.replace(unweighted.find(R"("weights": [0.5])"), 16, R"("weights": [0])");
+  unweighted.replace(unweighted.find(R"("weights": [1])"), 14, R"("weights": [0])");
+  const LoadedModel model = load_model_file(write("unweighted.gltf", unweighted), UpAxis::z);
+  EXPECT_EQ(model.mesh.vertices[1], Vec3(1, 0, 0));
+}
+
 TEST_F(MeshIo, GltfNonFiniteCoordinateIsInputError) {
   const std::string bytes = triangle_buffer(std::numeric_limits<float>::quiet_NaN());
   expect_input_error(write("nan.gltf", triangle_gltf(embedded(bytes), kTranslatedNode)), "finite");

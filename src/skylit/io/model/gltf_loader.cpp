@@ -4,7 +4,8 @@
 // factors and the transmission, ior and volume extensions; docs/model-materials.md).
 // Base-colour, emissive and normal textures (PNG, JPEG: io/model/texture_file.h) with
 // the primitives' texture coordinates, emission, alphaMode and doubleSided, and the
-// vertex normals (NORMAL). Everything else in the file is ignored. The file's own axes are kept (+Y up);
+// vertex normals (NORMAL). Positions and normals are morphed by their targets' default
+// weights. Everything else in the file is ignored. The file's own axes are kept (+Y up);
 // load_model_file turns them into skylit's frame.
 //
 // This is the one translation unit that compiles tinygltf's implementation. tinygltf
@@ -327,7 +328,7 @@ class GltfReader {
     const tinygltf::Node& node = model_.nodes[index];
     const Transform world = parent * local_transform(node, index);
     if (node.mesh >= 0) {
-      const Part& part = mesh(node.mesh);
+      const Part& part = mesh(node.mesh, node.weights);
       out_.mesh.append(transformed(part.mesh, world));
       out_.triangle_material.insert(out_.triangle_material.end(), part.material.begin(), part.material.end());
       std::vector<CornerUvs> uvs = part.uvs;
@@ -348,21 +349,40 @@ class GltfReader {
     std::vector<CornerNormals> normals;  // per triangle, zero without NORMAL
   };
 
-  // A mesh, built once however many nodes use it.
-  const Part& mesh(int index) {
+  // A mesh at the morph target weights in force, the node's, else the mesh's own
+  // (glTF 2.0 §3.7.2.2: the mesh's are the defaults), built once however many nodes use
+  // it so.
+  const Part& mesh(int index, const std::vector<double>& node_weights) {
     if (static_cast<size_t>(index) >= model_.meshes.size())
       fail("a node refers to mesh " + std::to_string(index) + " which does not exist");
-    auto [it, inserted] = meshes_.try_emplace(index);
+    const tinygltf::Mesh& mesh = model_.meshes[static_cast<size_t>(index)];
+    const std::vector<double>& weights = node_weights.empty() ? mesh.weights : node_weights;
+    auto [it, inserted] = meshes_.try_emplace({index, weights});
     if (inserted)
-      for (const auto& primitive : model_.meshes[index].primitives) {
-        const TriangleMesh triangles = read_primitive(primitive);
+      for (const auto& primitive : mesh.primitives) {
+        const TriangleMesh triangles = read_primitive(primitive, weights);
         it->second.mesh.append(triangles);
         const int32_t material = material_of(primitive);
         it->second.material.insert(it->second.material.end(), triangles.triangles.size(), material);
         read_uvs(primitive, material, triangles, it->second.uvs);
-        read_normals(primitive, triangles, it->second.normals);
+        read_normals(primitive, weights, triangles, it->second.normals);
       }
     return it->second;
+  }
+
+  // Adds the primitive's morph targets of `attribute` (POSITION, NORMAL), each times its
+  // weight, to `values`, one per vertex: the spec's base + Σ wᵢ targetᵢ. A target without
+  // a weight has weight 0 (the spec's default), and a target of weight 0 is not read.
+  void add_morph_targets(const tinygltf::Primitive& primitive, const std::vector<double>& weights,
+                         const std::string& attribute, std::vector<Vec3>& values) const {
+    for (size_t t = 0; t < primitive.targets.size() && t < weights.size(); ++t) {
+      const auto found = primitive.targets[t].find(attribute);
+      if (weights[t] == 0 || found == primitive.targets[t].end()) continue;
+      const AccessorView d = view(found->second, (attribute + " morph target").c_str());
+      if (d.components != 3) fail("a " + attribute + " morph target accessor is not VEC3");
+      if (d.count < values.size()) fail("a " + attribute + " morph target has fewer elements than POSITION");
+      for (size_t i = 0; i < values.size(); ++i) values[i] += weights[t] * Vec3{d.get(i, 0), d.get(i, 1), d.get(i, 2)};
+    }
   }
 
   int32_t material_of(const tinygltf::Primitive& primitive) const {
@@ -372,7 +392,7 @@ class GltfReader {
     return primitive.material;
   }
 
-  TriangleMesh read_primitive(const tinygltf::Primitive& primitive) {
+  TriangleMesh read_primitive(const tinygltf::Primitive& primitive, const std::vector<double>& weights) {
     TriangleMesh mesh;
     // tinygltf fills in the spec's default mode (4, triangles) when absent. Points and
     // lines are no surfaces: counted for `skylit info`, not drawn.
@@ -388,6 +408,7 @@ class GltfReader {
     if (p.components != 3) fail("POSITION accessor is not VEC3");
     mesh.vertices.reserve(p.count);
     for (size_t i = 0; i < p.count; ++i) mesh.vertices.emplace_back(p.get(i, 0), p.get(i, 1), p.get(i, 2));
+    add_morph_targets(primitive, weights, "POSITION", mesh.vertices);
 
     std::vector<uint32_t> indices;
     if (primitive.indices >= 0) {
@@ -459,10 +480,11 @@ class GltfReader {
     any_uv_ = true;
   }
 
-  // The NORMAL attribute at each corner of the primitive's triangles; zero (flat, by
-  // sanitize_file_normals) without one. Values are checked later, not here.
-  void read_normals(const tinygltf::Primitive& primitive, const TriangleMesh& triangles,
-                    std::vector<CornerNormals>& normals) {
+  // The NORMAL attribute, morphed as the positions are, at each corner of the
+  // primitive's triangles; zero (flat, by sanitize_file_normals) without one. Values are
+  // checked and normalised later, not here.
+  void read_normals(const tinygltf::Primitive& primitive, const std::vector<double>& weights,
+                    const TriangleMesh& triangles, std::vector<CornerNormals>& normals) {
     const auto attribute = primitive.attributes.find("NORMAL");
     if (triangles.empty() || attribute == primitive.attributes.end()) {
       normals.insert(normals.end(), triangles.triangles.size(), CornerNormals{});
@@ -471,12 +493,16 @@ class GltfReader {
     const AccessorView n = view(attribute->second, "NORMAL");
     if (n.components != 3) fail("a NORMAL accessor is not VEC3");
     if (n.count < triangles.vertices.size()) fail("a NORMAL accessor has fewer elements than POSITION");
-    for (const auto& tri : triangles.triangles) {
-      CornerNormals corner{};
-      for (size_t k = 0; k < 3; ++k)
-        for (int c = 0; c < 3; ++c) corner[k][static_cast<size_t>(c)] = static_cast<float>(n.get(tri[k], c));
-      normals.push_back(corner);
-    }
+    std::vector<Vec3> vertex_normals;
+    vertex_normals.reserve(triangles.vertices.size());
+    for (size_t i = 0; i < triangles.vertices.size(); ++i)
+      vertex_normals.emplace_back(n.get(i, 0), n.get(i, 1), n.get(i, 2));
+    add_morph_targets(primitive, weights, "NORMAL", vertex_normals);
+    const auto at = [&](uint32_t v) {
+      const Vec3& m = vertex_normals[v];
+      return std::array{static_cast<float>(m.x), static_cast<float>(m.y), static_cast<float>(m.z)};
+    };
+    for (const auto& tri : triangles.triangles) normals.push_back({at(tri[0]), at(tri[1]), at(tri[2])});
     any_normal_ = true;
   }
 
@@ -591,7 +617,7 @@ class GltfReader {
   std::map<int32_t, std::array<double, 6>> uv_transform_;
   bool any_uv_ = false;
   bool any_normal_ = false;
-  std::map<int, Part> meshes_;
+  std::map<std::pair<int, std::vector<double>>, Part> meshes_;  // by mesh and morph weights
   LoadedModel out_;
 };
 

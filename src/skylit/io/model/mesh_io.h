@@ -65,11 +65,11 @@ inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t{1} << 30;
 
 // Loads every triangle of the file in metres, in skylit's frame. The format comes
 // from the extension (.gltf, .glb, .obj; any case). For glTF, the node hierarchy
-// of the default scene (else scene 0, else every root node) is applied, and the
-// primitives of triangles, triangle strips and fans are taken; points and lines are
-// skipped (and counted). Throws InputError, naming the file, when it is missing or unreadable,
-// cannot be parsed, has an index out of range or a non-finite coordinate, holds no
-// triangles, or has an unknown extension.
+// of the default scene (else scene 0, else every root node) is applied, morph targets
+// at their default weights, and the primitives of triangles, triangle strips and fans
+// are taken; points and lines are skipped (and counted). Throws InputError, naming the
+// file, when it is missing or unreadable, cannot be parsed, has an index out of range or
+// a non-finite coordinate, holds no triangles, or has an unknown extension.
 // A material library the file names that cannot be read is not an error: its
 // triangles get kNoMaterial.
 LoadedModel load_model_file(const std::filesystem::path& path, UpAxis up_axis);
