@@ -1,6 +1,6 @@
 // The CityJSON reader (io/city/cityjson_reader.h): the real samples load whole, each
-// geometry kind and the LoD choice read as the specification says, and malformed
-// files give one located error.
+// geometry kind and the LoD choice read as the specification says, rings of one or two
+// points tolerated as CityGML's are, and malformed files give one located error.
 #include "skylit/io/city/cityjson_reader.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../../test_support.h"
+#include "skylit/io/city/city_placement.h"
 
 namespace skylit {
 namespace {
@@ -165,14 +166,55 @@ TEST(CityJsonReader, MalformedFilesGiveOneLocatedError) {
                 .find("bad.city.json: CityObjects[\"pair\"].geometry[0].boundaries[1][0][0][0][2]: vertex index 60 is "
                       "out of range (the file has 8 vertices)"),
             std::string::npos);
-  EXPECT_NE(error_of(replaced("[[[0, 1, 2, 3]], [[4, 5, 6, 7]]]", "[[[0, 1, 2, 3]], [[4, 5]]]"))
-                .find("CityObjects[\"lawn\"].geometry[1].boundaries[1][0]: a ring needs at least three points"),
+  EXPECT_NE(error_of(replaced("[[[0, 1, 2, 3]], [[4, 5, 6, 7]]]", "[[[0, 1, 2, 3]], [[]]]"))
+                .find("CityObjects[\"lawn\"].geometry[1].boundaries[1][0]: a ring without points"),
             std::string::npos);
   EXPECT_NE(error_of(replaced("[[0, 1, 2, 2, 2, null]]", "[[0, 1, 2, 2, 7, null]]"))
                 .find("semantic value 7 is not one of the geometry's 3"),
             std::string::npos);
   EXPECT_NE(error_of(replaced("\"template\": 0", "\"template\": 3")).find("no template 3"), std::string::npos);
   EXPECT_NE(error_of(replaced("\"CityJSON\"", "\"CityGML\"")).find("bad.city.json: type: expected \"CityJSON\""),
+            std::string::npos);
+}
+
+// A ring of one or two points encloses nothing (the CityGML reader met one in the OGC's
+// Lyon sample, and refusing the file lost the district): as a hole it is dropped with
+// its texture coordinates, as an outer ring its surface is kept and placed as one of
+// zero area. What such a ring refers to is still checked.
+TEST(CityJsonReader, RingsOfOneOrTwoPointsEncloseNothingAndStopNothing) {
+  const std::string text = R"({"type": "CityJSON", "version": "2.0", "metadata": {"referenceSystem": "EPSG:7415"},
+  "appearance": {"textures": [{"type": "PNG", "image": "roof.png"}],
+                 "vertices-texture": [[0, 0], [1, 0], [1, 1], [0, 1]]},
+  "vertices": [[85000, 446000, 0], [85010, 446000, 0], [85010, 446008, 0], [85000, 446008, 0],
+               [85004, 446004, 0], [85005, 446004, 0]],
+  "CityObjects": {"roof": {"type": "Building", "geometry": [{"type": "MultiSurface", "lod": "2",
+    "boundaries": [[[0, 1, 2, 3], [4, 5]], [[4, 5]], [[4]]],
+    "texture": {"photo": {"values": [[[0, 0, 1, 2, 3], [0, 0, 1]], [[0, 0, 1]], [[null]]]}}}]}}})";
+  const CityModel model = read_cityjson_text(text, "rings.city.json");
+  const auto& surfaces = model.objects.at(0).surfaces;
+  ASSERT_EQ(surfaces.size(), 3u);
+  EXPECT_EQ(surfaces[0].rings.size(), 1u);                // the hole dropped,
+  EXPECT_EQ(surfaces[0].texture_coordinates.size(), 1u);  // its texture coordinates with it
+  EXPECT_EQ(surfaces[0].texture, 0);
+  EXPECT_EQ(surfaces[1].rings.at(0).size(), 2u);
+  EXPECT_EQ(surfaces[2].rings.at(0).size(), 1u);
+  const PlacedCity placed = place_city_model(model, {}, "rings.city.json");
+  EXPECT_EQ(placed.degenerate_surfaces, 2u);
+  ASSERT_EQ(placed.objects.size(), 1u);
+  EXPECT_EQ(placed.objects[0].mesh.triangles.size(), 2u);  // the 10 × 8 m roof, whole
+
+  const auto error_of = [&](const std::string& from, const std::string& to) {
+    std::string bad = text;
+    bad.replace(bad.find(from), from.size(), to);
+    return testing::input_error_of([&] { read_cityjson_text(bad, "bad.city.json"); });
+  };
+  EXPECT_NE(error_of("[4, 5]], [[4, 5]]", "[4, 60]], [[4, 5]]")
+                .find("bad.city.json: CityObjects[\"roof\"].geometry[0].boundaries[0][1][1]: vertex index 60 is out of "
+                      "range (the file has 6 vertices)"),
+            std::string::npos);
+  EXPECT_NE(error_of("[0, 0, 1]], [[0, 0, 1]]", "[0, 0]], [[0, 0, 1]]")
+                .find("bad.city.json: CityObjects[\"roof\"].geometry[0].boundaries[0][1]: the texture values give 1 "
+                      "coordinates for a ring of 2 points"),
             std::string::npos);
 }
 

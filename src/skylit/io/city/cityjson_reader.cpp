@@ -413,7 +413,7 @@ class Reader {
       const std::string at = path + "[" + std::to_string(r) + "]";
       const json& ring = surface[r];
       if (!ring.is_array()) fail(at, "expected a ring: an array of vertex indices");
-      if (ring.size() < 3) fail(at, "a ring needs at least three points, found " + std::to_string(ring.size()));
+      if (ring.empty()) fail(at, "a ring without points");
       std::vector<Vec3> points;
       points.reserve(ring.size());
       for (size_t k = 0; k < ring.size(); ++k) {
@@ -424,7 +424,22 @@ class Reader {
       out.rings.push_back(std::move(points));
     }
     if (values.texture && !values.texture->is_null()) read_texture_values(*values.texture, path, context, out);
+    drop_holes_of_fewer_than_three_points(out);
     context.object->surfaces.push_back(std::move(out));
+  }
+
+  // A ring of one or two points encloses nothing. Real files hold such rings, and
+  // refusing the file lost a whole district for one (CityGML's reader met them first;
+  // docs/citygml.md): a hole of them is dropped with its texture coordinates, and an
+  // exterior of them is kept, its surface then counted among those of zero area
+  // (city_placement.h). Its indices and texture values were checked all the same.
+  static void drop_holes_of_fewer_than_three_points(CitySurface& surface) {
+    for (size_t r = surface.rings.size(); r-- > 1;) {
+      if (surface.rings[r].size() >= 3) continue;
+      surface.rings.erase(surface.rings.begin() + static_cast<std::ptrdiff_t>(r));
+      if (!surface.texture_coordinates.empty())
+        surface.texture_coordinates.erase(surface.texture_coordinates.begin() + static_cast<std::ptrdiff_t>(r));
+    }
   }
 
   // A surface's texture values: per ring [texture, uv index per point], or [null]; a

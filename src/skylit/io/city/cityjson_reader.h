@@ -28,9 +28,10 @@ inline constexpr std::uintmax_t kMaxCityFileBytes = 1ull << 30;
 
 // Throws InputError "<file>: <JSON path>: <what is wrong>" (or "<file>:<line>:<column>"
 // for broken JSON; "<file>:<line>: ..." in a CityJSONSeq) for anything malformed: a
-// vertex index out of range, a ring of fewer than three points, a semantic, material or
-// texture index the file does not have, texture values that do not match a ring's
-// points, a template that does not exist, ...
+// vertex index out of range, a ring without points, a semantic, material or texture
+// index the file does not have, texture values that do not match a ring's points, a
+// template that does not exist, ... A ring of one or two points is no error: as a hole
+// it is dropped, as an exterior its surface is kept (and placed as one of zero area).
 CityModel read_cityjson_file(const std::filesystem::path& file, const CityJsonOptions& options = {});
 // The same from text; `source` names it in messages, and a name ending in ".jsonl"
 // marks a CityJSONSeq.
