@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <fstream>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -55,16 +56,33 @@ long anon_huge_kb_at(const void* address) {
   return -1;
 }
 
-TEST(HugePages, TheKernelBacksALargeBufferWithHugePagesWhereItHasThem) {
+// The kernel's setting of transparent huge pages, if it gives them at all.
+std::optional<std::string> huge_page_modes() {
   std::ifstream setting("/sys/kernel/mm/transparent_hugepage/enabled");
   std::string modes;
   std::getline(setting, modes);
-  if (modes.find("[never]") != std::string::npos || modes.empty())
-    GTEST_SKIP() << "this kernel gives no transparent huge pages: " << modes;
+  if (modes.empty() || modes.find("[never]") != std::string::npos) return std::nullopt;
+  return modes;
+}
+
+TEST(HugePages, TheKernelBacksALargeBufferWithHugePagesWhereItHasThem) {
+  const std::optional<std::string> modes = huge_page_modes();
+  if (!modes) GTEST_SKIP() << "this kernel gives no transparent huge pages";
   HugePageVector<char> buffer(size_t{16} << 20, 1);  // written: its pages exist
   // Eight huge pages' worth; at least one of them must be a huge page (a fragmented
   // memory may refuse some).
-  EXPECT_GE(anon_huge_kb_at(buffer.data()), 2048) << "transparent huge pages: " << modes;
+  EXPECT_GE(anon_huge_kb_at(buffer.data()), 2048) << "transparent huge pages: " << *modes;
+}
+
+TEST(HugePages, AdviceOnAReservedStringGivesItHugePages) {
+  // As read_text_file reads a large model's file.
+  const std::optional<std::string> modes = huge_page_modes();
+  if (!modes) GTEST_SKIP() << "this kernel gives no transparent huge pages";
+  std::string text;
+  text.reserve(size_t{16} << 20);
+  advise_huge_pages(text.data(), text.capacity());
+  text.resize(size_t{16} << 20, 'x');
+  EXPECT_GE(anon_huge_kb_at(text.data() + (size_t{8} << 20)), 2048) << "transparent huge pages: " << *modes;
 }
 
 }  // namespace

@@ -54,7 +54,7 @@ Faces tinyobj_faces(const std::string& obj, const std::string& mtl) {
 Faces our_faces(const ObjGeometry& obj) {
   Faces out;
   for (const ObjCorner& c : obj.corners) out.corners.push_back({c.vertex, c.texcoord, c.normal});
-  out.ends = obj.face_ends;
+  out.ends.assign(obj.face_ends.begin(), obj.face_ends.end());
   for (const int32_t name : obj.face_material_names)
     out.materials.push_back(name < 0 ? "" : obj.material_names[static_cast<size_t>(name)]);
   return out;
@@ -110,7 +110,7 @@ TEST(ObjParser, EmptyFieldsAndContinuedLines) {
   const ObjGeometry obj = parse_obj(
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nf 1// 2/2/ 3/\nf 2 4 \\\r\n  3\r\nf 1 2 \\\n3 \\\n",
       "m.obj");
-  ASSERT_EQ(obj.face_ends, (std::vector<uint32_t>{3, 6, 9}));
+  ASSERT_EQ(obj.face_ends, (HugePageVector<uint32_t>{3, 6, 9}));
   EXPECT_EQ(obj.corners[0].vertex, 0);
   EXPECT_EQ(obj.corners[0].texcoord, -1);
   EXPECT_EQ(obj.corners[0].normal, -1);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 
@@ -21,13 +22,19 @@ void* allocate_in_huge_pages(size_t bytes, size_t alignment) {
   const size_t rounded = (std::max<size_t>(bytes, 1) + alignment - 1) / alignment * alignment;
   void* p = std::aligned_alloc(alignment, rounded);
   if (!p) throw std::bad_alloc();
-  if (!huge) return p;
+  if (huge) advise_huge_pages(p, rounded);
+  return p;
+}
+
+void advise_huge_pages(void* p, size_t bytes) {
+  const uintptr_t start = (reinterpret_cast<uintptr_t>(p) + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(p) + bytes) / kHugePageBytes * kHugePageBytes;
+  if (end <= start) return;
 #ifdef MADV_HUGEPAGE
   // Advice only: where the kernel has no transparent huge pages the call fails and the
-  // buffer keeps ordinary pages.
-  madvise(p, rounded, MADV_HUGEPAGE);
+  // memory keeps ordinary pages.
+  madvise(reinterpret_cast<void*>(start), end - start, MADV_HUGEPAGE);
 #endif
-  return p;
 }
 
 }  // namespace skylit

@@ -20,6 +20,10 @@ namespace skylit {
 // at least one such page; throws std::bad_alloc. Freed by std::free.
 void* allocate_in_huge_pages(size_t bytes, size_t alignment);
 
+// Asks for 2 MiB pages for the whole 2 MiB pages within [p, p + bytes), memory not yet
+// written (a buffer allocated elsewhere, e.g. a std::string's after `reserve`).
+void advise_huge_pages(void* p, size_t bytes);
+
 template <typename T>
 struct HugePageAllocator {
   using value_type = T;

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "skylit/core/error.h"
+#include "skylit/core/huge_pages.h"
 
 namespace skylit {
 
@@ -37,7 +38,12 @@ std::string read_text_file(const std::filesystem::path& file, const std::string&
   if (!S_ISREG(status.st_mode)) refuse(file, what, "not a regular file");
   if (static_cast<std::uintmax_t>(status.st_size) > max_bytes)
     refuse(file, what, "larger than the limit of " + std::to_string(max_bytes >> 20) + " MiB");
-  std::string text(static_cast<std::size_t>(status.st_size), '\0');
+  // A model's file may be 100 MB and more: its new pages are asked for in 2 MiB
+  // (core/huge_pages.h) before they are first written.
+  std::string text;
+  text.reserve(static_cast<std::size_t>(status.st_size));
+  advise_huge_pages(text.data(), text.capacity());
+  text.resize(static_cast<std::size_t>(status.st_size));
   std::size_t done = 0;
   while (done < text.size()) {
     const ssize_t n = ::read(in.fd, text.data() + done, text.size() - done);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "skylit/core/angles.h"
+#include "skylit/core/huge_pages.h"
 
 namespace skylit {
 namespace {
@@ -18,9 +19,11 @@ std::array<float, 3> as_floats(const Vec3& v) {
 
 std::vector<CornerNormals> crease_angle_normals(const TriangleMesh& mesh, double crease_angle_deg) {
   const size_t n = mesh.triangles.size();
-  std::vector<Vec3> unit(n);
+  // The working arrays of a million-triangle model are 4–24 MB each: in 2 MiB pages
+  // (core/huge_pages.h).
+  HugePageVector<Vec3> unit(n);
   // Each corner's interior angle: the weight of its triangle's normal there.
-  std::vector<std::array<double, 3>> angle(n);
+  HugePageVector<std::array<double, 3>> angle(n);
   for (size_t t = 0; t < n; ++t) {
     const auto& tri = mesh.triangles[t];
     const Vec3 a = mesh.vertices[tri[0]];
@@ -36,26 +39,26 @@ std::vector<CornerNormals> crease_angle_normals(const TriangleMesh& mesh, double
   // The corners at each position, in triangle order: vertices sorted by position give
   // each distinct position a number (two vertices at one place share it), and a counting
   // sort lists the corners by that number.
-  std::vector<uint32_t> by_position(mesh.vertices.size());
+  HugePageVector<uint32_t> by_position(mesh.vertices.size());
   for (uint32_t v = 0; v < by_position.size(); ++v) by_position[v] = v;
   const auto key = [&](uint32_t v) {
     const Vec3& p = mesh.vertices[v];
     return std::array<double, 3>{p.x, p.y, p.z};
   };
   std::sort(by_position.begin(), by_position.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
-  std::vector<uint32_t> place(mesh.vertices.size());
+  HugePageVector<uint32_t> place(mesh.vertices.size());
   uint32_t places = 0;
   for (size_t i = 0; i < by_position.size(); ++i) {
     if (i > 0 && key(by_position[i]) != key(by_position[i - 1])) ++places;
     place[by_position[i]] = places;
   }
-  std::vector<uint32_t> run_start(static_cast<size_t>(places) + 2, 0);
+  HugePageVector<uint32_t> run_start(static_cast<size_t>(places) + 2, 0);
   for (const auto& tri : mesh.triangles)
     for (uint32_t v : tri) ++run_start[place[v] + 1];
   for (size_t i = 1; i < run_start.size(); ++i) run_start[i] += run_start[i - 1];
-  std::vector<std::pair<uint32_t, int>> corners(3 * n);
+  HugePageVector<std::pair<uint32_t, int>> corners(3 * n);
   {
-    std::vector<uint32_t> fill(run_start.begin(), run_start.end() - 1);
+    HugePageVector<uint32_t> fill(run_start.begin(), run_start.end() - 1);
     for (size_t t = 0; t < n; ++t)
       for (int c = 0; c < 3; ++c) corners[fill[place[mesh.triangles[t][c]]]++] = {static_cast<uint32_t>(t), c};
   }

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "skylit/core/huge_pages.h"
 #include "skylit/core/vec3.h"
 
 namespace skylit {
@@ -24,15 +25,17 @@ struct ObjCorner {
   int32_t normal = -1;
 };
 
+// The per-vertex and per-face arrays of a large model are tens of MB each, new memory
+// as they grow: in 2 MiB pages (core/huge_pages.h).
 struct ObjGeometry {
-  std::vector<Vec3> positions;                  // `v`
-  std::vector<std::array<float, 2>> texcoords;  // `vt` (u, v) as written (v up)
-  std::vector<std::array<float, 3>> normals;    // `vn` as written
-  std::vector<ObjCorner> corners;               // all faces' corners, face after face
-  std::vector<uint32_t> face_ends;              // per face: one past its last corner
-  std::vector<int32_t> face_material_names;     // per face: index in material_names, -1 before any usemtl
-  std::vector<std::string> material_names;      // distinct `usemtl` names in order of use
-  std::vector<std::string> material_libraries;  // each `mtllib` line's text after the keyword, trimmed
+  std::vector<Vec3> positions;                     // `v` (moved into the mesh)
+  HugePageVector<std::array<float, 2>> texcoords;  // `vt` (u, v) as written (v up)
+  HugePageVector<std::array<float, 3>> normals;    // `vn` as written
+  HugePageVector<ObjCorner> corners;               // all faces' corners, face after face
+  HugePageVector<uint32_t> face_ends;              // per face: one past its last corner
+  HugePageVector<int32_t> face_material_names;     // per face: index in material_names, -1 before any usemtl
+  std::vector<std::string> material_names;         // distinct `usemtl` names in order of use
+  std::vector<std::string> material_libraries;     // each `mtllib` line's text after the keyword, trimmed
 };
 
 // Throws InputError naming `file_name` and the line for a vertex that is not three
