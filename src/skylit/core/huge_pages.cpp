@@ -27,13 +27,13 @@ void* allocate_in_huge_pages(size_t bytes, size_t alignment) {
 }
 
 void advise_huge_pages(void* p, size_t bytes) {
-  const uintptr_t start = (reinterpret_cast<uintptr_t>(p) + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
-  const uintptr_t end = (reinterpret_cast<uintptr_t>(p) + bytes) / kHugePageBytes * kHugePageBytes;
-  if (end <= start) return;
+  // From the first 2 MiB boundary in the range, whole huge pages only.
+  const size_t skip = (kHugePageBytes - reinterpret_cast<uintptr_t>(p) % kHugePageBytes) % kHugePageBytes;
+  if (bytes < skip + kHugePageBytes) return;
 #ifdef MADV_HUGEPAGE
   // Advice only: where the kernel has no transparent huge pages the call fails and the
   // memory keeps ordinary pages.
-  madvise(reinterpret_cast<void*>(start), end - start, MADV_HUGEPAGE);
+  madvise(static_cast<char*>(p) + skip, (bytes - skip) / kHugePageBytes * kHugePageBytes, MADV_HUGEPAGE);
 #endif
 }
 
