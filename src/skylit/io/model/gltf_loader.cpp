@@ -574,35 +574,42 @@ class GltfReader {
       fail(label + " does not exist");
     const tinygltf::Accessor& a = model_.accessors[accessor_index];
     if (a.sparse.isSparse) fail(label + " is sparse, which skylit does not read");
-    if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= model_.bufferViews.size())
-      fail(label + " has no buffer view");
-    const tinygltf::BufferView& bv = model_.bufferViews[a.bufferView];
+    if (a.bufferView < 0) fail(label + " has no buffer view");
+    AccessorView v = elements(label, a.bufferView, a.byteOffset, a.count, a.componentType, a.type);
+    v.normalized = a.normalized;
+    return v;
+  }
+
+  // `count` elements of `component_type` and `type` from byte `offset` of buffer view
+  // `buffer_view`, checked to lie in the view and the view in its buffer.
+  AccessorView elements(const std::string& label, int buffer_view, size_t offset, size_t count, int component_type,
+                        int type) const {
+    AccessorView v;
+    v.count = count;
+    v.component_type = component_type;
+    const int component_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(component_type));
+    v.components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(type));
+    if (component_size <= 0 || v.components <= 0 || v.components > 4) fail(label + " has an unknown type");
+    const size_t element = static_cast<size_t>(component_size) * static_cast<size_t>(v.components);
+    if (static_cast<size_t>(buffer_view) >= model_.bufferViews.size())
+      fail(label + " refers to buffer view " + std::to_string(buffer_view) + ", which does not exist");
+    const tinygltf::BufferView& bv = model_.bufferViews[buffer_view];
     if (bv.buffer < 0 || static_cast<size_t>(bv.buffer) >= model_.buffers.size())
       fail(label + ": its buffer view has no buffer");
     const std::vector<unsigned char>& buffer = model_.buffers[bv.buffer].data;
-
-    AccessorView v;
-    v.count = a.count;
-    v.component_type = a.componentType;
-    v.normalized = a.normalized;
-    const int component_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
-    v.components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
-    if (component_size <= 0 || v.components <= 0 || v.components > 4) fail(label + " has an unknown type");
-    const size_t element = static_cast<size_t>(component_size) * static_cast<size_t>(v.components);
-    v.stride = bv.byteStride ? bv.byteStride : element;
+    v.stride = bv.byteStride != 0 ? bv.byteStride : element;
     if (v.stride < element) fail(label + ": byteStride is smaller than one element");
 
     // Everything read must lie in the view, and the view in the buffer; written
     // so that no sum or product can overflow.
     if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() - bv.byteOffset)
       fail(label + ": buffer view runs past the end of its buffer");
-    if (v.count > 0) {
+    if (count > 0) {
       const size_t room = bv.byteLength;
-      if (a.byteOffset > room || element > room - a.byteOffset ||
-          (v.count - 1) > (room - a.byteOffset - element) / v.stride)
+      if (offset > room || element > room - offset || (count - 1) > (room - offset - element) / v.stride)
         fail(label + " runs past the end of its buffer view");
     }
-    v.data = buffer.data() + bv.byteOffset + a.byteOffset;
+    v.data = buffer.data() + bv.byteOffset + offset;
     return v;
   }
 
