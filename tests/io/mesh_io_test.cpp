@@ -341,9 +341,8 @@ TEST_F(MeshIo, GltfQuantizedPositionsAreScaledByTheNode) {
 
 // The triangle with normals (0, 0, 1) and one morph target that moves vertex 1 by
 // (0.4, 0.6, 0.8) and turns vertex 2's normal by (0, 2, 0); the mesh's default weight
-// 0.5. Node 0 takes it, node 1 (10 m along x) gives its own weight 1. `target_accessor`
-// is spliced into the target's POSITION accessor (a sparse one, say).
-std::string morphed_gltf(const std::string& target_accessor = "") {
+// 0.5. Node 0 takes it, node 1 (10 m along x) gives its own weight 1.
+std::string morphed_gltf() {
   std::string b = triangle_buffer();
   for (int i = 0; i < 3; ++i)
     for (float f : {0.f, 0.f, 1.f}) put(b, f);
@@ -356,8 +355,7 @@ std::string morphed_gltf(const std::string& target_accessor = "") {
   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
                 {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
                 {"bufferView": 2, "componentType": 5126, "count": 3, "type": "VEC3"},
-                {"bufferView": 3, "componentType": 5126, "count": 3, "type": "VEC3")" +
-         target_accessor + R"(},
+                {"bufferView": 3, "componentType": 5126, "count": 3, "type": "VEC3"},
                 {"bufferView": 4, "componentType": 5126, "count": 3, "type": "VEC3"}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 2}, "indices": 1,
                               "targets": [{"POSITION": 3, "NORMAL": 4}]}], "weights": [0.5]}],
@@ -386,17 +384,85 @@ TEST_F(MeshIo, GltfMorphTargetsTakeTheirDefaultWeights) {
   expect_near(normal(0, 0), {0, 0, 1});
 }
 
-// Sparse accessors are not read: a morph target of one is refused by name unless its
-// weight is 0, when it does not count.
-TEST_F(MeshIo, GltfSparseMorphTargetIsRefusedUnlessItsWeightIsZero) {
-  const std::string sparse = R"(, "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5123},
-                                             "values": {"bufferView": 3}})";
-  expect_input_error(write("sparse.gltf", morphed_gltf(sparse)), "POSITION morph target accessor 3 is sparse");
-  std::string unweighted = morphed_gltf(sparse);
+// A unit quad (0,0,0), (1,0,0), (1,1,0), (0,1,0) of two triangles with one morph target
+// of weight 0.5 as Blender writes a shape key: a sparse accessor without a buffer view,
+// all zeros but at the vertices `moved` (uint16 indices), the k-th moved by (0, 0, 2k + 2).
+// `values_length`, if given, is the byteLength of the values' buffer view.
+std::string sparse_morph_gltf(const std::vector<uint16_t>& moved, size_t values_length = 0) {
+  std::string b;
+  for (float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 1.f, 1.f, 0.f, 0.f, 1.f, 0.f}) put(b, f);
+  for (uint16_t i : {0, 1, 2, 0, 2, 3}) put(b, i);
+  for (uint16_t i : moved) put(b, i);
+  if (b.size() % 4 != 0) put(b, uint16_t{0});
+  const size_t values_offset = b.size();
+  for (size_t k = 0; k < moved.size(); ++k)
+    for (float f : {0.f, 0.f, static_cast<float>(2 * k + 2)}) put(b, f);
+  return R"({"asset": {"version": "2.0"}, "buffers": [)" + embedded(b) + R"(],
+  "bufferViews": [{"buffer": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+                  {"buffer": 0, "byteOffset": 60, "byteLength": )" +
+         std::to_string(2 * moved.size()) + R"(},
+                  {"buffer": 0, "byteOffset": )" +
+         std::to_string(values_offset) + R"(, "byteLength": )" +
+         std::to_string(values_length != 0 ? values_length : 12 * moved.size()) + R"(}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3"},
+                {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+                {"componentType": 5126, "count": 4, "type": "VEC3", "sparse": {"count": )" +
+         std::to_string(moved.size()) + R"(,
+                 "indices": {"bufferView": 2, "componentType": 5123}, "values": {"bufferView": 3}}}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "targets": [{"POSITION": 2}]}],
+              "weights": [0.5]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
+}
+
+// glTF 2.0 §3.6.2.3: a sparse accessor without a buffer view is zeros but at its
+// indices, so the target moves those vertices and no others.
+TEST_F(MeshIo, GltfSparseMorphTargetMovesOnlyItsVertices) {
+  const LoadedModel model = load_model_file(write("shape_key.gltf", sparse_morph_gltf({1, 3})), UpAxis::z);
+  ASSERT_EQ(model.mesh.vertices.size(), 4u);
+  EXPECT_EQ(model.mesh.vertices[0], Vec3(0, 0, 0));
+  EXPECT_EQ(model.mesh.vertices[1], Vec3(1, 0, 1));  // + 0.5 (0, 0, 2)
+  EXPECT_EQ(model.mesh.vertices[2], Vec3(1, 1, 0));
+  EXPECT_EQ(model.mesh.vertices[3], Vec3(0, 1, 2));  // + 0.5 (0, 0, 4)
+}
+
+// A sparse accessor with a buffer view: its base, with the elements at its indices
+// (here uint8) replaced.
+TEST_F(MeshIo, GltfSparsePositionsReplaceTheirBase) {
+  std::string b = triangle_buffer();
+  for (uint8_t i : {0, 2, 0, 0}) put(b, i);
+  for (float f : {-1.f, -2.f, -3.f, 4.f, 5.f, 6.f}) put(b, f);
+  const std::string json = R"({"asset": {"version": "2.0"}, "buffers": [)" + embedded(b) + R"(],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6},
+                  {"buffer": 0, "byteOffset": 44, "byteLength": 2}, {"buffer": 0, "byteOffset": 48, "byteLength": 24}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "sparse": {"count": 2,
+                 "indices": {"bufferView": 2, "componentType": 5121}, "values": {"bufferView": 3}}},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
+  const TriangleMesh m = load_mesh_file(write("sparse_positions.gltf", json), UpAxis::z);
+  ASSERT_EQ(m.vertices.size(), 3u);
+  EXPECT_EQ(m.vertices[0], Vec3(-1, -2, -3));
+  EXPECT_EQ(m.vertices[1], Vec3(1, 0, 0));
+  EXPECT_EQ(m.vertices[2], Vec3(4, 5, 6));
+}
+
+// Bad sparse data is refused in one line naming the file and the accessor; a target of
+// weight 0 is not read, so its bad data does not count.
+TEST_F(MeshIo, GltfBadSparseAccessorIsInputError) {
+  expect_input_error(write("beyond.gltf", sparse_morph_gltf({1, 4})),
+                     "POSITION morph target accessor 2: its sparse index 4 is beyond its 4 elements");
+  expect_input_error(write("unordered.gltf", sparse_morph_gltf({3, 1})),
+                     "POSITION morph target accessor 2: its sparse indices are not strictly increasing (3 then 1)");
+  expect_input_error(write("repeated.gltf", sparse_morph_gltf({1, 1})), "not strictly increasing (1 then 1)");
+  expect_input_error(write("short.gltf", sparse_morph_gltf({1, 3}, 12)),
+                     "POSITION morph target accessor 2 (sparse values) runs past the end of its buffer view");
+  // Zeros take no room in the file, so their number is bounded by the file's bytes.
+  std::string zeros = sparse_morph_gltf({1, 3});
+  zeros.replace(zeros.find(R"("count": 4, "type": "VEC3", "sparse")"), 10, R"("count": 1000000000)");
+  expect_input_error(write("zeros.gltf", zeros), "has no buffer view and 1000000000 elements");
+  std::string unweighted = sparse_morph_gltf({1, 4});
   unweighted.replace(unweighted.find(R"("weights": [0.5])"), 16, R"("weights": [0])");
-  unweighted.replace(unweighted.find(R"("weights": [1])"), 14, R"("weights": [0])");
-  const LoadedModel model = load_model_file(write("unweighted.gltf", unweighted), UpAxis::z);
-  EXPECT_EQ(model.mesh.vertices[1], Vec3(1, 0, 0));
+  EXPECT_EQ(load_model_file(write("unweighted.gltf", unweighted), UpAxis::z).mesh.vertices[1], Vec3(1, 0, 0));
 }
 
 TEST_F(MeshIo, GltfNonFiniteCoordinateIsInputError) {

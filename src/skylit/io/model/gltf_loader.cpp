@@ -5,8 +5,9 @@
 // Base-colour, emissive and normal textures (PNG, JPEG: io/model/texture_file.h) with
 // the primitives' texture coordinates, emission, alphaMode and doubleSided, and the
 // vertex normals (NORMAL). Positions and normals are morphed by their targets' default
-// weights. Everything else in the file is ignored. The file's own axes are kept (+Y up);
-// load_model_file turns them into skylit's frame.
+// weights. Any of these accessors may be sparse. Everything else in the file is
+// ignored. The file's own axes are kept (+Y up); load_model_file turns them into
+// skylit's frame.
 //
 // This is the one translation unit that compiles tinygltf's implementation. tinygltf
 // hands over the image bytes it finds inside the file (buffer views, data URIs); images
@@ -180,8 +181,10 @@ std::string unread_required_extension(const std::filesystem::path& path, bool bi
   return {};
 }
 
-// One accessor's elements, bounds-checked against its buffer once so reads need
-// no further checks.
+// One accessor's elements, bounds-checked against its buffers once so reads need
+// no further checks. Without a buffer view (`data` null) every element is zero (glTF
+// 2.0 §3.6.2.1); a sparse accessor's elements at `replaced` are instead those of
+// `replacements`, packed one after another in the same order (§3.6.2.3).
 struct AccessorView {
   const unsigned char* data = nullptr;
   size_t count = 0;
@@ -189,10 +192,14 @@ struct AccessorView {
   int component_type = 0;
   int components = 0;
   bool normalized = false;
+  std::vector<uint32_t> replaced;  // strictly increasing, each below count
+  const unsigned char* replacements = nullptr;
+  size_t replacement_stride = 0;
 
   // Component c of element i as a double, per the glTF rules for normalized ints.
   double get(size_t i, int c) const {
-    const unsigned char* p = data + i * stride;
+    const unsigned char* p = element(i);
+    if (p == nullptr) return 0.0;
     switch (component_type) {
       case TINYGLTF_COMPONENT_TYPE_FLOAT:
         return read<float>(p, c, 1.0);
@@ -210,6 +217,14 @@ struct AccessorView {
   }
 
  private:
+  // Element i's bytes; null for a zero.
+  const unsigned char* element(size_t i) const {
+    const auto r = std::lower_bound(replaced.begin(), replaced.end(), i);
+    if (r != replaced.end() && *r == i)
+      return replacements + static_cast<size_t>(r - replaced.begin()) * replacement_stride;
+    return data == nullptr ? nullptr : data + i * stride;
+  }
+
   template <typename T>
   double read(const unsigned char* p, int c, double norm) const {
     T value;
@@ -223,6 +238,7 @@ class GltfReader {
  public:
   GltfReader(const tinygltf::Model& model, std::string name, const ImageBytes& images, std::filesystem::path folder)
       : model_(model), name_(std::move(name)), images_(images), folder_(std::move(folder)) {
+    for (const tinygltf::Buffer& buffer : model_.buffers) buffer_bytes_ += buffer.data.size();
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const tinygltf::Material& m = model_.materials[i];
       ModelMaterial material = model_material(m, i);
@@ -573,17 +589,21 @@ class GltfReader {
     if (accessor_index < 0 || static_cast<size_t>(accessor_index) >= model_.accessors.size())
       fail(label + " does not exist");
     const tinygltf::Accessor& a = model_.accessors[accessor_index];
-    if (a.sparse.isSparse) fail(label + " is sparse, which skylit does not read");
-    if (a.bufferView < 0) fail(label + " has no buffer view");
-    AccessorView v = elements(label, a.bufferView, a.byteOffset, a.count, a.componentType, a.type);
+    // Zeros cost no bytes of the file, so a small file could claim billions of them.
+    if (a.bufferView < 0 && a.count > buffer_bytes_)
+      fail(label + " has no buffer view and " + std::to_string(a.count) +
+           " elements, more than the file's buffers have bytes");
+    AccessorView v = elements(label, a.bufferView, a.byteOffset, a.count, a.componentType, a.type, true);
     v.normalized = a.normalized;
+    if (a.sparse.isSparse) replace_sparse(label, a, v);
     return v;
   }
 
   // `count` elements of `component_type` and `type` from byte `offset` of buffer view
-  // `buffer_view`, checked to lie in the view and the view in its buffer.
+  // `buffer_view`, checked to lie in the view and the view in its buffer; all zeros for
+  // buffer view −1. The view may give a byteStride only if `strided`.
   AccessorView elements(const std::string& label, int buffer_view, size_t offset, size_t count, int component_type,
-                        int type) const {
+                        int type, bool strided) const {
     AccessorView v;
     v.count = count;
     v.component_type = component_type;
@@ -591,13 +611,16 @@ class GltfReader {
     v.components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(type));
     if (component_size <= 0 || v.components <= 0 || v.components > 4) fail(label + " has an unknown type");
     const size_t element = static_cast<size_t>(component_size) * static_cast<size_t>(v.components);
+    v.stride = element;
+    if (buffer_view < 0) return v;
     if (static_cast<size_t>(buffer_view) >= model_.bufferViews.size())
       fail(label + " refers to buffer view " + std::to_string(buffer_view) + ", which does not exist");
     const tinygltf::BufferView& bv = model_.bufferViews[buffer_view];
     if (bv.buffer < 0 || static_cast<size_t>(bv.buffer) >= model_.buffers.size())
       fail(label + ": its buffer view has no buffer");
     const std::vector<unsigned char>& buffer = model_.buffers[bv.buffer].data;
-    v.stride = bv.byteStride != 0 ? bv.byteStride : element;
+    if (bv.byteStride != 0 && !strided) fail(label + ": its buffer view has a byteStride, which glTF forbids here");
+    if (bv.byteStride != 0) v.stride = bv.byteStride;
     if (v.stride < element) fail(label + ": byteStride is smaller than one element");
 
     // Everything read must lie in the view, and the view in the buffer; written
@@ -613,6 +636,44 @@ class GltfReader {
     return v;
   }
 
+  // A sparse accessor's replaced elements (glTF 2.0 §3.6.2.3): `sparse.count` indices
+  // (unsigned bytes, shorts or ints), strictly increasing and each below the accessor's
+  // count, and as many values of the accessor's own type, each packed in a buffer view.
+  void replace_sparse(const std::string& label, const tinygltf::Accessor& a, AccessorView& v) const {
+    const auto& sparse = a.sparse;
+    if (sparse.count < 1 || static_cast<size_t>(sparse.count) > a.count)
+      fail(label + ": its sparse count " + std::to_string(sparse.count) + " is not between 1 and its count " +
+           std::to_string(a.count));
+    const int type = sparse.indices.componentType;
+    if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+      fail(label + ": its sparse indices are not unsigned bytes, shorts or ints");
+    if (sparse.indices.bufferView < 0 || sparse.values.bufferView < 0)
+      fail(label + ": its sparse indices or values have no buffer view");
+    if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
+      fail(label + ": its sparse indices or values have a negative byteOffset");
+    const auto n = static_cast<size_t>(sparse.count);
+    const AccessorView indices =
+        elements(label + " (sparse indices)", sparse.indices.bufferView, static_cast<size_t>(sparse.indices.byteOffset),
+                 n, type, TINYGLTF_TYPE_SCALAR, false);
+    const AccessorView values =
+        elements(label + " (sparse values)", sparse.values.bufferView, static_cast<size_t>(sparse.values.byteOffset), n,
+                 a.componentType, a.type, false);
+    v.replaced.reserve(n);
+    for (size_t k = 0; k < n; ++k) {
+      const auto i = static_cast<uint32_t>(indices.get(k, 0));
+      if (i >= a.count)
+        fail(label + ": its sparse index " + std::to_string(i) + " is beyond its " + std::to_string(a.count) +
+             " elements");
+      if (k > 0 && i <= v.replaced.back())
+        fail(label + ": its sparse indices are not strictly increasing (" + std::to_string(v.replaced.back()) +
+             " then " + std::to_string(i) + ")");
+      v.replaced.push_back(i);
+    }
+    v.replacements = values.data;
+    v.replacement_stride = values.stride;
+  }
+
   static constexpr size_t kMaxDepth = 1000;
   const tinygltf::Model& model_;
   std::string name_;
@@ -626,6 +687,7 @@ class GltfReader {
   bool any_normal_ = false;
   std::map<std::pair<int, std::vector<double>>, Part> meshes_;  // by mesh and morph weights
   LoadedModel out_;
+  size_t buffer_bytes_ = 0;  // in all the file's buffers together
 };
 
 }  // namespace
