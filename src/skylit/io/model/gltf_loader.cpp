@@ -167,7 +167,10 @@ std::string unread_required_extension(const std::filesystem::path& path, bool bi
     unsigned char header[20] = {};
     if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return {};
     const uint32_t length = header[12] | header[13] << 8 | header[14] << 16 | static_cast<uint32_t>(header[15]) << 24;
-    if (length > kMaxMeshFileBytes) return {};
+    // A chunk longer than the file is not allocated (a 100-byte file claimed 578 MB).
+    std::error_code ec;
+    const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+    if (ec || length > kMaxMeshFileBytes || length > file_bytes - sizeof header) return {};
     text.resize(length);
     if (!in.read(text.data(), length)) return {};
   } else {
