@@ -89,16 +89,14 @@ TEST(SceneModelMaterials, BareTrianglesWithoutAnObjectMaterialAreAnError) {
 TEST(SceneModelMaterials, MeshLabsTrOfOneIsWarnedAboutAndOpaque) {
   TempDir dir;
   dir.write("scan.mtl", "newmtl material_0\nKd 0.6 0.5 0.4\nTr 1.000000\nillum 2\n");
-  dir.write("scan.obj", "mtllib scan.mtl\nv 0 0 0\nv 4 0 0\nv 4 0 3\nusemtl material_0\nf 1 2 3\n");
-  const Scene scene = load_scene(dir.write("scene.json", R"({"camera": {"position": [0, -20, 2], "look_at": [0, 0, 2]},
-    "sun": {"altitude_deg": 40, "azimuth_deg": 135}, "materials": {},
-    "objects": [{"type": "mesh", "name": "scan", "file": "scan.obj"}]})"));
+  dir.write("house.obj", "mtllib scan.mtl\nv 0 0 0\nv 4 0 0\nv 4 0 3\nusemtl material_0\nf 1 2 3\n");
+  const Scene scene = load_scene(dir.write("scene.json", scene_with("", "")));
   EXPECT_TRUE(std::holds_alternative<DiffuseMaterial>(scene.materials[scene.objects[0].material_of(0)].material));
   const std::string report = describe_objects(scene);
-  EXPECT_NE(report.find("'material_0' → scan/material_0 (diffuse)"), std::string::npos) << report;
+  EXPECT_NE(report.find("'material_0' → house/material_0 (diffuse)"), std::string::npos) << report;
   const auto warnings = scene_warnings(scene, false);
   EXPECT_NE(std::find(warnings.begin(), warnings.end(),
-                      "object 'scan': material library 'scan.mtl', material 'material_0': Tr 1 without d read as "
+                      "object 'house': material library 'scan.mtl', material 'material_0': Tr 1 without d read as "
                       "MeshLab writes it, an opacity (opaque), not as 1 − d (clear glass)"),
             warnings.end());
 }
