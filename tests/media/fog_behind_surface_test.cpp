@@ -92,9 +92,10 @@ TEST(FogBehindSurfaces, MatchesABruteForceIntegralOfTheHiddenLight) {
     for (int b = 1; b < kSpectralBins; ++b)
       if (std::abs(kGrid.center_nm(b) - 550.0) < std::abs(kGrid.center_nm(bin) - 550.0)) bin = b;
     FogHiddenBehind fast = behind.at(c.point, c.normal, c.toward_viewer, c.distance_m, c.distance_m, 1e9);
-    // Through the fog to the viewer (the caller's part).
-    const float to_viewer =
-        static_cast<float>(std::exp(-layer.unit_density_extinction_bins()[static_cast<size_t>(bin)] * c.distance_m));
+    // Through the fog to the viewer (the caller's part: beyond kHiddenHeldDepth, as at
+    // 80 m here, `at` holds part of it already).
+    const float to_viewer = hidden_light_transmittance(Transmittance(static_cast<float>(
+        std::exp(-layer.unit_density_extinction_bins()[static_cast<size_t>(bin)] * c.distance_m))))[bin];
     fast.gain *= to_viewer;
     fast.field *= to_viewer;
     fast.field_in_shadow *= to_viewer;

@@ -24,6 +24,13 @@ int bin_near_550_nm() {
 
 }  // namespace
 
+Transmittance hidden_light_transmittance(const Transmittance& fog_to_viewer) {
+  const auto least = static_cast<float>(std::exp(-kHiddenHeldDepth));
+  Spectrum t = fog_to_viewer.spectrum();
+  for (int b = 0; b < kSpectralBins; ++b) t[b] = std::max(t[b], least);
+  return Transmittance(t);
+}
+
 FogBehindSurfaces::FogBehindSurfaces(const FogLayer& layer, const FogDiffuseField& field, const Vec3& sunbeam)
     : layer_(layer),
       field_(field),
@@ -132,10 +139,14 @@ FogHiddenBehind FogBehindSurfaces::at(const Vec3& point, const Vec3& normal, con
       // In a shadow the field's light from the sun's side is out of the view already.
       if (dot(omega, sunbeam_) <= 0) field_in_shadow += light;
     }
-  // Per bin: ωσ·ρ.
+  // Per bin: ωσ·ρ, and T(viewer, surface)'s part beyond kHiddenHeldDepth (the caller
+  // multiplies by hidden_light_transmittance).
   Spectrum factor;
-  for (int b = 0; b < kSpectralBins; ++b)
-    factor[b] = static_cast<float>(albedo_ * sigma[static_cast<size_t>(b)] * density);
+  for (int b = 0; b < kSpectralBins; ++b) {
+    const double sigma_b = sigma[static_cast<size_t>(b)];
+    const double beyond_held = std::exp(std::min(0.0, kHiddenHeldDepth - sigma_b * column_to_viewer_m));
+    factor[b] = static_cast<float>(albedo_ * sigma_b * density * beyond_held);
+  }
   return {Transmittance(factor * static_cast<float>(gain)), Radiance(factor * field),
           Radiance(factor * field_in_shadow)};
 }

@@ -44,11 +44,30 @@
 namespace skylit {
 
 // What the camera sees more of a surface leaving radiance L through the fog in front of
-// it: (L·gain − field)·T, T the fog's transmittance from the surface to the viewer (the
-// caller's: held without it, these interpolate across a surface seen over a range of
-// depths), field the open field's light from behind the surface's plane: all of it, or
-// where the fog in front of the surface lies in a shadow of the sun, the part from
-// outside the sun's side (the view has lost the rest already).
+// it: (L·gain − field)·T', field the open field's light from behind the surface's plane:
+// all of it, or where the fog in front of the surface lies in a shadow of the sun, the
+// part from outside the sun's side (the view has lost the rest already). T' =
+// hidden_light_transmittance(T), T the fog's transmittance from the surface to the viewer
+// (the caller's: held without it, these interpolate across a surface seen over a range
+// of depths; see kHiddenHeldDepth).
+// How deep in the fog (optical depth from the viewer) the hidden light is held without
+// the fog's transmittance T to the viewer; deeper, with T's part beyond this depth.
+// Within a few optical depths of the viewer, what a surface hides lies mostly just in
+// front of it and is seen through T, so values held without T interpolate between
+// points at different depths. Deeper, most of it lies far in front of the surface, nearer
+// the viewer (the surface's mark on the field fades over a transport length, about seven
+// extinction lengths in droplet fog), so it falls with depth far more slowly than T:
+// held without T, it was T(viewer, surface)⁻¹ times too large, up to e^30, and a pixel
+// nearer than the cache corners it took this from (a ground plane near the horizon seen
+// from beside a small building) multiplied that by its own larger T: saturated red and
+// green blotches of 30–200 kcd/m² along a foggy horizon. A point's own value is the same
+// either way: T' = max(T, e^(−kHiddenHeldDepth)) undoes exactly what `at` holds back.
+inline constexpr double kHiddenHeldDepth = 2.0;
+
+// What the caller multiplies FogHiddenBehind by: the fog's transmittance T from the
+// surface to the viewer, per bin no less than e^(−kHiddenHeldDepth).
+Transmittance hidden_light_transmittance(const Transmittance& fog_to_viewer);
+
 struct FogHiddenBehind {
   Transmittance gain{0.0f};
   Radiance field{0.0f};

@@ -52,10 +52,10 @@ struct ViewPath {
       const FogHiddenBehind& hidden = front.hidden;
       if (fog_forward_gain.is_black() && hidden.gain.is_black()) return seen;
       // The hidden light is held without the fog's transmittance to the camera, which
-      // is the pixel's own (fog_whole).
+      // is the pixel's own (fog_whole), down to kHiddenHeldDepth.
       Spectrum with_fog = (seen + (leaving - fog_open_radiance) * (fog_forward_gain * clouds.transmittance) +
                            (front.alike_everywhere * hidden.gain - hidden.field_for(front.fog_in_shadow)) *
-                               (fog_whole * fog_air_transmittance * clouds.transmittance))
+                               (hidden_light_transmittance(fog_whole) * fog_air_transmittance * clouds.transmittance))
                               .spectrum();
       for (int k = 0; k < kSpectralBins; ++k) with_fog[k] = std::max(0.0f, with_fog[k]);
       return Radiance(with_fog);
