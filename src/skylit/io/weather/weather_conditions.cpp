@@ -7,6 +7,7 @@
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/atmosphere/seen_sun.h"
 #include "skylit/core/formatted.h"
+#include "skylit/io/weather/luminous_efficacy.h"
 #include "skylit/spectrum/cie.h"
 #include "skylit/sun/solar_position.h"
 
@@ -45,18 +46,49 @@ std::optional<double> file_efficacy(const EpwFile& file, std::optional<double> E
   return ratios[ratios.size() / 2];
 }
 
+// An efficacy the file does not give, from a model of the hour's sky, and what it is.
+struct ModelEfficacy {
+  double lm_w;
+  std::string source;
+};
+
 // The hour's illuminance, or its irradiance times the file's efficacy when the
-// illuminance is missing (said in `decisions`).
+// illuminance is missing, or else times the model's (said in `decisions`).
 std::optional<double> illuminance_of(const EpwFile& file, const EpwHour& hour, std::optional<double> EpwHour::*lux,
                                      std::optional<double> EpwHour::*watts, const char* what,
-                                     std::vector<std::string>& decisions) {
+                                     std::vector<std::string>& decisions,
+                                     const std::optional<ModelEfficacy>& model = std::nullopt) {
   if (hour.*lux) return *(hour.*lux);
   if (!(hour.*watts)) return std::nullopt;
-  const std::optional<double> efficacy = file_efficacy(file, lux, watts);
-  if (!efficacy) return std::nullopt;
-  decisions.push_back(std::string(what) + " illuminance missing: the irradiance × the file's median efficacy " +
-                      formatted("%.1f lm/W", *efficacy));
-  return *(hour.*watts) * *efficacy;
+  if (const std::optional<double> efficacy = file_efficacy(file, lux, watts)) {
+    decisions.push_back(std::string(what) + " illuminance missing: the irradiance × the file's median efficacy " +
+                        formatted("%.1f lm/W", *efficacy));
+    return *(hour.*watts) * *efficacy;
+  }
+  if (!model) return std::nullopt;
+  decisions.push_back(std::string(what) +
+                      " illuminance missing, and none in the file to take an efficacy from: the irradiance × " +
+                      model->source + formatted(" %.1f lm/W", model->lm_w));
+  return *(hour.*watts) * model->lm_w;
+}
+
+// Perez et al. (1990)'s efficacies of this hour's sky (io/weather/luminous_efficacy.h),
+// for files that give irradiances without illuminances; `water_from` says where the
+// precipitable water came from.
+std::optional<DaylightEfficacy> hour_efficacy(const EpwHour& hour, double sun_altitude_deg,
+                                              double earth_sun_distance_au, std::string& water_from) {
+  if (!hour.direct_normal_w_m2 || !hour.diffuse_horizontal_w_m2 || !(sun_altitude_deg > 0)) return std::nullopt;
+  double water_cm = 2.0;  // Perez's own default where nothing better is known
+  water_from = "2 cm assumed";
+  if (hour.precipitable_water_mm) {
+    water_cm = *hour.precipitable_water_mm / 10;
+    water_from = formatted("%.1f cm from the file", water_cm);
+  } else if (hour.dew_point_c) {
+    water_cm = precipitable_water_cm_from_dew_point(*hour.dew_point_c);
+    water_from = formatted("%.1f cm from the dew point", water_cm);
+  }
+  return perez_daylight_efficacy(*hour.direct_normal_w_m2, *hour.diffuse_horizontal_w_m2, 90 - sun_altitude_deg,
+                                 water_cm, kPerezSolarConstantWm2 / (earth_sun_distance_au * earth_sun_distance_au));
 }
 
 void fit_aerosol(AtmosphereSettings& air, double sun_elevation_rad, double target_lux, WeatherSummary& summary) {
@@ -176,12 +208,25 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
   air.earth_sun_distance_au = sun.earth_sun_distance_au;
 
   std::vector<std::string>& decisions = summary.decisions;
-  summary.file_direct_normal_lux =
-      illuminance_of(file, hour, &EpwHour::direct_normal_lux, &EpwHour::direct_normal_w_m2, "direct normal", decisions);
-  summary.file_diffuse_horizontal_lux = illuminance_of(
-      file, hour, &EpwHour::diffuse_horizontal_lux, &EpwHour::diffuse_horizontal_w_m2, "diffuse horizontal", decisions);
-  summary.file_global_horizontal_lux = illuminance_of(file, hour, &EpwHour::global_horizontal_lux,
-                                                      &EpwHour::global_horizontal_w_m2, "global horizontal", decisions);
+  std::string water_from;
+  const std::optional<DaylightEfficacy> perez =
+      hour_efficacy(hour, sun.altitude_deg, sun.earth_sun_distance_au, water_from);
+  auto perez_of = [&](double DaylightEfficacy::*efficacy) -> std::optional<ModelEfficacy> {
+    if (!perez) return std::nullopt;
+    return ModelEfficacy{(*perez).*efficacy,
+                         formatted("Perez et al. (1990)'s efficacy for this hour's sky (clearness %.2f, brightness "
+                                   "%.3f, precipitable water ",
+                                   perez->clearness, perez->brightness) +
+                             water_from + ")"};
+  };
+  summary.file_direct_normal_lux = illuminance_of(file, hour, &EpwHour::direct_normal_lux, &EpwHour::direct_normal_w_m2,
+                                                  "direct normal", decisions, perez_of(&DaylightEfficacy::direct_lm_w));
+  summary.file_diffuse_horizontal_lux =
+      illuminance_of(file, hour, &EpwHour::diffuse_horizontal_lux, &EpwHour::diffuse_horizontal_w_m2,
+                     "diffuse horizontal", decisions, perez_of(&DaylightEfficacy::diffuse_lm_w));
+  summary.file_global_horizontal_lux =
+      illuminance_of(file, hour, &EpwHour::global_horizontal_lux, &EpwHour::global_horizontal_w_m2, "global horizontal",
+                     decisions, perez_of(&DaylightEfficacy::global_lm_w));
 
   const std::optional<double> cover =
       hour.opaque_sky_cover_tenths ? hour.opaque_sky_cover_tenths : hour.total_sky_cover_tenths;
