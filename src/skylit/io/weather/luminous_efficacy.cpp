@@ -62,8 +62,10 @@ std::optional<DaylightEfficacy> perez_daylight_efficacy(double direct_normal_w_m
   auto linear = [&](const Coefficients& k, double zenith_term, double delta_term) {
     return k.a[range] + k.b[range] * w + k.c[range] * zenith_term + k.d[range] * delta_term;
   };
-  out.global_lm_w = linear(kGlobal, std::cos(z), log_delta);
-  out.diffuse_lm_w = linear(kDiffuse, std::cos(z), log_delta);
+  // Not below 0 either (the laws stay positive over the skies they were fitted to; a
+  // file's extreme values may lie outside them).
+  out.global_lm_w = std::max(0.0, linear(kGlobal, std::cos(z), log_delta));
+  out.diffuse_lm_w = std::max(0.0, linear(kDiffuse, std::cos(z), log_delta));
   out.direct_lm_w = std::max(0.0, linear(kDirect, std::exp(5.73 * z - 5), out.brightness));
   return out;
 }
