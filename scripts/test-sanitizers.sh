@@ -53,6 +53,8 @@ heavy=(
   # in ExtremeScenes.RenderFiniteOrAreRefusedNeverAnInternalError
   FogSkyLight.NoNanForExtremeInputs
   WeatherConditions.ClearHoursOfTheSharedFileMatchTheModel
+  # 187 hours of the shared file; the efficacies' code runs here in the fixture's test
+  LuminousEfficacy.AFileWithoutIlluminancesGetsTheSharedFilesOwnFromItsIrradiances
   SkyLightCacheExamples.Fig7AtSmallSizesStaysNearTheExactSkyLight
   # four renders of Fig. 9, two with the exact sky light at every sample (8 s in Release)
   NightSkyLightCache.LampsAndGlowOutshiningTheSkyCostNothingVisibleAtDusk
@@ -78,6 +80,7 @@ heavy=(
   # many renders of one scene, or renders in many airs
   FogContrast.BlackTargetsFollowKoschmiedersLawInTheRenderedImage
   HorizonLine.NoRowStandsOutWhereTheGroundPlaneMeetsTheSky
+  HorizonLine.FoggedGroundBesideASmallBuildingTakesNothingHugeFromTheCache
   CloudRender.DistantCloudFadesIntoHazeThroughTheAirBeforeIt
   PublishedValues.RayleighOnlyAtmosphereAttenuatesTheZenithSunByItsOpticalDepth
   Cli.OutputDoesNotDependOnThreadCount
