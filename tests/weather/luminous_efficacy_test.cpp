@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <vector>
@@ -41,6 +42,24 @@ TEST(LuminousEfficacy, MatchesAHandComputationOfPerezsLaws) {
   // No sky to describe: the sun down, or no diffuse light.
   EXPECT_FALSE(perez_daylight_efficacy(700, 100, 95, 2, 1367));
   EXPECT_FALSE(perez_daylight_efficacy(700, 0, 30, 2, 1367));
+}
+
+// Whatever a file holds (the reader keeps values within the EPW dictionary's ranges;
+// wider here), the efficacies are finite and not negative.
+TEST(LuminousEfficacy, FiniteAndNotNegativeForExtremeSkies) {
+  int skies = 0;
+  for (const double direct : {0.0, 1e-9, 1.0, 800.0, 1500.0, 1e6})
+    for (const double diffuse : {1e-9, 1.0, 100.0, 1500.0, 1e6})
+      for (const double zenith : {0.0, 45.0, 89.99})
+        for (const double water : {0.0, 2.0, 100.0}) {
+          const std::optional<DaylightEfficacy> e = perez_daylight_efficacy(direct, diffuse, zenith, water, 1367);
+          ASSERT_TRUE(e);
+          for (const double v : {e->global_lm_w, e->direct_lm_w, e->diffuse_lm_w, e->clearness, e->brightness}) {
+            EXPECT_TRUE(std::isfinite(v) && v >= 0) << direct << " " << diffuse << " " << zenith << " " << water;
+          }
+          ++skies;
+        }
+  EXPECT_EQ(skies, 270);
 }
 
 // The shared Amsterdam file (IWEC) gives both irradiances and illuminances. With its
