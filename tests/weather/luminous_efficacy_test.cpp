@@ -90,8 +90,7 @@ TEST(LuminousEfficacy, AFileWithoutIlluminancesGetsTheSharedFilesOwnFromItsIrrad
     apply_weather_hour(without, without.hours[i], scene);
     if (scene.sun.altitude_deg < 10) continue;
     const WeatherSummary& w = *scene.weather;
-    ASSERT_TRUE(w.file_direct_normal_lux && w.file_diffuse_horizontal_lux && w.file_global_horizontal_lux)
-        << w.record;
+    ASSERT_TRUE(w.file_direct_normal_lux && w.file_diffuse_horizontal_lux && w.file_global_horizontal_lux) << w.record;
     direct.push_back(*w.file_direct_normal_lux / *h.direct_normal_lux);
     diffuse.push_back(*w.file_diffuse_horizontal_lux / *h.diffuse_horizontal_lux);
     global.push_back(*w.file_global_horizontal_lux / *h.global_horizontal_lux);
@@ -104,8 +103,8 @@ TEST(LuminousEfficacy, AFileWithoutIlluminancesGetsTheSharedFilesOwnFromItsIrrad
     for (const double r : ratios) off.push_back(std::abs(r - 1));
     std::sort(off.begin(), off.end());
     const double p90 = off[off.size() * 9 / 10];
-    std::printf("%s: %zu hours, median ratio %.4f, 90th percentile of |ratio - 1| %.4f\n", what, ratios.size(),
-                median, p90);
+    std::printf("%s: %zu hours, median ratio %.4f, 90th percentile of |ratio - 1| %.4f\n", what, ratios.size(), median,
+                p90);
     EXPECT_NEAR(median, 1.0, median_bound) << what;
     EXPECT_LT(p90, p90_bound) << what;
   };
@@ -133,10 +132,9 @@ TEST(LuminousEfficacy, AFileOfIrradiancesAloneFitsTheAirToItsBeam) {
   ASSERT_TRUE(w.file_direct_normal_lux);
   // The fixture's DNI 700 and DHI 150 W m⁻², its precipitable water 15 mm (taken before
   // its dew point's 1.6 cm).
-  const std::optional<DaylightEfficacy> perez =
-      perez_daylight_efficacy(700, 150, 90 - scene.sun.altitude_deg, 1.5,
-                              kPerezSolarConstantWm2 / (scene.atmosphere.earth_sun_distance_au *
-                                                        scene.atmosphere.earth_sun_distance_au));
+  const std::optional<DaylightEfficacy> perez = perez_daylight_efficacy(
+      700, 150, 90 - scene.sun.altitude_deg, 1.5,
+      kPerezSolarConstantWm2 / (scene.atmosphere.earth_sun_distance_au * scene.atmosphere.earth_sun_distance_au));
   ASSERT_TRUE(perez);
   EXPECT_NEAR(*w.file_direct_normal_lux, 700 * perez->direct_lm_w, 1e-6 * 700 * perez->direct_lm_w);
   EXPECT_NEAR(*w.file_diffuse_horizontal_lux, 150 * perez->diffuse_lm_w, 1e-6 * 150 * perez->diffuse_lm_w);

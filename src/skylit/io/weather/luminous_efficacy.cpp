@@ -44,8 +44,8 @@ double air_mass(double zenith_deg) {
 std::optional<DaylightEfficacy> perez_daylight_efficacy(double direct_normal_w_m2, double diffuse_horizontal_w_m2,
                                                         double sun_zenith_deg, double precipitable_water_cm,
                                                         double extraterrestrial_normal_w_m2) {
-  if (!(sun_zenith_deg >= 0 && sun_zenith_deg < 90) || !(diffuse_horizontal_w_m2 > 0) ||
-      !(direct_normal_w_m2 >= 0) || !(extraterrestrial_normal_w_m2 > 0) || !std::isfinite(direct_normal_w_m2) ||
+  if (!(sun_zenith_deg >= 0 && sun_zenith_deg < 90) || !(diffuse_horizontal_w_m2 > 0) || !(direct_normal_w_m2 >= 0) ||
+      !(extraterrestrial_normal_w_m2 > 0) || !std::isfinite(direct_normal_w_m2) ||
       !std::isfinite(diffuse_horizontal_w_m2) || !std::isfinite(precipitable_water_cm))
     return std::nullopt;
   const double z = radians(sun_zenith_deg);
@@ -53,8 +53,8 @@ std::optional<DaylightEfficacy> perez_daylight_efficacy(double direct_normal_w_m
   DaylightEfficacy out;
   out.clearness = ((diffuse_horizontal_w_m2 + direct_normal_w_m2) / diffuse_horizontal_w_m2 + kz3) / (1 + kz3);
   out.brightness = diffuse_horizontal_w_m2 * air_mass(sun_zenith_deg) / extraterrestrial_normal_w_m2;
-  const auto range = static_cast<size_t>(
-      std::upper_bound(kClearnessFrom.begin(), kClearnessFrom.end(), out.clearness) - kClearnessFrom.begin() - 1);
+  const auto range = static_cast<size_t>(std::upper_bound(kClearnessFrom.begin(), kClearnessFrom.end(), out.clearness) -
+                                         kClearnessFrom.begin() - 1);
   // Perez's fits cover W of about 0.2–5 cm; Δ below 0.01 (a sky ten times darker than
   // any they fitted) would make ln Δ run away.
   const double w = std::clamp(precipitable_water_cm, 0.0, 7.0);
