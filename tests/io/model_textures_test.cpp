@@ -173,6 +173,23 @@ TEST(ModelTextures, AMissingImageIsListedAndABrokenOneIsAnError) {
   EXPECT_NE(message.find("broken.png): not a PNG or JPEG image"), std::string::npos) << message;
 }
 
+// A PNG whose image data chunk claims more bytes than the file holds is refused before
+// stb_image reads it: stb grew its buffer to the claim first (an 89-byte file from the
+// texture fuzz target asked for 2 GiB).
+TEST(ModelTextures, APngChunkClaimingMoreThanTheFileIsRefusedBeforeItIsRead) {
+  TempDir dir;
+  write_texture(dir, "tex.png");
+  std::string png = testing::read_file(dir.path() / "tex.png");
+  const size_t idat = png.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  png.replace(idat - 4, 4, std::string("\x40\x00\x00\x00", 4));  // 1 GiB
+  dir.write("tex.png", png);
+  write_gltf(dir, "tex.png");
+  const std::string message =
+      testing::input_error_of([&] { load_scene(dir.write("scene.json", scene_json("quad.gltf", "y"))); });
+  EXPECT_NE(message.find("claims 1073741824 bytes, more than the file has left"), std::string::npos) << message;
+}
+
 // Image addresses as exporters write them: a file name with spaces percent-encoded
 // (RFC 3986: "te%20x.png" is the file "te x.png"), and the image inside the file as a
 // data URI of a media type tinygltf does not list ("image/jpg", the bytes a PNG's).

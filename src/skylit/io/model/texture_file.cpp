@@ -9,6 +9,8 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "skylit/core/error.h"
@@ -40,6 +42,33 @@ bool jpeg_huffman_tables_fit(const unsigned char* bytes, size_t size) {
   return true;
 }
 
+bool is_png(const unsigned char* bytes, size_t size) {
+  return size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
+}
+
+uint32_t big_endian_at(const unsigned char* bytes, size_t at) {
+  return static_cast<uint32_t>(bytes[at]) << 24 | static_cast<uint32_t>(bytes[at + 1]) << 16 |
+         static_cast<uint32_t>(bytes[at + 2]) << 8 | bytes[at + 3];
+}
+
+// The first PNG chunk, up to IEND, that claims more bytes than the file has left: none
+// if every one fits. stb_image grows its buffer for the image data to what an IDAT
+// chunk claims before reading it, doubling: an 89-byte file asked for 2 GiB (found by
+// the texture fuzz target).
+std::optional<std::string> png_chunk_past_the_end(const unsigned char* bytes, size_t size) {
+  for (size_t at = 8; at + 8 <= size;) {
+    const uint32_t length = big_endian_at(bytes, at);
+    const std::string type(reinterpret_cast<const char*>(bytes + at + 4), 4);
+    if (type == "IEND") return std::nullopt;
+    // Its data and its 4-byte CRC after the 8-byte length and type.
+    if (length > size - at - 8 || size - at - 8 - length < 4)
+      return "a PNG chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) +
+             " bytes, more than the file has left";
+    at += 12 + size_t{length};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t size, TextureEncoding encoding,
@@ -48,13 +77,13 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
   if (!jpeg_huffman_tables_fit(bytes, size))
     throw InputError(where + ": cannot decode the image (a JPEG Huffman table codes more than 256 symbols)");
   int width = 0, height = 0, channels = 0;
+  if (is_png(bytes, size))
+    if (const std::optional<std::string> why = png_chunk_past_the_end(bytes, size))
+      throw InputError(where + ": not a PNG or JPEG image, or a damaged one (" + *why + ")");
   // A PNG's size is in its header (IHDR), which stb does not report when it refuses one
   // too large (it says "not of any known type").
   if (size >= 24 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G') {
-    auto big_endian = [&](size_t at) {
-      return static_cast<uint32_t>(bytes[at]) << 24 | bytes[at + 1] << 16 | bytes[at + 2] << 8 | bytes[at + 3];
-    };
-    const uint32_t w = big_endian(16), h = big_endian(20);
+    const uint32_t w = big_endian_at(bytes, 16), h = big_endian_at(bytes, 20);
     if (w > static_cast<uint32_t>(kMaxTextureSide) || h > static_cast<uint32_t>(kMaxTextureSide))
       throw InputError(where + ": the image is " + std::to_string(w) + " × " + std::to_string(h) + " texels; at most " +
                        std::to_string(kMaxTextureSide) + " a side is read");
