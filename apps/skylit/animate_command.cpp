@@ -105,6 +105,13 @@ int run_animate(AnimateArguments& args) {
     throw InputError(args.scene_file +
                      ": animate places the sun for each frame and does not move the moon: give "
                      "the scene \"moon\": false");
+  // A weather file's hour sets the air, the sky, the clouds and the fog of that hour; a
+  // study moving only the sun would show every instant under them.
+  if (scene.weather)
+    throw InputError(args.scene_file +
+                     ": the scene takes its conditions from one hour of a weather file, which animate would keep "
+                     "for every frame while it moves the sun: render the file's hours with skylit sweep "
+                     "--vary weather.hour=MM-DDThh:mm,... (--stats plots them), or give the scene a 'time' instead");
   const std::vector<OffsetDateTime> instants = study_instants(args, *scene.site);
   std::vector<AnimationFrame> frames;
   std::vector<SolarPosition> suns;

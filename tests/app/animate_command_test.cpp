@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "../io/epw_fixture.h"
 #include "../io/png_read_util.h"
 #include "../test_support.h"
 #include "browser_support.h"
@@ -176,7 +177,16 @@ TEST(AnimateCommand, MistakesExitTwoAndMakeNoFolder) {
   TempDir dir;
   const auto sited = dir.write("sited.json", sited_scene("2026-06-21T12:00+02:00"));
   const auto unsited = dir.write("unsited.json", testing::small_scene_json(16, 12));
+  // One hour of a weather file: its clouds and air would stand for every instant.
+  dir.write("site.epw", testing::epw_fixture());
+  const auto weathered = dir.write(
+      "weathered.json", R"({"camera": {"position": [0, -20, 2], "look_at": [0, 0, 3]},
+  "weather": {"epw": "site.epw", "hour": "06-21T13:00"},
+  "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
+  "objects": [{"name": "ground", "type": "plane", "material": "white", "size_m": 200}],
+  "render": {"width": 16, "height": 12, "samples_per_axis": 1}})");
   const std::pair<std::string, std::string> cases[] = {
+      {quoted(weathered) + " --dates 06-21 --at 12:00", "--vary weather.hour="},
       {quoted(unsited) + " --dates 06-21 --at 12:00", "--site"},
       {quoted(sited) + " --from 2026-06-21T12:00Z --to 2026-06-21T11:00Z", "comes before"},
       {quoted(sited) + " --from 2026-06-21T12:00Z --to 2026-06-21T13:00Z --every 0s", "--every"},
