@@ -179,8 +179,7 @@ TEST(AnimateCommand, MistakesExitTwoAndMakeNoFolder) {
   const auto unsited = dir.write("unsited.json", testing::small_scene_json(16, 12));
   // One hour of a weather file: its clouds and air would stand for every instant.
   dir.write("site.epw", testing::epw_fixture());
-  const auto weathered = dir.write(
-      "weathered.json", R"({"camera": {"position": [0, -20, 2], "look_at": [0, 0, 3]},
+  const auto weathered = dir.write("weathered.json", R"({"camera": {"position": [0, -20, 2], "look_at": [0, 0, 3]},
   "weather": {"epw": "site.epw", "hour": "06-21T13:00"},
   "materials": {"white": {"type": "diffuse", "reflectance": 0.8}},
   "objects": [{"name": "ground", "type": "plane", "material": "white", "size_m": 200}],
