@@ -20,13 +20,23 @@ namespace skylit {
 
 namespace {
 
+// Whether the bytes start as a PNG does (stb takes as JPEG what does not).
+bool is_png(const unsigned char* bytes, size_t size) {
+  return size >= 4 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G';
+}
+
+uint32_t big_endian_at(const unsigned char* bytes, size_t at) {
+  return static_cast<uint32_t>(bytes[at]) << 24 | static_cast<uint32_t>(bytes[at + 1]) << 16 |
+         static_cast<uint32_t>(bytes[at + 2]) << 8 | bytes[at + 3];
+}
+
 // Whether every JPEG Huffman table (DHT segment) codes at most 256 symbols. Debian
 // 12's stb_image writes past its 257-entry table for one that codes more (found by
 // the texture fuzz target), so such a file is refused before it reaches stb. In
 // entropy-coded data 0xFF is stuffed as FF 00, so FF C4 is always a DHT marker.
 bool jpeg_huffman_tables_fit(const unsigned char* bytes, size_t size) {
-  // stb takes as JPEG what is not a PNG (its start marker may follow fill bytes).
-  if (size >= 4 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G') return true;
+  // (A JPEG's start marker may follow fill bytes.)
+  if (is_png(bytes, size)) return true;
   for (size_t p = 0; p + 4 <= size; ++p) {
     if (bytes[p] != 0xFF || bytes[p + 1] != 0xC4) continue;
     const size_t end = std::min(size, p + 2 + (size_t{bytes[p + 2]} << 8 | bytes[p + 3]));
@@ -40,15 +50,6 @@ bool jpeg_huffman_tables_fit(const unsigned char* bytes, size_t size) {
     }
   }
   return true;
-}
-
-bool is_png(const unsigned char* bytes, size_t size) {
-  return size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
-}
-
-uint32_t big_endian_at(const unsigned char* bytes, size_t at) {
-  return static_cast<uint32_t>(bytes[at]) << 24 | static_cast<uint32_t>(bytes[at + 1]) << 16 |
-         static_cast<uint32_t>(bytes[at + 2]) << 8 | bytes[at + 3];
 }
 
 // The first PNG chunk, up to IEND, that claims more bytes than the file has left: none
@@ -77,16 +78,17 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
   if (!jpeg_huffman_tables_fit(bytes, size))
     throw InputError(where + ": cannot decode the image (a JPEG Huffman table codes more than 256 symbols)");
   int width = 0, height = 0, channels = 0;
-  if (is_png(bytes, size))
+  if (is_png(bytes, size)) {
     if (const std::optional<std::string> why = png_chunk_past_the_end(bytes, size))
       throw InputError(where + ": not a PNG or JPEG image, or a damaged one (" + *why + ")");
-  // A PNG's size is in its header (IHDR), which stb does not report when it refuses one
-  // too large (it says "not of any known type").
-  if (size >= 24 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G') {
-    const uint32_t w = big_endian_at(bytes, 16), h = big_endian_at(bytes, 20);
-    if (w > static_cast<uint32_t>(kMaxTextureSide) || h > static_cast<uint32_t>(kMaxTextureSide))
-      throw InputError(where + ": the image is " + std::to_string(w) + " × " + std::to_string(h) + " texels; at most " +
-                       std::to_string(kMaxTextureSide) + " a side is read");
+    // A PNG's size is in its header (IHDR), which stb does not report when it refuses
+    // one too large (it says "not of any known type").
+    if (size >= 24) {
+      const uint32_t w = big_endian_at(bytes, 16), h = big_endian_at(bytes, 20);
+      if (w > static_cast<uint32_t>(kMaxTextureSide) || h > static_cast<uint32_t>(kMaxTextureSide))
+        throw InputError(where + ": the image is " + std::to_string(w) + " × " + std::to_string(h) +
+                         " texels; at most " + std::to_string(kMaxTextureSide) + " a side is read");
+    }
   }
   if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
     throw InputError(where + ": not a PNG or JPEG image, or a damaged one (" + stbi_failure_reason() + ")");
