@@ -55,8 +55,8 @@ std::optional<DaylightEfficacy> perez_daylight_efficacy(double direct_normal_w_m
   out.brightness = diffuse_horizontal_w_m2 * air_mass(sun_zenith_deg) / extraterrestrial_normal_w_m2;
   const auto range = static_cast<size_t>(std::upper_bound(kClearnessFrom.begin(), kClearnessFrom.end(), out.clearness) -
                                          kClearnessFrom.begin() - 1);
-  // Perez's fits cover W of about 0.2–5 cm; Δ below 0.01 (a sky ten times darker than
-  // any they fitted) would make ln Δ run away.
+  // W beyond 7 cm (more than the wettest air holds) and Δ below 0.01 (a sky far darker
+  // than daylight's) lie outside the laws' ground; there ln Δ would run away.
   const double w = std::clamp(precipitable_water_cm, 0.0, 7.0);
   const double log_delta = std::log(std::max(out.brightness, 0.01));
   auto linear = [&](const Coefficients& k, double zenith_term, double delta_term) {

@@ -9,9 +9,8 @@
 // the sun, corrected for the sun's zenith angle Z) and brightness Δ (the diffuse light
 // over the extraterrestrial beam, times the air mass); each efficacy is a linear law in
 // the precipitable water W, a function of Z and ln Δ or Δ, with coefficients for each of
-// eight ranges of ε, fitted by the authors to measurements at ten sites in the United
-// States and Europe (their stated standard errors: about 2 % for the global, 5–10 % for
-// the direct and diffuse efficacies in hourly values).
+// eight ranges of ε that the authors fitted to hourly measurements. How closely they give
+// another source's illuminances: tests/weather/luminous_efficacy_test.cpp.
 #pragma once
 
 #include <optional>

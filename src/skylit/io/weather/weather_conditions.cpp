@@ -211,13 +211,16 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
   std::string water_from;
   const std::optional<DaylightEfficacy> perez =
       hour_efficacy(hour, sun.altitude_deg, sun.earth_sun_distance_au, water_from);
+  const std::string perez_source =
+      perez ? formatted(
+                  "Perez et al. (1990)'s efficacy for this hour's sky (clearness %.2f, brightness %.3f, "
+                  "precipitable water ",
+                  perez->clearness, perez->brightness) +
+                  water_from + ")"
+            : std::string();
   auto perez_of = [&](double DaylightEfficacy::*efficacy) -> std::optional<ModelEfficacy> {
     if (!perez) return std::nullopt;
-    return ModelEfficacy{(*perez).*efficacy,
-                         formatted("Perez et al. (1990)'s efficacy for this hour's sky (clearness %.2f, brightness "
-                                   "%.3f, precipitable water ",
-                                   perez->clearness, perez->brightness) +
-                             water_from + ")"};
+    return ModelEfficacy{(*perez).*efficacy, perez_source};
   };
   summary.file_direct_normal_lux = illuminance_of(file, hour, &EpwHour::direct_normal_lux, &EpwHour::direct_normal_w_m2,
                                                   "direct normal", decisions, perez_of(&DaylightEfficacy::direct_lm_w));
