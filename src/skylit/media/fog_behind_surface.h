@@ -43,13 +43,6 @@
 
 namespace skylit {
 
-// What the camera sees more of a surface leaving radiance L through the fog in front of
-// it: (L·gain − field)·T', field the open field's light from behind the surface's plane:
-// all of it, or where the fog in front of the surface lies in a shadow of the sun, the
-// part from outside the sun's side (the view has lost the rest already). T' =
-// hidden_light_transmittance(T), T the fog's transmittance from the surface to the viewer
-// (the caller's: held without it, these interpolate across a surface seen over a range
-// of depths; see kHiddenHeldDepth).
 // How deep in the fog (optical depth from the viewer) the hidden light is held without
 // the fog's transmittance T to the viewer; deeper, with T's part beyond this depth.
 // Within a few optical depths of the viewer, what a surface hides lies mostly just in
@@ -60,7 +53,7 @@ namespace skylit {
 // held without T, it was T(viewer, surface)⁻¹ times too large, up to e^30, and a pixel
 // nearer than the cache corners it took this from (a ground plane near the horizon seen
 // from beside a small building) multiplied that by its own larger T: saturated red and
-// green blotches of 30–200 kcd/m² along a foggy horizon. A point's own value is the same
+// green blotches of 30–75 kcd/m² along a foggy horizon. A point's own value is the same
 // either way: T' = max(T, e^(−kHiddenHeldDepth)) undoes exactly what `at` holds back.
 inline constexpr double kHiddenHeldDepth = 2.0;
 
@@ -68,6 +61,13 @@ inline constexpr double kHiddenHeldDepth = 2.0;
 // surface to the viewer, per bin no less than e^(−kHiddenHeldDepth).
 Transmittance hidden_light_transmittance(const Transmittance& fog_to_viewer);
 
+// What the camera sees more of a surface leaving radiance L through the fog in front of
+// it: (L·gain − field)·T', field the open field's light from behind the surface's plane:
+// all of it, or where the fog in front of the surface lies in a shadow of the sun, the
+// part from outside the sun's side (the view has lost the rest already). T' =
+// hidden_light_transmittance(T), T the fog's transmittance from the surface to the viewer
+// (the caller's: held without it, these interpolate across a surface seen over a range
+// of depths; see kHiddenHeldDepth).
 struct FogHiddenBehind {
   Transmittance gain{0.0f};
   Radiance field{0.0f};
