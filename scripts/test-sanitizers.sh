@@ -98,6 +98,21 @@ heavy=(
   # AtmosphereTables tests
   AtmosphereTables.EveryChangeOfTheAirBuildsItsOwn
   AtmosphereTables.ThreadsAskingForAFewAirsAtOnceEachGetTheirAirs
+  # 30–80 s each instrumented (2026-12-06; the suite ran 892 s wall, CI 64 minutes).
+  # The same code runs here in: SpectrumCommand.PlotIsWritten (the spectrum command);
+  # the reference images of Fig. 7 and the house (the cache's rules, the canyon's
+  # light); FogBehindSurfaces' and FogSurfaceLight's other tests (the hidden light, the
+  # field on surfaces); the fog's other path-integrator tests; Fig. 10's reference
+  # images (clouds); Fig. 9's and the other exposure tests (lamps at night)
+  SpectrumCommand.WithoutCsvOrPlotPrintsTheIlluminances
+  SkyLightCacheExamples.ALoneCornerDoesNotStandInAcrossARecess
+  CanyonLight.TheShadedWallDoesNotDependOnHowTheSunlitOneIsCutIntoTriangles
+  FogMultipleScattering.TheGroundInFig8csShadowsAgainstThePathTracer
+  FogMultipleScattering.TheFogInFrontOfADarkWallLosesTheLightTheWallHides
+  FogMultipleScattering.SurfacesSeenThroughTheFogKeepTheLightScatteredStraightOn
+  FogSurfaceLight.AnUpwardFacingPlaneGetsTheFieldsDownwardFlux
+  CloudRender.BaseIsDarkerThanTheSkyAtLowSun
+  AutomaticExposure.LampLitStreetAtNightIsNotBurntByItsDarkSky
 )
 filter="-$(IFS=:; echo "${heavy[*]}")"
 
