@@ -210,7 +210,7 @@ TEST(Cli, InfoReportsObjectsAndWarnsWithExitStatus0) {
   const auto r = run_skylit("info " + quoted(scene));
   EXPECT_EQ(r.exit_status, 0) << r.output;
   EXPECT_NE(r.output.find("object 'tower': "), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("1 triangles"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 triangle;"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("skylit: warning: object 'tower' floats 5.00 m above the ground"), std::string::npos)
       << r.output;
 }

@@ -93,7 +93,7 @@ TEST(SceneModelMaterials, MeshLabsTrOfOneIsWarnedAboutAndOpaque) {
   const Scene scene = load_scene(dir.write("scene.json", scene_with("", "")));
   EXPECT_TRUE(std::holds_alternative<DiffuseMaterial>(scene.materials[scene.objects[0].material_of(0)].material));
   const std::string report = describe_objects(scene);
-  EXPECT_NE(report.find("'material_0' → house/material_0 (diffuse)"), std::string::npos) << report;
+  EXPECT_NE(report.find("'material_0' → house/material_0 (diffuse; colour"), std::string::npos) << report;
   const auto warnings = scene_warnings(scene, false);
   EXPECT_NE(std::find(warnings.begin(), warnings.end(),
                       "object 'house': material library 'scan.mtl', material 'material_0': Tr 1 without d read as "

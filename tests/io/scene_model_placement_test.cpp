@@ -117,7 +117,8 @@ TEST(SceneModelPlacement, OverridesThatMatchNothingAreReported) {
   EXPECT_TRUE(any_contains(w, "material 'Brick' matched no override"));
   EXPECT_TRUE(any_contains(w, "library 'gone.mtl' not found"));
   EXPECT_TRUE(any_contains(w, "only 0.010 m across"));
-  EXPECT_NE(describe_objects(scene).find("'Brick' → m/Brick (diffuse)"), std::string::npos) << describe_objects(scene);
+  EXPECT_NE(describe_objects(scene).find("'Brick' → m/Brick (diffuse; colour"), std::string::npos)
+      << describe_objects(scene);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skylit/core/formatted.h"
 #include "skylit/spectrum/rgb_to_spectrum.h"
 
 namespace skylit {
@@ -19,6 +20,23 @@ const char* kind_name(ModelMaterial::Kind kind) {
       return "glass";
   }
   return "?";
+}
+
+std::string describe(const ModelMaterial& m) {
+  std::string out = kind_name(m.kind);
+  if (m.kind != ModelMaterial::Kind::glass) {
+    out += formatted("; colour %.2f %.2f %.2f", m.color_linear[0], m.color_linear[1], m.color_linear[2]);
+    if (m.color_texture) out += m.kind == ModelMaterial::Kind::metal ? " × its texture's mean" : " × texture";
+  }
+  if (m.kind != ModelMaterial::Kind::diffuse) out += formatted("; m %.2f", m.roughness);
+  if (m.kind == ModelMaterial::Kind::coated || m.kind == ModelMaterial::Kind::glass)
+    out += formatted("; n %.2f", m.ior);
+  const double emission = std::max({m.emission_cd_m2[0], m.emission_cd_m2[1], m.emission_cd_m2[2]});
+  if (emission > 0) out += formatted("; emits up to %.4g cd/m²", emission) + (m.emission_texture ? " × texture" : "");
+  if (m.alpha_cutoff > 0) out += formatted("; cut out where alpha < %.2f", m.alpha_cutoff);
+  if (m.normal_texture) out += "; normal map";
+  if (!m.double_sided) out += "; one-sided";
+  return out;
 }
 
 ComplexIor conductor_from_reflectance(const Spectrum& r, const Spectrum& g) {

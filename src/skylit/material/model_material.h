@@ -51,6 +51,10 @@ struct ModelMaterial {
 
 const char* kind_name(ModelMaterial::Kind kind);
 
+// What `skylit info` says a file's material became: its kind and what it carries, e.g.
+// "layered; colour 0.80 0.62 0.50 × texture; m 0.25; n 1.50; normal map; one-sided".
+std::string describe(const ModelMaterial& m);
+
 // The skylit material: diffuse → DiffuseMaterial; coated → CookTorranceMaterial over
 // the body; metal → CookTorranceMaterial with n, k found so that the Fresnel
 // reflectance at normal incidence is `color` in every wavelength bin (see .cpp);

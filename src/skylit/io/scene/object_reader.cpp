@@ -199,7 +199,7 @@ void assign_model_materials(const JsonReader& j, const LoadedModel& model, std::
         materials.push_back({object.name + "/" + file_material.name, material_from_model(file_material),
                              appearance_from_model(file_material)});
         source.materials.push_back(
-            {file_material.name, materials.back().name + " (" + kind_name(file_material.kind) + ")", false});
+            {file_material.name, materials.back().name + " (" + describe(file_material) + ")", false});
       }
     }
     object.triangle_materials.push_back(it->second);

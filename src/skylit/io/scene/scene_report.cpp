@@ -103,6 +103,9 @@ void check_camera_view(const Scene& scene, const RayTracer& tracer, std::vector<
                      ": is it facing a wall from close by?");
 }
 
+// A length printed to the millimetre, without the "-0.000" of a shift of −0.2 mm.
+double printed_mm(double metres) { return std::abs(metres) < 5e-4 ? 0.0 : metres; }
+
 // The city model's file, CRS, site, city objects by type and surface classes with
 // their materials.
 std::string describe_city(const CitySource& c) {
@@ -138,7 +141,8 @@ std::string describe_objects(const Scene& scene) {
       const ModelSource& s = *object.source;
       out += s.file + ", up axis " + s.up_axis + ", units " + s.units;
       if (s.offset_m.x != 0 || s.offset_m.y != 0 || s.offset_m.z != 0)
-        out += formatted(", shifted by (%.3f, %.3f, %.3f) m", s.offset_m.x, s.offset_m.y, s.offset_m.z);
+        out += formatted(", shifted by (%.3f, %.3f, %.3f) m", printed_mm(s.offset_m.x), printed_mm(s.offset_m.y),
+                         printed_mm(s.offset_m.z));
       out += "\n";
       if (s.skipped_primitives > 0)
         out += "  " + std::to_string(s.skipped_primitives) + " primitive(s) of points or lines not drawn\n";
@@ -147,7 +151,8 @@ std::string describe_objects(const Scene& scene) {
     } else {
       out += "primitive\n";
     }
-    out += "  " + std::to_string(object.mesh.triangles.size()) + " triangles";
+    const size_t triangles = object.mesh.triangles.size();
+    out += "  " + std::to_string(triangles) + (triangles == 1 ? " triangle" : " triangles");
     if (!box.empty()) {
       const Vec3 size = box.size();
       out += formatted("; extent %.2f × %.2f", size.x, size.y) + formatted(" × %.2f m", size.z);
