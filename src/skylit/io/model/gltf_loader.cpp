@@ -27,6 +27,8 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -51,6 +53,8 @@ bool harmless_extension(const std::string& name) {
   return false;
 }
 
+constexpr const char* kSpecularGlossiness = "KHR_materials_pbrSpecularGlossiness";
+
 // A number in a material extension's object, or `fallback`.
 double extension_number(const tinygltf::Material& m, const char* extension, const char* key, double fallback) {
   const auto e = m.extensions.find(extension);
@@ -59,28 +63,78 @@ double extension_number(const tinygltf::Material& m, const char* extension, cons
   return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? v.GetNumberAsDouble() : fallback;
 }
 
+// A material extension's object, or null.
+const tinygltf::Value* material_extension(const tinygltf::Material& m, const char* extension) {
+  const auto e = m.extensions.find(extension);
+  return e != m.extensions.end() && e->second.IsObject() ? &e->second : nullptr;
+}
+
+// A number in an extension's object, or `fallback`; `k`-th element of an array for k ≥ 0.
+double value_number(const tinygltf::Value& object, const char* key, double fallback, int k = -1) {
+  if (!object.Has(key)) return fallback;
+  const tinygltf::Value* v = &object.Get(key);
+  if (k >= 0) {
+    if (!v->IsArray() || v->ArrayLen() <= static_cast<size_t>(k)) return fallback;
+    v = &v->Get(k);
+  }
+  return v->IsNumber() && std::isfinite(v->GetNumberAsDouble()) ? v->GetNumberAsDouble() : fallback;
+}
+
+// The older specular-glossiness model (KHR_materials_pbrSpecularGlossiness, archived by
+// Khronos but still in many exports, often as a required extension with no
+// metallic-roughness values at all, which then read as the spec's white metal). A
+// specular colour above 0.2 at normal incidence no dielectric has (water 0.02, glass
+// 0.04, diamond 0.17), so it is a metal of that colour, as MTL's black Kd with a bright
+// Ks is; otherwise a coat whose index gives the specular's mean reflectance,
+// n = (1 + √F0) / (1 − √F0), over a body of the diffuse colour. Roughness 1 − glossiness.
+void read_specular_glossiness(const tinygltf::Value& sg, ModelMaterial& out) {
+  for (int i = 0; i < 3; ++i) out.color_linear[static_cast<size_t>(i)] = value_number(sg, "diffuseFactor", 1.0, i);
+  std::array<double, 3> specular{};
+  for (int i = 0; i < 3; ++i)
+    specular[static_cast<size_t>(i)] = std::clamp(value_number(sg, "specularFactor", 1.0, i), 0.0, 1.0);
+  out.roughness = beckmann_from_gltf_roughness(1.0 - value_number(sg, "glossinessFactor", 1.0));
+  if (out.kind == ModelMaterial::Kind::glass) return;
+  if (std::max({specular[0], specular[1], specular[2]}) > 0.2) {
+    out.kind = ModelMaterial::Kind::metal;
+    out.color_linear = {specular[0], specular[1], specular[2]};
+    return;
+  }
+  out.kind = ModelMaterial::Kind::coated;
+  const double root_f0 = std::sqrt((specular[0] + specular[1] + specular[2]) / 3.0);
+  out.ior = (1.0 + root_f0) / (1.0 - root_f0);
+}
+
 // The metallic-roughness model mapped onto skylit's kinds: mostly transmitting →
 // glass; mostly metallic → a metal whose normal reflectance is the base colour;
 // otherwise the spec's dielectric, a coat of index `ior` over a body of the base
 // colour. Factors in between are rounded to the nearer kind (skylit does not blend).
-ModelMaterial model_material(const tinygltf::Material& m, size_t index) {
+// `metallic_roughness_mean` is the mean of the metallicRoughnessTexture (B metalness,
+// G roughness), which multiplies the factors: with one kind per material, the mean
+// decides it as the factor alone does without a texture. (Blender and most exporters
+// leave metallicFactor out, 1 by the spec, when the texture carries the metalness:
+// read by the factor alone, every such material was a metal.)
+ModelMaterial model_material(const tinygltf::Material& m, size_t index,
+                             const std::optional<Rgba>& metallic_roughness_mean) {
   ModelMaterial out;
   out.name = m.name.empty() ? "material " + std::to_string(index) : m.name;
   const auto& pbr = m.pbrMetallicRoughness;
   if (pbr.baseColorFactor.size() >= 3)  // linear by the spec
     out.color_linear = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
-  out.roughness = beckmann_from_gltf_roughness(pbr.roughnessFactor);
+  const double metallic = pbr.metallicFactor * (metallic_roughness_mean ? (*metallic_roughness_mean)[2] : 1.0);
+  out.roughness = beckmann_from_gltf_roughness(pbr.roughnessFactor *
+                                               (metallic_roughness_mean ? (*metallic_roughness_mean)[1] : 1.0));
   out.ior = extension_number(m, "KHR_materials_ior", "ior", 1.5);
   const double transmission = extension_number(m, "KHR_materials_transmission", "transmissionFactor", 0.0);
   const double thickness = extension_number(m, "KHR_materials_volume", "thicknessFactor", 0.0);
   if (transmission >= 0.5) {
     out.kind = ModelMaterial::Kind::glass;
     if (thickness > 0) out.thickness_m = thickness;
-  } else if (pbr.metallicFactor >= 0.5) {
+  } else if (metallic >= 0.5) {
     out.kind = ModelMaterial::Kind::metal;
   } else {
     out.kind = ModelMaterial::Kind::coated;
   }
+  if (const tinygltf::Value* sg = material_extension(m, kSpecularGlossiness)) read_specular_glossiness(*sg, out);
   // emissiveFactor × KHR_materials_emissive_strength, taken as cd/m²
   // (docs/model-materials.md).
   const double strength = extension_number(m, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
@@ -242,10 +296,17 @@ class GltfReader {
   GltfReader(const tinygltf::Model& model, std::string name, const ImageBytes& images, std::filesystem::path folder)
       : model_(model), name_(std::move(name)), images_(images), folder_(std::move(folder)) {
     for (const tinygltf::Buffer& buffer : model_.buffers) buffer_bytes_ += buffer.data.size();
+    std::vector<std::string> default_metals;
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const tinygltf::Material& m = model_.materials[i];
-      ModelMaterial material = model_material(m, i);
-      material.color_texture = texture(m.pbrMetallicRoughness.baseColorTexture.index, TextureEncoding::srgb);
+      const auto& pbr = m.pbrMetallicRoughness;
+      std::optional<Rgba> metallic_roughness_mean;
+      if (const auto t = texture(pbr.metallicRoughnessTexture.index, TextureEncoding::linear))
+        metallic_roughness_mean = t->mean();
+      ModelMaterial material = model_material(m, i, metallic_roughness_mean);
+      const tinygltf::Value* sg = material_extension(m, kSpecularGlossiness);
+      const int color_index = sg ? texture_index(*sg, "diffuseTexture") : pbr.baseColorTexture.index;
+      material.color_texture = texture(color_index, TextureEncoding::srgb);
       material.emission_texture = texture(m.emissiveTexture.index, TextureEncoding::srgb);
       material.normal_texture = texture(m.normalTexture.index, TextureEncoding::linear);  // data, not colour
       material.normal_scale = m.normalTexture.scale;
@@ -254,22 +315,63 @@ class GltfReader {
       // TEXCOORD_0 and one transform: a material's tiling).
       if (material.normal_texture) use_uvs_of(i, m.normalTexture.texCoord, m.normalTexture.extensions);
       if (material.emission_texture) use_uvs_of(i, m.emissiveTexture.texCoord, m.emissiveTexture.extensions);
-      if (material.color_texture)
-        use_uvs_of(i, m.pbrMetallicRoughness.baseColorTexture.texCoord,
-                   m.pbrMetallicRoughness.baseColorTexture.extensions);
-      set_alpha(m, material);
+      if (material.color_texture) {
+        if (sg)
+          use_uvs_of(i, texture_set(*sg, "diffuseTexture"), {});
+        else
+          use_uvs_of(i, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions);
+      }
+      set_alpha(m, material, sg);
+      if (is_metal_by_default(m, material, metallic_roughness_mean.has_value()))
+        default_metals.push_back(quote_excerpt(material.name));
       out_.materials.push_back(std::move(material));
     }
+    warn_of_default_metals(default_metals);
+  }
+
+  // A textureInfo inside an extension's object: its texture index (−1 for none) and
+  // texture coordinate set.
+  static int texture_index(const tinygltf::Value& object, const char* key) {
+    if (!object.Has(key) || !object.Get(key).Has("index") || !object.Get(key).Get("index").IsInt()) return -1;
+    return object.Get(key).Get("index").GetNumberAsInt();
+  }
+  static int texture_set(const tinygltf::Value& object, const char* key) {
+    const tinygltf::Value& info = object.Get(key);
+    return info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
+  }
+
+  // glTF's default metallicFactor is 1, so a material that gives none is a metal, and
+  // skylit's metals take their texture's mean colour: COLLADA2GLTF and other old
+  // exporters wrote textured dielectrics so, and the texture vanished without a word.
+  static bool is_metal_by_default(const tinygltf::Material& m, const ModelMaterial& material, bool metalness_texture) {
+    return material.kind == ModelMaterial::Kind::metal && material.color_texture && !metalness_texture &&
+           m.values.count("metallicFactor") == 0 && material_extension(m, kSpecularGlossiness) == nullptr;
+  }
+
+  // One line for all of them (a model may have hundreds), naming the first few.
+  void warn_of_default_metals(const std::vector<std::string>& names) {
+    if (names.empty()) return;
+    constexpr size_t kNamed = 4;
+    std::string list;
+    for (size_t i = 0; i < std::min(names.size(), kNamed); ++i) list += (i ? ", " : "") + names[i];
+    if (names.size() > kNamed) list += " and " + std::to_string(names.size() - kNamed) + " more";
+    const bool one = names.size() == 1;
+    out_.read_warnings.push_back(
+        (one ? "material " : "materials ") + list + (one ? " gives" : " give") +
+        " no metallicFactor: by glTF's default a metal, shown by its texture's mean colour "
+        "only; if not metal, give \"metallicFactor\": 0 in the file or override (\"material_overrides\")");
   }
 
   // alphaMode (docs/model-materials.md): MASK cuts holes where the base colour's alpha
   // (factor × texel) is below alphaCutoff; BLEND, which skylit cannot blend, makes a
   // material whose factor is translucent a glass pane (as MTL's d does) and cuts holes
   // where its texture's alpha is below one half; OPAQUE ignores alpha.
-  static void set_alpha(const tinygltf::Material& m, ModelMaterial& material) {
+  static void set_alpha(const tinygltf::Material& m, ModelMaterial& material, const tinygltf::Value* sg) {
     material.double_sided = m.doubleSided;
     const auto& factor = m.pbrMetallicRoughness.baseColorFactor;
-    const double alpha = factor.size() >= 4 && std::isfinite(factor[3]) ? factor[3] : 1.0;
+    const double alpha = sg                                               ? value_number(*sg, "diffuseFactor", 1.0, 3)
+                         : factor.size() >= 4 && std::isfinite(factor[3]) ? factor[3]
+                                                                          : 1.0;
     if (m.alphaMode == "MASK") {
       material.alpha_cutoff = m.alphaCutoff;
       material.alpha_factor = alpha;
@@ -476,6 +578,10 @@ class GltfReader {
     const auto attribute =
         primitive.attributes.find("TEXCOORD_" + std::to_string(set == uv_set_.end() ? 0 : set->second));
     if (triangles.empty() || set == uv_set_.end() || attribute == primitive.attributes.end()) {
+      if (!triangles.empty() && set != uv_set_.end() && uvless_materials_.insert(material).second)
+        out_.read_warnings.push_back("material " + quote_excerpt(out_.materials[static_cast<size_t>(material)].name) +
+                                     ": its texture reads " + "TEXCOORD_" + std::to_string(set->second) +
+                                     ", which a primitive using it does not have (shown untextured)");
       uvs.insert(uvs.end(), triangles.triangles.size(), CornerUvs{});
       return;
     }
@@ -683,7 +789,8 @@ class GltfReader {
   const ImageBytes& images_;
   std::filesystem::path folder_;
   std::map<std::pair<int, TextureEncoding>, std::shared_ptr<const Texture>> textures_;  // by image
-  std::map<int32_t, int> uv_set_;  // by material: its texture's TEXCOORD set
+  std::map<int32_t, int> uv_set_;       // by material: its texture's TEXCOORD set
+  std::set<int32_t> uvless_materials_;  // warned of: a primitive lacks their TEXCOORD set
   // By material: its texture's KHR_texture_transform, uv' = M (u, v, 1), row-major 2 × 3.
   std::map<int32_t, std::array<double, 6>> uv_transform_;
   bool any_uv_ = false;
