@@ -161,5 +161,21 @@ TEST(GltfMaterialModels, ATextureOnACoordinateSetTheMeshLacksIsWarnedOf) {
       << model.read_warnings[0];
 }
 
+// alphaMode MASK with the factor's alpha below the cutoff and no texture to raise it:
+// the whole material is a hole, and an object of it vanishes (the camera still frames
+// it). Said, not refused: a file may mean it.
+TEST(GltfMaterialModels, AMaterialCutAwayWholeIsWarnedOf) {
+  TempDir dir;
+  const auto masked = [&](double alpha) {
+    return load_quad(dir, R"({"name": "Veil", "alphaMode": "MASK", "alphaCutoff": 0.5, "pbrMetallicRoughness":
+        {"metallicFactor": 0, "baseColorFactor": [1, 1, 1, )" +
+                              std::to_string(alpha) + "]}}");
+  };
+  const LoadedModel cut = masked(0.3);
+  ASSERT_EQ(cut.read_warnings.size(), 1u);
+  EXPECT_NE(cut.read_warnings[0].find("'Veil' is cut away whole"), std::string::npos) << cut.read_warnings[0];
+  EXPECT_TRUE(masked(0.7).read_warnings.empty());
+}
+
 }  // namespace
 }  // namespace skylit

@@ -2,7 +2,7 @@
 // tinygltf: triangle-list primitives of every mesh instance in the scene, placed by
 // the node hierarchy, each triangle with its primitive's material (metallic-roughness
 // factors and the transmission, ior and volume extensions; docs/model-materials.md).
-// Base-colour, emissive and normal textures (PNG, JPEG: io/model/texture_file.h) with
+// Base-colour, emissive and normal textures (PNG, JPEG, BMP, TGA: io/model/texture_file.h) with
 // the primitives' texture coordinates, emission, alphaMode and doubleSided, and the
 // vertex normals (NORMAL). Positions and normals are morphed by their targets' default
 // weights. Any of these accessors may be sparse. Everything else in the file is
@@ -35,6 +35,7 @@
 #include <nlohmann/json.hpp>
 
 #include "skylit/core/error.h"
+#include "skylit/core/formatted.h"
 #include "skylit/core/text_file.h"
 #include "skylit/geometry/transform.h"
 #include "skylit/io/model/mesh_io.h"
@@ -322,6 +323,12 @@ class GltfReader {
           use_uvs_of(i, pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions);
       }
       set_alpha(m, material, sg);
+      if (material.alpha_cutoff > 0 && !material.alpha_texture && material.alpha_factor < material.alpha_cutoff)
+        out_.read_warnings.push_back(
+            "material " + quote_excerpt(material.name) +
+            formatted(" is cut away whole: alphaMode MASK with alpha %.3g below its alphaCutoff "
+                      "%.3g and no texture",
+                      material.alpha_factor, material.alpha_cutoff));
       if (is_metal_by_default(m, material, metallic_roughness_mean.has_value()))
         default_metals.push_back(quote_excerpt(material.name));
       out_.materials.push_back(std::move(material));
@@ -674,7 +681,7 @@ class GltfReader {
       it->second = decode_texture(bytes->second.data(), bytes->second.size(), encoding, where);
     } else if (image.uri.rfind("data:", 0) == 0) {
       // A data URI whose media type tinygltf does not list ("image/jpg", "image/webp",
-      // none): its bytes, which decode_texture takes if they are a PNG or JPEG.
+      // none): its bytes, which decode_texture takes if they are a PNG, JPEG, BMP or TGA.
       const size_t comma = image.uri.find(',');
       if (comma == std::string::npos || !std::string_view(image.uri).substr(0, comma).ends_with(";base64"))
         fail("image " + std::to_string(source) + ": a data URI that is not base64");
