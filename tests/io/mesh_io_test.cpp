@@ -594,6 +594,30 @@ TEST_F(MeshIo, MtlTrOfOneAloneIsMeshLabsOpacity) {
                 "opacity (opaque), not as 1 − d (clear glass)"}));
 }
 
+// usemtl names a material as newmtl does, spaces and all (Max2Mtl's "Hard Shiny
+// Plastic White" fell back to the object's material without a word), else by its first
+// word as tinyobjloader reads it; a name no library defines is warned of.
+TEST_F(MeshIo, ObjMaterialNamesWithSpacesAndUndefinedNames) {
+  write("spaces.mtl", "newmtl Hard Shiny Plastic White\nKd 0.9 0.9 0.9\nnewmtl Glass\nd 0.2\n");
+  const fs::path p = write("spaces.obj",
+                           "mtllib spaces.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\n"
+                           "usemtl Hard Shiny Plastic White \nf 1 2 3\nusemtl Glass left over\nf 1 2 3\n"
+                           "usemtl Nowhere\nf 1 2 3\n");
+  const LoadedModel model = load_model_file(p, UpAxis::z);
+  ASSERT_EQ(model.materials.size(), 2u);
+  EXPECT_EQ(model.materials[0].name, "Hard Shiny Plastic White");
+  EXPECT_EQ(model.triangle_material, (std::vector<int32_t>{0, 1, LoadedModel::kNoMaterial}));
+  EXPECT_EQ(
+      model.read_warnings,
+      std::vector<std::string>{"usemtl 'Nowhere': in no mtllib of the file; those faces take the object's material"});
+
+  const LoadedModel without_library =
+      load_model_file(write("bare.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl Brick\nf 1 2 3\n"), UpAxis::z);
+  EXPECT_EQ(
+      without_library.read_warnings,
+      std::vector<std::string>{"usemtl 'Brick', but no mtllib of the file; those faces take the object's material"});
+}
+
 TEST_F(MeshIo, ObjMissingMaterialLibraryIsNotAnError) {
   const fs::path p = write("lost.obj", "mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Brick\nf 1 2 3\n");
   const LoadedModel model = load_model_file(p, UpAxis::z);

@@ -238,9 +238,24 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
   }
   // Each usemtl name's material; none for a name no library defines.
   std::vector<int32_t> material_of_name;
+  std::vector<std::string> undefined;
   for (const std::string& used : obj.material_names) {
-    const auto it = material_ids.find(used);
+    // The whole name as newmtl gives it ("Hard Shiny Plastic White", as Max2Mtl writes
+    // it), else its first word, as tinyobjloader reads "usemtl Glass left over".
+    auto it = material_ids.find(used);
+    if (it == material_ids.end()) it = material_ids.find(used.substr(0, used.find_first_of(" \t")));
     material_of_name.push_back(it == material_ids.end() ? LoadedModel::kNoMaterial : it->second);
+    if (it == material_ids.end() && !used.empty()) undefined.push_back(quote_excerpt(used));
+  }
+  // Said unless a library was not found (which is warned of, and likely defines them).
+  if (!undefined.empty() && model.missing_libraries.empty()) {
+    constexpr size_t kNamed = 4;
+    std::string list;
+    for (size_t i = 0; i < std::min(undefined.size(), kNamed); ++i) list += (i ? ", " : "") + undefined[i];
+    if (undefined.size() > kNamed) list += " and " + std::to_string(undefined.size() - kNamed) + " more";
+    model.read_warnings.push_back("usemtl " + list +
+                                  (obj.material_libraries.empty() ? ", but no mtllib" : ": in no mtllib") +
+                                  " of the file; those faces take the object's material");
   }
 
   const auto& texcoords = obj.texcoords;

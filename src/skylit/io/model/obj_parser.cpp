@@ -159,11 +159,12 @@ class Parser {
   }
 
   // The first word names the material (as tinyobjloader reads it); none: no material.
+  // The rest of the line, as `newmtl` names it in the library: Max2Mtl and others write
+  // names with spaces ("Hard Shiny Plastic White"), whose first word alone matched no
+  // material, and the faces silently took the object's. (The loader falls back to the
+  // first word, which is what tinyobjloader reads.)
   void use_material(const char* p, const char* stop) {
-    p = skip_blanks(p, stop);
-    const char* word_end = p;
-    while (word_end < stop && !blank(*word_end)) ++word_end;
-    const std::string_view name(p, static_cast<size_t>(word_end - p));
+    const std::string name = trimmed(p, stop);
     auto it = material_index_.find(name);
     if (it == material_index_.end()) {
       it = material_index_.emplace(std::string(name), static_cast<int32_t>(out_.material_names.size())).first;
