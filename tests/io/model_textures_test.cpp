@@ -87,6 +87,42 @@ TEST(ModelTextures, ObjMapKdAtKnownUvs) {
   EXPECT_NEAR(luminance(emitted_radiance(p.emission_cd_m2)), y, 1e-3 * y);
 }
 
+// The test texture (red, green / blue, white) as a 24-bit BMP and an uncompressed TGA,
+// written here byte by byte from the formats' headers: both store the bottom row
+// first, and the texels as blue, green, red; a BMP pads each row to 4 bytes.
+std::string bmp_texture() {
+  const auto u32 = [](uint32_t v) { return std::string{char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; };
+  const auto u16 = [](uint32_t v) { return std::string{char(v), char(v >> 8)}; };
+  const std::string rows = std::string("\xFF\x00\x00\xFF\xFF\xFF\x00\x00", 8) +  // blue, white, pad
+                           std::string("\x00\x00\xFF\x00\xFF\x00\x00\x00", 8);   // red, green, pad
+  return "BM" + u32(54 + 16) + u32(0) + u32(54) + u32(40) + u32(2) + u32(2) + u16(1) + u16(24) + u32(0) + u32(16) +
+         u32(2835) + u32(2835) + u32(0) + u32(0) + rows;
+}
+
+std::string tga_texture() {
+  // No ID, no colour map, type 2 (true colour), origin (0, 0), 2 × 2, 24 bits, bottom-up.
+  const std::string header("\x00\x00\x02\x00\x00\x00\x00\x00\x00\x00\x00\x00\x02\x00\x02\x00\x18\x00", 18);
+  return header + std::string("\xFF\x00\x00\xFF\xFF\xFF\x00\x00\xFF\x00\xFF\x00", 12);
+}
+
+// Older OBJ exports (3ds Max, MilkShape, games) give BMP and TGA textures; a BMP stopped
+// the whole scene. Each reads the right way up.
+TEST(ModelTextures, BmpAndTgaTexturesAreReadTheRightWayUp) {
+  for (const auto& [name, bytes] : {std::pair{"tex.bmp", bmp_texture()}, std::pair{"tex.tga", tga_texture()}}) {
+    SCOPED_TRACE(name);
+    TempDir dir;
+    dir.write(name, bytes);
+    dir.write("quad.mtl", std::string("newmtl Painted\nKd 1 1 1\nmap_Kd ") + name + "\n");
+    write_obj_quad(dir);
+    const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.obj", "z")));
+    const PreparedScene prepared(scene);
+    expect_color(point_below(prepared, -0.5, 0.5), 1, 0, 0);
+    expect_color(point_below(prepared, 0.5, 0.5), 0, 1, 0);
+    expect_color(point_below(prepared, -0.5, -0.5), 0, 0, 1);
+    expect_color(point_below(prepared, 0.5, -0.5), 1, 1, 1);
+  }
+}
+
 // A glTF quad (y up: the file's x–z plane is skylit's ground) with its geometry in
 // quad.bin and the texture beside it, emissive by the strength extension.
 void write_gltf(const TempDir& dir, const std::string& image_uri) {
@@ -170,7 +206,7 @@ TEST(ModelTextures, AMissingImageIsListedAndABrokenOneIsAnError) {
       testing::input_error_of([&] { load_scene(dir.write("broken.json", scene_json("quad.gltf", "y"))); });
   // Named with the model that names it, then the file.
   EXPECT_NE(message.find("quad.gltf: image 0 ("), std::string::npos) << message;
-  EXPECT_NE(message.find("broken.png): not a PNG or JPEG image"), std::string::npos) << message;
+  EXPECT_NE(message.find("broken.png): not a PNG, JPEG, BMP or TGA image"), std::string::npos) << message;
 }
 
 // A PNG whose image data chunk claims more bytes than the file holds is refused before

@@ -1,5 +1,5 @@
 // Loading triangle meshes from files: glTF 2.0 (.gltf, .glb) and Wavefront OBJ with
-// its MTL libraries. Geometry, each triangle's material with its textures (PNG, JPEG),
+// its MTL libraries. Geometry, each triangle's material with its textures (PNG, JPEG, BMP, TGA),
 // texture coordinates and the file's vertex normals are read; cameras, lights and
 // animation in the file are ignored.
 #pragma once

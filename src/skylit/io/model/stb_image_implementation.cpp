@@ -1,5 +1,6 @@
-// stb_image's implementation (Debian's libstb-dev), compiled once, for PNG and JPEG only;
-// io/model/texture_file.cpp calls it.
+// stb_image's implementation (Debian's libstb-dev), compiled once, for PNG, JPEG, BMP and
+// TGA only (BMP and TGA: the textures of older OBJ exports from 3ds Max, MilkShape and
+// games, which stopped the whole scene); io/model/texture_file.cpp calls it.
 //
 // This file alone is built without UBSan's nonnull-attribute check when sanitizing
 // (CMakeLists.txt): for a PNG whose first IDAT chunk is empty, stb's stbi__getn copies
@@ -9,6 +10,8 @@
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
 #define STBI_ONLY_JPEG
+#define STBI_ONLY_BMP
+#define STBI_ONLY_TGA
 #define STBI_NO_STDIO
 #define STBI_FAILURE_USERMSG
 #define STBI_MAX_DIMENSIONS 16384  // kMaxTextureSide

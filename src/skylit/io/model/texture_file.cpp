@@ -25,6 +25,17 @@ bool is_png(const unsigned char* bytes, size_t size) {
   return size >= 4 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G';
 }
 
+// BMP's RLE8 codes 255 texels in 2 bytes, TGA's run packets 128 in 2 (8-bit): 256 a
+// byte is more than either can hold.
+constexpr double kMostBmpOrTgaTexelsPerByte = 256;
+
+// Whether stb takes the bytes for a JPEG: its start marker FF D8, after any fill bytes FF.
+bool is_jpeg(const unsigned char* bytes, size_t size) {
+  size_t at = 0;
+  while (at < size && bytes[at] == 0xFF) ++at;
+  return at > 0 && at < size && bytes[at] == 0xD8;
+}
+
 uint32_t big_endian_at(const unsigned char* bytes, size_t at) {
   return static_cast<uint32_t>(bytes[at]) << 24 | static_cast<uint32_t>(bytes[at + 1]) << 16 |
          static_cast<uint32_t>(bytes[at + 2]) << 8 | bytes[at + 3];
@@ -35,8 +46,7 @@ uint32_t big_endian_at(const unsigned char* bytes, size_t at) {
 // the texture fuzz target), so such a file is refused before it reaches stb. In
 // entropy-coded data 0xFF is stuffed as FF 00, so FF C4 is always a DHT marker.
 bool jpeg_huffman_tables_fit(const unsigned char* bytes, size_t size) {
-  // (A JPEG's start marker may follow fill bytes.)
-  if (is_png(bytes, size)) return true;
+  if (!is_jpeg(bytes, size)) return true;  // a BMP's or TGA's texels may hold FF C4
   for (size_t p = 0; p + 4 <= size; ++p) {
     if (bytes[p] != 0xFF || bytes[p + 1] != 0xC4) continue;
     const size_t end = std::min(size, p + 2 + (size_t{bytes[p + 2]} << 8 | bytes[p + 3]));
@@ -74,13 +84,13 @@ std::optional<std::string> png_chunk_past_the_end(const unsigned char* bytes, si
 
 std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t size, TextureEncoding encoding,
                                               const std::string& where) {
-  if (size == 0 || size > static_cast<size_t>(INT_MAX)) throw InputError(where + ": not a PNG or JPEG image");
+  if (size == 0 || size > static_cast<size_t>(INT_MAX)) throw InputError(where + ": not a PNG, JPEG, BMP or TGA image");
   if (!jpeg_huffman_tables_fit(bytes, size))
     throw InputError(where + ": cannot decode the image (a JPEG Huffman table codes more than 256 symbols)");
   int width = 0, height = 0, channels = 0;
   if (is_png(bytes, size)) {
     if (const std::optional<std::string> why = png_chunk_past_the_end(bytes, size))
-      throw InputError(where + ": not a PNG or JPEG image, or a damaged one (" + *why + ")");
+      throw InputError(where + ": not a PNG, JPEG, BMP or TGA image, or a damaged one (" + *why + ")");
     // A PNG's size is in its header (IHDR), which stb does not report when it refuses
     // one too large (it says "not of any known type").
     if (size >= 24) {
@@ -91,10 +101,17 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
     }
   }
   if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
-    throw InputError(where + ": not a PNG or JPEG image, or a damaged one (" + stbi_failure_reason() + ")");
+    throw InputError(where + ": not a PNG, JPEG, BMP or TGA image, or a damaged one (" + stbi_failure_reason() + ")");
   if (width <= 0 || height <= 0 || width > kMaxTextureSide || height > kMaxTextureSide)
     throw InputError(where + ": the image is " + std::to_string(width) + " × " + std::to_string(height) +
                      " texels; at most " + std::to_string(kMaxTextureSide) + " a side is read");
+  // stb reads a BMP or TGA shorter than its header claims as if zeros followed (a
+  // 49-byte TGA from the fuzzer made 72 million texels); PNG and JPEG fail instead.
+  // Their run-length codings hold fewer than 256 texels a byte, so more is not the file.
+  if (!is_png(bytes, size) && !is_jpeg(bytes, size) &&
+      static_cast<double>(width) * height > kMostBmpOrTgaTexelsPerByte * static_cast<double>(size))
+    throw InputError(where + ": a BMP or TGA image of " + std::to_string(width) + " × " + std::to_string(height) +
+                     " texels in " + std::to_string(size) + " bytes: cut short");
   unsigned char* texels = stbi_load_from_memory(bytes, static_cast<int>(size), &width, &height, &channels, 4);
   if (texels == nullptr) throw InputError(where + ": cannot decode the image (" + stbi_failure_reason() + ")");
   std::vector<uint8_t> rgba(texels, texels + static_cast<size_t>(width) * height * 4);

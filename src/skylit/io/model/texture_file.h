@@ -1,4 +1,4 @@
-// Image textures of model files: PNG and JPEG, decoded by stb_image (Debian's
+// Image textures of model files: PNG, JPEG, BMP and TGA, decoded by stb_image (Debian's
 // libstb-dev), from a file beside the model or from bytes inside it (a glTF buffer or
 // data URI).
 #pragma once
@@ -16,7 +16,7 @@ namespace skylit {
 // hostile header claiming one) is refused before its texels are allocated.
 inline constexpr int kMaxTextureSide = 16384;
 
-// Decodes PNG or JPEG bytes (any channel count; grey and RGB get opaque alpha). Throws
+// Decodes PNG, JPEG, BMP or TGA bytes (any channel count; grey and RGB get opaque alpha). Throws
 // InputError naming `where` when the bytes are not such an image or it is too large.
 std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t size, TextureEncoding encoding,
                                               const std::string& where);
