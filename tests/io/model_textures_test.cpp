@@ -8,6 +8,7 @@
 #include "../test_support.h"
 #include "skylit/core/base64.h"
 #include "skylit/io/image/image_encoders.h"
+#include "skylit/io/model/texture_file.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/prepared_scene.h"
 #include "skylit/spectrum/cie.h"
@@ -103,6 +104,35 @@ std::string tga_texture() {
   // No ID, no colour map, type 2 (true colour), origin (0, 0), 2 × 2, 24 bits, bottom-up.
   const std::string header("\x00\x00\x02\x00\x00\x00\x00\x00\x00\x00\x00\x00\x02\x00\x02\x00\x18\x00", 18);
   return header + std::string("\xFF\x00\x00\xFF\xFF\xFF\x00\x00\xFF\x00\xFF\x00", 12);
+}
+
+// A JPEG whose scan decodes with a Huffman table it never defines is refused: Debian
+// 12's stb_image read such a table from memory it never set, out of bounds at random
+// (the texture fuzz target's finding, fuzz/corpus/texture/scan_with_undefined_table.jpg).
+// Here a one-component baseline JPEG defining DC table 0 and AC table 0 whose scan asks
+// for AC table 1; with AC table 1 it is no longer refused on that count.
+TEST(ModelTextures, AJpegScanWithAnUndefinedHuffmanTableIsRefused) {
+  const auto jpeg = [](unsigned char ac_table) {
+    const std::string sof("\xFF\xC0\x00\x0B\x08\x00\x08\x00\x08\x01\x01\x11\x00", 13);
+    const std::string dqt = std::string("\xFF\xDB\x00\x43\x00", 5) + std::string(64, '\x01');
+    // Each table one code of length 1, symbol 0.
+    const std::string one_code = std::string("\x01", 1) + std::string(15, '\0') + std::string(1, '\0');
+    const std::string dht = std::string("\xFF\xC4\x00\x26\x00", 5) + one_code + std::string("\x10", 1) + one_code;
+    const std::string sos =
+        std::string("\xFF\xDA\x00\x08\x01\x01", 6) + std::string(1, char(ac_table)) + std::string("\x00\x3F\x00", 3);
+    return std::string("\xFF\xD8", 2) + dqt + sof + dht + sos + std::string("\x00\x00\xFF\xD9", 4);
+  };
+  const auto message = [](const std::string& bytes) {
+    return testing::input_error_of([&] {
+      decode_texture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), TextureEncoding::srgb,
+                     "t.jpg");
+    });
+  };
+  EXPECT_NE(message(jpeg(0x01))
+                .find("t.jpg: cannot decode the image (a JPEG scan uses a Huffman table the file does "
+                      "not define)"),
+            std::string::npos);
+  EXPECT_EQ(message(jpeg(0x00)).find("Huffman table the file does not define"), std::string::npos);
 }
 
 // Older OBJ exports (3ds Max, MilkShape, games) give BMP and TGA textures; a BMP stopped

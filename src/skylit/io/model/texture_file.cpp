@@ -62,6 +62,52 @@ bool jpeg_huffman_tables_fit(const unsigned char* bytes, size_t size) {
   return true;
 }
 
+// Whether a JPEG scan decodes with a Huffman table that no DHT segment before it
+// defined. Debian 12's stb_image then reads its table from memory it never set (its
+// decoder's state is malloc'd), so the same file read out of bounds at random (found by
+// the texture fuzz target: a scan using AC table 1 of a file defining only AC table 0).
+// Walked as stb walks it: segment by segment by their lengths, bytes between them
+// skipped, and after a scan's header its entropy-coded data (where FF is stuffed as
+// FF 00 and FF D0–D7 are restart markers) up to the next marker. A progressive scan
+// decodes with the DC tables only when it is a first DC scan (Ss 0, Ah 0), with the AC
+// tables only when Ss > 0; a baseline one with both. Table numbers above 3 stb refuses.
+bool jpeg_scan_uses_undefined_table(const unsigned char* bytes, size_t size) {
+  bool defined[2][4] = {};
+  bool progressive = false;
+  size_t p = 0;
+  const auto length_at = [&](size_t at) { return at + 4 <= size ? size_t{bytes[at + 2]} << 8 | bytes[at + 3] : 0; };
+  while (p + 1 < size) {
+    const unsigned char marker = bytes[p + 1];
+    if (bytes[p] != 0xFF || marker == 0xFF || marker == 0x00 || (marker >= 0xD0 && marker <= 0xD9) || marker == 0x01) {
+      ++p;  // not a marker, fill, stuffing, or a marker without a segment
+      continue;
+    }
+    const size_t end = std::min(size, p + 2 + length_at(p));
+    if (marker == 0xC4) {
+      for (size_t q = p + 4; q < end;) {
+        const unsigned table_class = bytes[q] >> 4, id = bytes[q] & 15;
+        if (table_class < 2 && id < 4) defined[table_class][id] = true;
+        size_t symbols = 0;
+        for (size_t i = 1; i <= 16 && q + i < size; ++i) symbols += bytes[q + i];
+        q += 17 + symbols;
+      }
+    } else if (marker >= 0xC0 && marker <= 0xC2) {
+      progressive = marker == 0xC2;
+    } else if (marker == 0xDA && p + 5 <= size) {
+      const size_t components = bytes[p + 4], spectral_at = p + 5 + 2 * components;
+      if (spectral_at + 3 > size) return false;  // cut short: stb refuses it
+      const bool first_dc = bytes[spectral_at] == 0 && (bytes[spectral_at + 2] >> 4) == 0;
+      const bool uses_dc = !progressive || first_dc, uses_ac = !progressive || bytes[spectral_at] > 0;
+      for (size_t k = 0; k < components; ++k) {
+        const unsigned dc = bytes[p + 6 + 2 * k] >> 4, ac = bytes[p + 6 + 2 * k] & 15;
+        if ((uses_dc && dc < 4 && !defined[0][dc]) || (uses_ac && ac < 4 && !defined[1][ac])) return true;
+      }
+    }
+    p = std::max(end, p + 2);
+  }
+  return false;
+}
+
 // The first PNG chunk, up to IEND, that claims more bytes than the file has left: none
 // if every one fits. stb_image grows its buffer for the image data to what an IDAT
 // chunk claims before reading it, doubling: an 89-byte file asked for 2 GiB (found by
@@ -87,6 +133,8 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
   if (size == 0 || size > static_cast<size_t>(INT_MAX)) throw InputError(where + ": not a PNG, JPEG, BMP or TGA image");
   if (!jpeg_huffman_tables_fit(bytes, size))
     throw InputError(where + ": cannot decode the image (a JPEG Huffman table codes more than 256 symbols)");
+  if (is_jpeg(bytes, size) && jpeg_scan_uses_undefined_table(bytes, size))
+    throw InputError(where + ": cannot decode the image (a JPEG scan uses a Huffman table the file does not define)");
   int width = 0, height = 0, channels = 0;
   if (is_png(bytes, size)) {
     if (const std::optional<std::string> why = png_chunk_past_the_end(bytes, size))
