@@ -9,7 +9,7 @@ set -euo pipefail
 
 packages=(
   g++ cmake make pkg-config
-  libembree-dev libtbb-dev libopenexr-dev libpng-dev
+  libembree-dev libtbb-dev libopenexr-dev libpng-dev libjpeg62-turbo-dev
   nlohmann-json3-dev libtinyobjloader-dev libtinygltf-dev libcli11-dev
   libstb-dev
   libgtest-dev libbenchmark-dev

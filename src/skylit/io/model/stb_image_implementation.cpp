@@ -1,6 +1,7 @@
-// stb_image's implementation (Debian's libstb-dev), compiled once, for PNG, JPEG, BMP and
-// TGA only (BMP and TGA: the textures of older OBJ exports from 3ds Max, MilkShape and
-// games, which stopped the whole scene); io/model/texture_file.cpp calls it.
+// stb_image's implementation (Debian's libstb-dev), compiled once, for PNG, BMP and TGA
+// only (BMP and TGA: the textures of older OBJ exports from 3ds Max, MilkShape and
+// games, which stopped the whole scene; JPEG goes to libjpeg-turbo, jpeg_texels.h);
+// io/model/texture_file.cpp calls it.
 //
 // This file alone is built without UBSan's nonnull-attribute check when sanitizing
 // (CMakeLists.txt): for a PNG whose first IDAT chunk is empty, stb's stbi__getn copies
@@ -9,7 +10,6 @@
 // still decodes or is refused as before, and every other check stays on here.
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
 #define STBI_ONLY_BMP
 #define STBI_ONLY_TGA
 #define STBI_NO_STDIO

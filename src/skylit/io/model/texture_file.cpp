@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "skylit/core/error.h"
+#include "skylit/io/model/jpeg_texels.h"
 #include "skylit/io/model/mesh_io.h"
 
 namespace skylit {
@@ -29,7 +30,7 @@ bool is_png(const unsigned char* bytes, size_t size) {
 // byte is more than either can hold.
 constexpr double kMostBmpOrTgaTexelsPerByte = 256;
 
-// Whether stb takes the bytes for a JPEG: its start marker FF D8, after any fill bytes FF.
+// Whether the bytes start as a JPEG does: its start marker FF D8, after any fill bytes FF.
 bool is_jpeg(const unsigned char* bytes, size_t size) {
   size_t at = 0;
   while (at < size && bytes[at] == 0xFF) ++at;
@@ -39,73 +40,6 @@ bool is_jpeg(const unsigned char* bytes, size_t size) {
 uint32_t big_endian_at(const unsigned char* bytes, size_t at) {
   return static_cast<uint32_t>(bytes[at]) << 24 | static_cast<uint32_t>(bytes[at + 1]) << 16 |
          static_cast<uint32_t>(bytes[at + 2]) << 8 | bytes[at + 3];
-}
-
-// Whether every JPEG Huffman table (DHT segment) codes at most 256 symbols. Debian
-// 12's stb_image writes past its 257-entry table for one that codes more (found by
-// the texture fuzz target), so such a file is refused before it reaches stb. In
-// entropy-coded data 0xFF is stuffed as FF 00, so FF C4 is always a DHT marker.
-bool jpeg_huffman_tables_fit(const unsigned char* bytes, size_t size) {
-  if (!is_jpeg(bytes, size)) return true;  // a BMP's or TGA's texels may hold FF C4
-  for (size_t p = 0; p + 4 <= size; ++p) {
-    if (bytes[p] != 0xFF || bytes[p + 1] != 0xC4) continue;
-    const size_t end = std::min(size, p + 2 + (size_t{bytes[p + 2]} << 8 | bytes[p + 3]));
-    // As stb reads it: tables while the segment lasts, each table's 16 counts even
-    // where they run past the segment's stated end.
-    for (size_t q = p + 4; q < end;) {
-      size_t symbols = 0;
-      for (size_t i = 1; i <= 16 && q + i < size; ++i) symbols += bytes[q + i];
-      if (symbols > 256) return false;
-      q += 17 + symbols;
-    }
-  }
-  return true;
-}
-
-// Whether a JPEG scan decodes with a Huffman table that no DHT segment before it
-// defined. Debian 12's stb_image then reads its table from memory it never set (its
-// decoder's state is malloc'd), so the same file read out of bounds at random (found by
-// the texture fuzz target: a scan using AC table 1 of a file defining only AC table 0).
-// Walked as stb walks it: segment by segment by their lengths, bytes between them
-// skipped, and after a scan's header its entropy-coded data (where FF is stuffed as
-// FF 00 and FF D0–D7 are restart markers) up to the next marker. A progressive scan
-// decodes with the DC tables only when it is a first DC scan (Ss 0, Ah 0), with the AC
-// tables only when Ss > 0; a baseline one with both. Table numbers above 3 stb refuses.
-bool jpeg_scan_uses_undefined_table(const unsigned char* bytes, size_t size) {
-  bool defined[2][4] = {};
-  bool progressive = false;
-  size_t p = 0;
-  const auto length_at = [&](size_t at) { return at + 4 <= size ? size_t{bytes[at + 2]} << 8 | bytes[at + 3] : 0; };
-  while (p + 1 < size) {
-    const unsigned char marker = bytes[p + 1];
-    if (bytes[p] != 0xFF || marker == 0xFF || marker == 0x00 || (marker >= 0xD0 && marker <= 0xD9) || marker == 0x01) {
-      ++p;  // not a marker, fill, stuffing, or a marker without a segment
-      continue;
-    }
-    const size_t end = std::min(size, p + 2 + length_at(p));
-    if (marker == 0xC4) {
-      for (size_t q = p + 4; q < end;) {
-        const unsigned table_class = bytes[q] >> 4, id = bytes[q] & 15;
-        if (table_class < 2 && id < 4) defined[table_class][id] = true;
-        size_t symbols = 0;
-        for (size_t i = 1; i <= 16 && q + i < size; ++i) symbols += bytes[q + i];
-        q += 17 + symbols;
-      }
-    } else if (marker >= 0xC0 && marker <= 0xC2) {
-      progressive = marker == 0xC2;
-    } else if (marker == 0xDA && p + 5 <= size) {
-      const size_t components = bytes[p + 4], spectral_at = p + 5 + 2 * components;
-      if (spectral_at + 3 > size) return false;  // cut short: stb refuses it
-      const bool first_dc = bytes[spectral_at] == 0 && (bytes[spectral_at + 2] >> 4) == 0;
-      const bool uses_dc = !progressive || first_dc, uses_ac = !progressive || bytes[spectral_at] > 0;
-      for (size_t k = 0; k < components; ++k) {
-        const unsigned dc = bytes[p + 6 + 2 * k] >> 4, ac = bytes[p + 6 + 2 * k] & 15;
-        if ((uses_dc && dc < 4 && !defined[0][dc]) || (uses_ac && ac < 4 && !defined[1][ac])) return true;
-      }
-    }
-    p = std::max(end, p + 2);
-  }
-  return false;
 }
 
 // The first PNG chunk, up to IEND, that claims more bytes than the file has left: none
@@ -131,10 +65,10 @@ std::optional<std::string> png_chunk_past_the_end(const unsigned char* bytes, si
 std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t size, TextureEncoding encoding,
                                               const std::string& where) {
   if (size == 0 || size > static_cast<size_t>(INT_MAX)) throw InputError(where + ": not a PNG, JPEG, BMP or TGA image");
-  if (!jpeg_huffman_tables_fit(bytes, size))
-    throw InputError(where + ": cannot decode the image (a JPEG Huffman table codes more than 256 symbols)");
-  if (is_jpeg(bytes, size) && jpeg_scan_uses_undefined_table(bytes, size))
-    throw InputError(where + ": cannot decode the image (a JPEG scan uses a Huffman table the file does not define)");
+  if (is_jpeg(bytes, size)) {
+    JpegTexels jpeg = decode_jpeg(bytes, size, kMaxTextureSide, where);
+    return std::make_shared<const Texture>(jpeg.width, jpeg.height, std::move(jpeg.rgba), encoding);
+  }
   int width = 0, height = 0, channels = 0;
   if (is_png(bytes, size)) {
     if (const std::optional<std::string> why = png_chunk_past_the_end(bytes, size))
@@ -154,9 +88,9 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
     throw InputError(where + ": the image is " + std::to_string(width) + " × " + std::to_string(height) +
                      " texels; at most " + std::to_string(kMaxTextureSide) + " a side is read");
   // stb reads a BMP or TGA shorter than its header claims as if zeros followed (a
-  // 49-byte TGA from the fuzzer made 72 million texels); PNG and JPEG fail instead.
+  // 49-byte TGA from the fuzzer made 72 million texels); a PNG fails instead.
   // Their run-length codings hold fewer than 256 texels a byte, so more is not the file.
-  if (!is_png(bytes, size) && !is_jpeg(bytes, size) &&
+  if (!is_png(bytes, size) &&
       static_cast<double>(width) * height > kMostBmpOrTgaTexelsPerByte * static_cast<double>(size))
     throw InputError(where + ": a BMP or TGA image of " + std::to_string(width) + " × " + std::to_string(height) +
                      " texels in " + std::to_string(size) + " bytes: cut short");

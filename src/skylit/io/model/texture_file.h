@@ -1,6 +1,6 @@
-// Image textures of model files: PNG, JPEG, BMP and TGA, decoded by stb_image (Debian's
-// libstb-dev), from a file beside the model or from bytes inside it (a glTF buffer or
-// data URI).
+// Image textures of model files: PNG, BMP and TGA decoded by stb_image (Debian's
+// libstb-dev), JPEG by libjpeg-turbo (jpeg_texels.h), from a file beside the model or
+// from bytes inside it (a glTF buffer or data URI).
 #pragma once
 
 #include <cstdint>
