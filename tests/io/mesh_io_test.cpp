@@ -618,6 +618,19 @@ TEST_F(MeshIo, ObjMaterialNamesWithSpacesAndUndefinedNames) {
       std::vector<std::string>{"usemtl 'Brick', but no mtllib of the file; those faces take the object's material"});
 }
 
+// A vertex index outside the file is an error; a vt or vn index outside is read as
+// none and warned of (three.js' verify.obj has them; viewers show such files).
+TEST_F(MeshIo, ObjTextureAndNormalIndicesOutsideTheFileAreReadAsNoneAndSaid) {
+  const LoadedModel model = load_model_file(
+      write("past.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/5/1 3/1/7\nf 1/1/1 2/1/1 3/1/1\n"),
+      UpAxis::z);
+  ASSERT_EQ(model.corner_uvs.size(), 2u);
+  EXPECT_EQ(model.corner_uvs[0][1], (std::array<float, 2>{0.0f, 0.0f}));
+  EXPECT_EQ(model.read_warnings,
+            std::vector<std::string>{"2 face corner(s) name a texture coordinate (vt) or normal (vn) the file does not "
+                                     "have; read as none"});
+}
+
 TEST_F(MeshIo, ObjMissingMaterialLibraryIsNotAnError) {
   const fs::path p = write("lost.obj", "mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Brick\nf 1 2 3\n");
   const LoadedModel model = load_model_file(p, UpAxis::z);

@@ -274,6 +274,19 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
     return file_normals[static_cast<size_t>(corner.normal)];
   };
   const bool any_normal = !file_normals.empty();
+  // Corners whose vt or vn index lies outside the file's data (three.js' verify.obj has
+  // them): read as none, as viewers read them, and said.
+  const auto outside = [](int32_t index, size_t count) {
+    return index != -1 && (index < 0 || static_cast<size_t>(index) >= count);
+  };
+  const size_t corners_outside =
+      static_cast<size_t>(std::count_if(obj.corners.begin(), obj.corners.end(), [&](const ObjCorner& c) {
+        return outside(c.texcoord, texcoords.size()) || outside(c.normal, file_normals.size());
+      }));
+  if (corners_outside > 0)
+    model.read_warnings.push_back(std::to_string(corners_outside) +
+                                  " face corner(s) name a texture coordinate (vt) or normal (vn) the file does "
+                                  "not have; read as none");
   TriangleMesh& mesh = model.mesh;
   mesh.vertices = std::move(obj.positions);
   // Most faces of big models are triangles or quads: room for quads without regrowing.

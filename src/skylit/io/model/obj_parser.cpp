@@ -158,8 +158,7 @@ class Parser {
     return resolved(value, count);
   }
 
-  // The first word names the material (as tinyobjloader reads it); none: no material.
-  // The rest of the line, as `newmtl` names it in the library: Max2Mtl and others write
+  // The material is named by the rest of the line, as `newmtl` names it in the library: Max2Mtl and others write
   // names with spaces ("Hard Shiny Plastic White"), whose first word alone matched no
   // material, and the faces silently took the object's. (The loader falls back to the
   // first word, which is what tinyobjloader reads.)
