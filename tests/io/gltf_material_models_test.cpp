@@ -6,9 +6,8 @@
 // models: BoxTextured and TextureCoordinateTest showed no texture at all.
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 #include "../test_support.h"
+#include "gltf_quad_buffer.h"
 #include "skylit/core/base64.h"
 #include "skylit/io/image/image_encoders.h"
 #include "skylit/io/model/mesh_io.h"
@@ -31,14 +30,7 @@ std::string uniform_png_uri(uint8_t r, uint8_t g, uint8_t b) { return png_uri({r
 // textures refer to `images` (data URIs), texture i to image i.
 LoadedModel load_quad(const TempDir& dir, const std::string& material, const std::vector<std::string>& images = {},
                       const std::string& extensions_required = "") {
-  const float positions[] = {-1, 0, 1, 1, 0, 1, 1, 0, -1, -1, 0, -1};
-  const float uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};
-  const uint16_t indices[] = {0, 1, 2, 0, 2, 3};
-  std::string bin(sizeof positions + sizeof uvs + sizeof indices, '\0');
-  std::memcpy(bin.data(), positions, sizeof positions);
-  std::memcpy(bin.data() + sizeof positions, uvs, sizeof uvs);
-  std::memcpy(bin.data() + sizeof positions + sizeof uvs, indices, sizeof indices);
-  dir.write("quad.bin", bin);
+  testing::write_quad_bin(dir);
   std::string textures, image_list;
   for (size_t i = 0; i < images.size(); ++i) {
     textures += (i ? ", " : "") + std::string(R"({"source": )") + std::to_string(i) + "}";

@@ -3,9 +3,8 @@
 // emissiveFactor become the emitted luminance, and a missing image is listed, not fatal.
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 #include "../test_support.h"
+#include "gltf_quad_buffer.h"
 #include "skylit/core/base64.h"
 #include "skylit/io/image/image_encoders.h"
 #include "skylit/io/model/texture_file.h"
@@ -158,14 +157,7 @@ TEST(ModelTextures, BmpAndTgaTexturesAreReadTheRightWayUp) {
 // A glTF quad (y up: the file's x–z plane is skylit's ground) with its geometry in
 // quad.bin and the texture beside it, emissive by the strength extension.
 void write_gltf(const TempDir& dir, const std::string& image_uri) {
-  const float positions[] = {-1, 0, 1, 1, 0, 1, 1, 0, -1, -1, 0, -1};  // glTF +z is skylit's −y
-  const float uvs[] = {0, 1, 1, 1, 1, 0, 0, 0};                        // v down from the top row
-  const uint16_t indices[] = {0, 1, 2, 0, 2, 3};
-  std::string bin(sizeof positions + sizeof uvs + sizeof indices, '\0');
-  std::memcpy(bin.data(), positions, sizeof positions);
-  std::memcpy(bin.data() + sizeof positions, uvs, sizeof uvs);
-  std::memcpy(bin.data() + sizeof positions + sizeof uvs, indices, sizeof indices);
-  dir.write("quad.bin", bin);
+  testing::write_quad_bin(dir);
   dir.write("quad.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
     "nodes": [{"mesh": 0}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]}],
