@@ -624,11 +624,20 @@ TEST_F(MeshIo, ObjTextureAndNormalIndicesOutsideTheFileAreReadAsNoneAndSaid) {
   const LoadedModel model = load_model_file(
       write("past.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/5/1 3/1/7\nf 1/1/1 2/1/1 3/1/1\n"),
       UpAxis::z);
+  EXPECT_EQ(model.skipped_primitives, 0);
   ASSERT_EQ(model.corner_uvs.size(), 2u);
   EXPECT_EQ(model.corner_uvs[0][1], (std::array<float, 2>{0.0f, 0.0f}));
   EXPECT_EQ(model.read_warnings,
             std::vector<std::string>{"2 face corner(s) name a texture coordinate (vt) or normal (vn) the file does not "
                                      "have; read as none"});
+}
+
+// Points and lines are not surfaces: skipped, and counted for `skylit info` as glTF's are.
+TEST_F(MeshIo, ObjPointsAndLinesAreCounted) {
+  const LoadedModel model =
+      load_model_file(write("lines.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nl 1 2 3\np 1\nl 2 3\n"), UpAxis::z);
+  EXPECT_EQ(model.mesh.triangles.size(), 1u);
+  EXPECT_EQ(model.skipped_primitives, 3);
 }
 
 TEST_F(MeshIo, ObjMissingMaterialLibraryIsNotAnError) {

@@ -42,7 +42,8 @@ struct LoadedModel {
   // them).
   std::vector<std::string> missing_libraries;
   std::vector<std::string> missing_images;
-  // glTF primitives of points or lines, which are not surfaces and are not drawn.
+  // glTF primitives and OBJ elements (`p`, `l`) of points or lines, which are not
+  // surfaces and are not drawn.
   int skipped_primitives = 0;
   // Where the file was read other than by its format's letter, because read so it would
   // describe what no model means (MTL's `Tr 1` from MeshLab): one line each, naming the

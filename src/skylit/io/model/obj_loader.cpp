@@ -274,6 +274,7 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
     return file_normals[static_cast<size_t>(corner.normal)];
   };
   const bool any_normal = !file_normals.empty();
+  model.skipped_primitives = obj.points_and_lines;
   // Corners whose vt or vn index lies outside the file's data (three.js' verify.obj has
   // them): read as none, as viewers read them, and said.
   const auto outside = [](int32_t index, size_t count) {

@@ -111,6 +111,8 @@ class Parser {
       use_material(p + 6, stop);
     else if (keyword(p, stop, "mtllib"))
       out_.material_libraries.push_back(trimmed(p + 7, stop));
+    else if (keyword(p, stop, "p") || keyword(p, stop, "l"))
+      ++out_.points_and_lines;
   }
 
   // Three finite numbers (a fourth, w, or vertex colours after them are ignored).

@@ -36,6 +36,7 @@ struct ObjGeometry {
   HugePageVector<int32_t> face_material_names;     // per face: index in material_names, -1 before any usemtl
   std::vector<std::string> material_names;         // distinct `usemtl` names in order of use
   std::vector<std::string> material_libraries;     // each `mtllib` line's text after the keyword, trimmed
+  int points_and_lines = 0;                        // `p` and `l` elements, which are not surfaces
 };
 
 // Throws InputError naming `file_name` and the line for a vertex that is not three
