@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -69,6 +70,13 @@ std::string quote_excerpt(std::string_view text) {
   for (const char ch : text.substr(0, kMaxShown)) out += (ch >= 32 && ch < 127) ? ch : '?';
   if (text.size() > kMaxShown) out += "...";
   return out + "'";
+}
+
+std::string first_few(const std::vector<std::string>& items, size_t named) {
+  std::string list;
+  for (size_t i = 0; i < std::min(items.size(), named); ++i) list += (i ? ", " : "") + items[i];
+  if (items.size() > named) list += " and " + std::to_string(items.size() - named) + " more";
+  return list;
 }
 
 }  // namespace skylit

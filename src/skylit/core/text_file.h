@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace skylit {
 
@@ -35,5 +36,9 @@ void require_regular_file(const std::filesystem::path& file, const std::string& 
 // (others as '?'), in single quotes, "..." when cut. Messages never quote more, so a
 // file named by mistake (/etc/passwd) is not copied to the terminal (item 16).
 std::string quote_excerpt(std::string_view text);
+
+// The first `named` of `items` joined by ", ", then " and N more" for the rest: one
+// warning line for what a model may have hundreds of.
+std::string first_few(const std::vector<std::string>& items, size_t named);
 
 }  // namespace skylit

@@ -56,14 +56,6 @@ bool harmless_extension(const std::string& name) {
 
 constexpr const char* kSpecularGlossiness = "KHR_materials_pbrSpecularGlossiness";
 
-// A number in a material extension's object, or `fallback`.
-double extension_number(const tinygltf::Material& m, const char* extension, const char* key, double fallback) {
-  const auto e = m.extensions.find(extension);
-  if (e == m.extensions.end() || !e->second.Has(key)) return fallback;
-  const tinygltf::Value& v = e->second.Get(key);
-  return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? v.GetNumberAsDouble() : fallback;
-}
-
 // A material extension's object, or null.
 const tinygltf::Value* material_extension(const tinygltf::Material& m, const char* extension) {
   const auto e = m.extensions.find(extension);
@@ -79,6 +71,12 @@ double value_number(const tinygltf::Value& object, const char* key, double fallb
     v = &v->Get(k);
   }
   return v->IsNumber() && std::isfinite(v->GetNumberAsDouble()) ? v->GetNumberAsDouble() : fallback;
+}
+
+// A number in a material extension's object, or `fallback`.
+double extension_number(const tinygltf::Material& m, const char* extension, const char* key, double fallback) {
+  const tinygltf::Value* e = material_extension(m, extension);
+  return e ? value_number(*e, key, fallback) : fallback;
 }
 
 // The older specular-glossiness model (KHR_materials_pbrSpecularGlossiness, archived by
@@ -121,9 +119,9 @@ ModelMaterial model_material(const tinygltf::Material& m, size_t index,
   const auto& pbr = m.pbrMetallicRoughness;
   if (pbr.baseColorFactor.size() >= 3)  // linear by the spec
     out.color_linear = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
-  const double metallic = pbr.metallicFactor * (metallic_roughness_mean ? (*metallic_roughness_mean)[2] : 1.0);
-  out.roughness = beckmann_from_gltf_roughness(pbr.roughnessFactor *
-                                               (metallic_roughness_mean ? (*metallic_roughness_mean)[1] : 1.0));
+  const Rgba texture_scale = metallic_roughness_mean.value_or(Rgba{1, 1, 1, 1});
+  const double metallic = pbr.metallicFactor * texture_scale[2];
+  out.roughness = beckmann_from_gltf_roughness(pbr.roughnessFactor * texture_scale[1]);
   out.ior = extension_number(m, "KHR_materials_ior", "ior", 1.5);
   const double transmission = extension_number(m, "KHR_materials_transmission", "transmissionFactor", 0.0);
   const double thickness = extension_number(m, "KHR_materials_volume", "thicknessFactor", 0.0);
@@ -329,7 +327,7 @@ class GltfReader {
             formatted(" is cut away whole: alphaMode MASK with alpha %.3g below its alphaCutoff "
                       "%.3g and no texture",
                       material.alpha_factor, material.alpha_cutoff));
-      if (is_metal_by_default(m, material, metallic_roughness_mean.has_value()))
+      if (!sg && is_metal_by_default(m, material, metallic_roughness_mean.has_value()))
         default_metals.push_back(quote_excerpt(material.name));
       out_.materials.push_back(std::move(material));
     }
@@ -350,21 +348,18 @@ class GltfReader {
   // glTF's default metallicFactor is 1, so a material that gives none is a metal, and
   // skylit's metals take their texture's mean colour: COLLADA2GLTF and other old
   // exporters wrote textured dielectrics so, and the texture vanished without a word.
+  // (A specular-glossiness material has its own model; the caller does not ask.)
   static bool is_metal_by_default(const tinygltf::Material& m, const ModelMaterial& material, bool metalness_texture) {
     return material.kind == ModelMaterial::Kind::metal && material.color_texture && !metalness_texture &&
-           m.values.count("metallicFactor") == 0 && material_extension(m, kSpecularGlossiness) == nullptr;
+           m.values.count("metallicFactor") == 0;
   }
 
   // One line for all of them (a model may have hundreds), naming the first few.
   void warn_of_default_metals(const std::vector<std::string>& names) {
     if (names.empty()) return;
-    constexpr size_t kNamed = 4;
-    std::string list;
-    for (size_t i = 0; i < std::min(names.size(), kNamed); ++i) list += (i ? ", " : "") + names[i];
-    if (names.size() > kNamed) list += " and " + std::to_string(names.size() - kNamed) + " more";
     const bool one = names.size() == 1;
     out_.read_warnings.push_back(
-        (one ? "material " : "materials ") + list + (one ? " gives" : " give") +
+        (one ? "material " : "materials ") + first_few(names, 4) + (one ? " gives" : " give") +
         " no metallicFactor: by glTF's default a metal, shown by its texture's mean colour "
         "only; if not metal, give \"metallicFactor\": 0 in the file or override (\"material_overrides\")");
   }
@@ -587,7 +582,7 @@ class GltfReader {
     if (triangles.empty() || set == uv_set_.end() || attribute == primitive.attributes.end()) {
       if (!triangles.empty() && set != uv_set_.end() && uvless_materials_.insert(material).second)
         out_.read_warnings.push_back("material " + quote_excerpt(out_.materials[static_cast<size_t>(material)].name) +
-                                     ": its texture reads " + "TEXCOORD_" + std::to_string(set->second) +
+                                     ": its texture reads TEXCOORD_" + std::to_string(set->second) +
                                      ", which a primitive using it does not have (shown untextured)");
       uvs.insert(uvs.end(), triangles.triangles.size(), CornerUvs{});
       return;

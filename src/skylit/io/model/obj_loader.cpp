@@ -249,11 +249,7 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
   }
   // Said unless a library was not found (which is warned of, and likely defines them).
   if (!undefined.empty() && model.missing_libraries.empty()) {
-    constexpr size_t kNamed = 4;
-    std::string list;
-    for (size_t i = 0; i < std::min(undefined.size(), kNamed); ++i) list += (i ? ", " : "") + undefined[i];
-    if (undefined.size() > kNamed) list += " and " + std::to_string(undefined.size() - kNamed) + " more";
-    model.read_warnings.push_back("usemtl " + list +
+    model.read_warnings.push_back("usemtl " + first_few(undefined, 4) +
                                   (obj.material_libraries.empty() ? ", but no mtllib" : ": in no mtllib") +
                                   " of the file; those faces take the object's material");
   }
