@@ -8,6 +8,8 @@
 
 #include "../test_support.h"
 #include "skylit/core/error.h"
+#include "skylit/io/scene/json_reader.h"
+#include "skylit/io/scene/scene_parts.h"
 
 namespace skylit {
 namespace {
@@ -104,8 +106,41 @@ TEST(SceneLoader, MissingRequiredPartIsNamed) {
 TEST(SceneLoader, UnknownMaterialListsTheKnownOnes) {
   const std::string msg =
       load_error(replace(testing::small_scene_json(), "\"material\": \"red\"", "\"material\": \"bricks\""));
-  EXPECT_NE(msg.find("objects[1].material: unknown material 'bricks'; known materials: red, white"), std::string::npos)
+  EXPECT_NE(msg.find("objects[1].material: unknown material 'bricks': neither in the scene's materials (red, white) "
+                     "nor a preset (tile, "),
+            std::string::npos)
       << msg;
+}
+
+// A scene of presets alone needs no `materials`: an object names a preset directly, and
+// the scene's own material of the same name wins over the preset.
+TEST(SceneLoader, ObjectsMayNamePresetsWithoutAMaterialsPart) {
+  TempDir dir;
+  std::string text = testing::small_scene_json();
+  const size_t from = text.find("\"materials\""), to = text.find("\"objects\"");
+  text.erase(from, to - from);
+  text = replace(replace(text, "\"material\": \"white\"", "\"material\": \"grass\""), "\"material\": \"red\"",
+                 "\"material\": \"grass\"");
+  const Scene scene = load_scene(dir.write("scene.json", text));
+  ASSERT_EQ(scene.materials.size(), 1u);  // one preset added once for both objects
+  EXPECT_EQ(scene.materials[0].name, "grass");
+  EXPECT_EQ(scene.objects[0].material_index, 0u);
+  EXPECT_EQ(scene.objects[1].material_index, 0u);
+  const Material grass = read_material(JsonReader(nlohmann::json("grass"), "test", "grass"));
+  ASSERT_TRUE(std::holds_alternative<DiffuseMaterial>(scene.materials[0].material));
+  const float preset_green = std::get<DiffuseMaterial>(grass).reflectance[17];  // 550–560 nm
+  EXPECT_EQ(std::get<DiffuseMaterial>(scene.materials[0].material).reflectance[17], preset_green);
+
+  // A scene material called "grass" is taken instead of the preset.
+  const Scene own = load_scene(
+      dir.write("own.json", replace(replace(testing::small_scene_json(), "\"white\": {",
+                                            "\"grass\": {\"type\": \"diffuse\", \"reflectance\": 0.5}, \"white\": {"),
+                                    "\"material\": \"red\"", "\"material\": \"grass\"")));
+  ASSERT_EQ(own.materials.size(), 3u);  // grass, red, white: no preset added
+  const SceneObject& box = own.objects[1];
+  EXPECT_EQ(own.materials[box.material_index].name, "grass");
+  EXPECT_FLOAT_EQ(std::get<DiffuseMaterial>(own.materials[box.material_index].material).reflectance[17], 0.5f);
+  EXPECT_NE(preset_green, 0.5f);
 }
 
 TEST(SceneLoader, MissingMeshFileNamesItsPath) {

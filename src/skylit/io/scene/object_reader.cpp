@@ -15,6 +15,7 @@
 #include "skylit/io/model/mesh_io.h"
 #include "skylit/io/scene/scene_parts.h"
 #include "skylit/material/model_material.h"
+#include "skylit/material/presets.h"
 
 namespace skylit {
 
@@ -34,12 +35,19 @@ std::optional<uint32_t> material_named(const std::string& name, const std::vecto
   return std::nullopt;
 }
 
-uint32_t find_material(const JsonReader& j, const std::vector<NamedMaterial>& materials) {
+// An object's material: one the scene's `materials` names, else a preset by its own name
+// (added to `materials` once, so that a scene of presets alone needs no `materials`).
+uint32_t find_material(const JsonReader& j, std::vector<NamedMaterial>& materials) {
   const std::string name = j.string();
   if (auto index = material_named(name, materials)) return *index;
+  if (find_material_preset(name)) {
+    materials.push_back({name, read_material(j)});
+    return static_cast<uint32_t>(materials.size() - 1);
+  }
   std::string known;
   for (const NamedMaterial& m : materials) known += (known.empty() ? "" : ", ") + m.name;
-  j.fail("unknown material '" + name + "'; known materials: " + (known.empty() ? "(none)" : known));
+  j.fail("unknown material '" + name + "': neither in the scene's materials (" + (known.empty() ? "none" : known) +
+         ") nor a preset (" + material_preset_names() + ")");
 }
 
 // Characters of a glob pattern that must match literally.

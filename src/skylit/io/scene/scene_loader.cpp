@@ -124,7 +124,7 @@ RenderSettings read_render(const JsonReader& j) {
 Scene scene_from_json(const nlohmann::json& document, const std::string& source,
                       const std::filesystem::path& base_dir) {
   const JsonReader root(document, source);
-  if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), materials, objects");
+  if (!root.is_object()) root.fail_expected("an object with camera, sun (or site and time), objects");
   root.allow_only({"camera",
                    "sun",
                    "site",
@@ -163,7 +163,8 @@ Scene scene_from_json(const nlohmann::json& document, const std::string& source,
   // A city model is placed around the scene's site, or else its own centre becomes the
   // site; never the weather station's, which may lie far away.
   std::optional<SiteLocation> site = read_scene_site(root);
-  scene.materials = read_materials(root.required("materials"));
+  // Optional: meshes may bring their own materials, and objects may name presets.
+  if (auto materials = root.optional("materials")) scene.materials = read_materials(*materials);
   std::vector<MaterialOverride> overrides;
   if (auto o = root.optional("material_overrides")) overrides = read_material_overrides(*o, scene.materials);
   scene.material_override_count = overrides.size();
