@@ -28,6 +28,21 @@ struct JpegState {
 
 void keep_quiet(j_common_ptr, int) {}  // warnings of recovered damage are not printed
 
+// CMYK texels (print files: photographs of materials from print catalogues are often
+// CMYK JPEGs) to RGB in place, as browsers and Pillow convert them without the file's
+// colour profile: each channel the share of light its ink and the black leave,
+// R = (1 − C)(1 − K). Photoshop, which writes the Adobe marker, stores the inks inverted
+// (255 is no ink). Only roughly the printed colour (no profile, no ink model), but the
+// texture's pattern and about its lightness, where libjpeg refused the file.
+void rgba_from_cmyk(std::vector<uint8_t>& texels, bool adobe_inverted) {
+  for (size_t i = 0; i + 3 < texels.size(); i += 4) {
+    auto left = [&](size_t channel) { return adobe_inverted ? texels[i + channel] : 255 - texels[i + channel]; };
+    const int black_left = left(3);
+    for (size_t c = 0; c < 3; ++c) texels[i + c] = static_cast<uint8_t>((left(c) * black_left + 127) / 255);
+    texels[i + 3] = 255;
+  }
+}
+
 enum class Decoded { ok, too_large, failed };
 
 // Everything between setjmp and longjmp happens here, in a frame holding no C++ object
@@ -51,13 +66,17 @@ Decoded decode_with_libjpeg(const unsigned char* bytes, size_t size, int max_sid
     jpeg_destroy_decompress(&info);
     return Decoded::too_large;
   }
-  info.out_color_space = JCS_EXT_RGBA;  // libjpeg-turbo's: grey and colour alike
+  // libjpeg-turbo's RGBA for grey and colour alike; its CMYK (four bytes a texel too) for
+  // CMYK and YCCK, which it cannot turn into RGB.
+  const bool cmyk = info.jpeg_color_space == JCS_CMYK || info.jpeg_color_space == JCS_YCCK;
+  info.out_color_space = cmyk ? JCS_CMYK : JCS_EXT_RGBA;
   jpeg_start_decompress(&info);
   out->rgba.assign(static_cast<size_t>(info.output_width) * info.output_height * 4, 0);
   while (info.output_scanline < info.output_height) {
     JSAMPROW row = out->rgba.data() + static_cast<size_t>(info.output_scanline) * info.output_width * 4;
     jpeg_read_scanlines(&info, &row, 1);
   }
+  if (cmyk) rgba_from_cmyk(out->rgba, info.saw_Adobe_marker != 0);
   jpeg_finish_decompress(&info);
   jpeg_destroy_decompress(&info);
   return Decoded::ok;

@@ -17,7 +17,8 @@ struct JpegTexels {
   std::vector<uint8_t> rgba;  // 8-bit, top row first, alpha 255
 };
 
-// Decodes JPEG bytes (grey, YCbCr or RGB; baseline or progressive) to RGBA. Throws
+// Decodes JPEG bytes (grey, YCbCr, RGB, or CMYK and YCCK converted without their colour
+// profile; baseline or progressive) to RGBA. Throws
 // InputError naming `where` when the bytes are not a JPEG libjpeg can decode or either
 // side exceeds `max_side` texels (refused from the header, before texels are
 // allocated). Damage libjpeg recovers from (a scan cut short) gives what it decoded.
