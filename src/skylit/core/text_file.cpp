@@ -72,6 +72,20 @@ std::string quote_excerpt(std::string_view text) {
   return out + "'";
 }
 
+std::string quote_name(std::string_view name) {
+  constexpr std::size_t kMaxShown = 120;
+  std::size_t shown = std::min(name.size(), kMaxShown);
+  // Back to a character's first byte (UTF-8 continuation bytes are 10xxxxxx).
+  while (shown < name.size() && shown > 0 && (static_cast<unsigned char>(name[shown]) & 0xC0) == 0x80) --shown;
+  std::string out = "'";
+  for (const char ch : name.substr(0, shown)) {
+    const auto byte = static_cast<unsigned char>(ch);
+    out += byte < 32 || byte == 127 ? '?' : ch;
+  }
+  if (shown < name.size()) out += "...";
+  return out + "'";
+}
+
 std::string first_few(const std::vector<std::string>& items, size_t named) {
   std::string list;
   for (size_t i = 0; i < std::min(items.size(), named); ++i) list += (i ? ", " : "") + items[i];

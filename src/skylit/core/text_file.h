@@ -37,6 +37,11 @@ void require_regular_file(const std::filesystem::path& file, const std::string& 
 // file named by mistake (/etc/passwd) is not copied to the terminal (item 16).
 std::string quote_excerpt(std::string_view text);
 
+// A name a user's file gives (a texture's file name, a material's) for a message: whole
+// up to 120 bytes, so that two long names that share their start stay told apart, in
+// single quotes; control characters as '?', UTF-8 kept (cut only between characters).
+std::string quote_name(std::string_view name);
+
 // The first `named` of `items` joined by ", ", then " and N more" for the rest: one
 // warning line for what a model may have hundreds of.
 std::string first_few(const std::vector<std::string>& items, size_t named);

@@ -184,10 +184,10 @@ std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
     if (!object.source) continue;  // boxes and planes are where the user put them
     check_model_placement(object, warnings);
     for (const std::string& library : object.source->missing_libraries)
-      warnings.push_back("object " + quoted(object.name) + ": material library " + quote_excerpt(library) +
+      warnings.push_back("object " + quoted(object.name) + ": material library " + quote_name(library) +
                          " not found beside its file; its faces take the object's material");
     for (const std::string& image : object.source->missing_images)
-      warnings.push_back("object " + quoted(object.name) + ": texture image " + quote_excerpt(image) +
+      warnings.push_back("object " + quoted(object.name) + ": texture image " + quote_name(image) +
                          " not found beside its file; its materials are used without it");
     for (const std::string& line : object.source->read_warnings)
       warnings.push_back("object " + quoted(object.name) + ": " + line);
