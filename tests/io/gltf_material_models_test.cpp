@@ -123,6 +123,22 @@ TEST(GltfMaterialModels, SpecularGlossinessBecomesACoatOrAMetal) {
   }
 }
 
+// KHR_materials_unlit (no reflection model: baked light) reads as a matte body of its
+// base colour, whatever its metallicFactor (Blender leaves the default 1), and is said.
+TEST(GltfMaterialModels, UnlitMaterialsAreMatteAndSaidSo) {
+  TempDir dir;
+  const LoadedModel model = load_quad(dir, R"({"name": "Orange", "pbrMetallicRoughness":
+      {"baseColorFactor": [1, 0.22, 0, 1]}, "extensions": {"KHR_materials_unlit": {}}})");
+  EXPECT_EQ(model.materials[0].kind, ModelMaterial::Kind::diffuse);
+  EXPECT_NEAR(model.materials[0].color_linear[1], 0.22, 1e-12);
+  ASSERT_EQ(model.read_warnings.size(), 1u);
+  EXPECT_NE(model.read_warnings[0].find("material 'Orange' (KHR_materials_unlit) read as matte"), std::string::npos)
+      << model.read_warnings[0];
+  // Without the extension the same material is the default's metal.
+  const LoadedModel lit = load_quad(dir, R"({"pbrMetallicRoughness": {"baseColorFactor": [1, 0.22, 0, 1]}})");
+  EXPECT_EQ(lit.materials[0].kind, ModelMaterial::Kind::metal);
+}
+
 // By the letter of glTF a material without metallicFactor is a metal, which skylit
 // shows by its texture's mean colour: read so, but said.
 TEST(GltfMaterialModels, ATexturedMaterialLeftAMetalByTheDefaultIsWarnedOf) {

@@ -7,6 +7,7 @@
 #include "gltf_quad_buffer.h"
 #include "skylit/core/base64.h"
 #include "skylit/io/image/image_encoders.h"
+#include "skylit/io/model/mesh_io.h"
 #include "skylit/io/model/texture_file.h"
 #include "skylit/io/scene/scene_loader.h"
 #include "skylit/render/prepared_scene.h"
@@ -57,6 +58,14 @@ void expect_color(const SurfacePoint& p, double r, double g, double b) {
   EXPECT_NEAR(p.color[2], b, 1e-4);
 }
 
+// As expect_color, where the texture is scaled twice across: the look-up's footprint
+// (the test ray's) then spans about a texel of this 2 × 2 image and mixes in up to a
+// tenth of its mip level's mean, far from the other texels' colours.
+void expect_about_color(const SurfacePoint& p, const std::array<double, 3>& rgb) {
+  ASSERT_TRUE(p.has_color);
+  for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(p.color[c], rgb[c], 0.15) << c;
+}
+
 TEST(ModelTextures, ObjMapKdAtKnownUvs) {
   TempDir dir;
   write_texture(dir, "tex.png");
@@ -90,13 +99,16 @@ TEST(ModelTextures, ObjMapKdAtKnownUvs) {
 // The test texture (red, green / blue, white) as a 24-bit BMP and an uncompressed TGA,
 // written here byte by byte from the formats' headers: both store the bottom row
 // first, and the texels as blue, green, red; a BMP pads each row to 4 bytes.
-std::string bmp_texture() {
+// `top_down`: the rows stored top first, as a negative height says (Windows' own
+// screenshots and some converters write them so).
+std::string bmp_texture(bool top_down = false) {
   const auto u32 = [](uint32_t v) { return std::string{char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; };
   const auto u16 = [](uint32_t v) { return std::string{char(v), char(v >> 8)}; };
-  const std::string rows = std::string("\xFF\x00\x00\xFF\xFF\xFF\x00\x00", 8) +  // blue, white, pad
-                           std::string("\x00\x00\xFF\x00\xFF\x00\x00\x00", 8);   // red, green, pad
-  return "BM" + u32(54 + 16) + u32(0) + u32(54) + u32(40) + u32(2) + u32(2) + u16(1) + u16(24) + u32(0) + u32(16) +
-         u32(2835) + u32(2835) + u32(0) + u32(0) + rows;
+  const std::string bottom = std::string("\xFF\x00\x00\xFF\xFF\xFF\x00\x00", 8);  // blue, white, pad
+  const std::string top = std::string("\x00\x00\xFF\x00\xFF\x00\x00\x00", 8);     // red, green, pad
+  return "BM" + u32(54 + 16) + u32(0) + u32(54) + u32(40) + u32(2) + u32(top_down ? uint32_t(-2) : 2) + u16(1) +
+         u16(24) + u32(0) + u32(16) + u32(2835) + u32(2835) + u32(0) + u32(0) +
+         (top_down ? top + bottom : bottom + top);
 }
 
 std::string tga_texture() {
@@ -139,7 +151,8 @@ TEST(ModelTextures, AJpegScanWithAnUndefinedHuffmanTableTakesTheStandardOne) {
 // Older OBJ exports (3ds Max, MilkShape, games) give BMP and TGA textures; a BMP stopped
 // the whole scene. Each reads the right way up.
 TEST(ModelTextures, BmpAndTgaTexturesAreReadTheRightWayUp) {
-  for (const auto& [name, bytes] : {std::pair{"tex.bmp", bmp_texture()}, std::pair{"tex.tga", tga_texture()}}) {
+  for (const auto& [name, bytes] : {std::pair{"tex.bmp", bmp_texture()}, std::pair{"top_down.bmp", bmp_texture(true)},
+                                    std::pair{"tex.tga", tga_texture()}}) {
     SCOPED_TRACE(name);
     TempDir dir;
     dir.write(name, bytes);
@@ -215,6 +228,89 @@ TEST(ModelTextures, GltfTextureTransformMovesTheTexture) {
   expect_color(point_below(prepared, 0.5, 0.5), 1, 0, 0);
   const Scene turned = with_transform(R"({"rotation": 1.5707963267948966})");
   expect_color(point_below(PreparedScene(turned), -0.5, 0.5), 0, 0, 1);
+}
+
+// A glTF sampler's wrapS (clamp to edge, mirrored repeat) holds outside [0, 1): with the
+// texture scaled twice across (KHR_texture_transform), x 0.25 and 0.75 on the quad read
+// u 1.25 and 1.75: repeated, the left and right texels of the top row (red, green);
+// clamped, the right edge twice (green, green); mirrored, the right then the left
+// (green, red).
+TEST(ModelTextures, GltfSamplerWrapModesHoldOutsideTheImage) {
+  TempDir dir;
+  write_texture(dir, "tex.png");
+  write_gltf(dir, "tex.png");
+  const std::string plain = testing::read_file(dir.path() / "quad.gltf");
+  auto with_sampler = [&](int wrap_s) {
+    std::string text = plain;
+    const std::string texture = R"("textures": [{"source": 0}])";
+    text.replace(text.find(texture), texture.size(),
+                 R"("textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": )" + std::to_string(wrap_s) +
+                     R"(, "wrapT": 10497}])");
+    const std::string from = R"("baseColorTexture": {"index": 0})";
+    text.replace(text.find(from), from.size(),
+                 R"("baseColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"scale": [2, 1]}}})");
+    dir.write("quad.gltf", text);
+    return load_scene(dir.write("scene.json", scene_json("quad.gltf", "y")));
+  };
+  struct Case {
+    int wrap_s;
+    std::array<double, 3> at_quarter, at_three_quarters;
+  };
+  for (const Case& c :
+       {Case{10497, {1, 0, 0}, {0, 1, 0}}, Case{33071, {0, 1, 0}, {0, 1, 0}}, Case{33648, {0, 1, 0}, {1, 0, 0}}}) {
+    SCOPED_TRACE(c.wrap_s);
+    const Scene scene = with_sampler(c.wrap_s);
+    const PreparedScene prepared(scene);
+    expect_about_color(point_below(prepared, 0.25, 0.5), c.at_quarter);
+    expect_about_color(point_below(prepared, 0.75, 0.5), c.at_three_quarters);
+  }
+}
+
+// MTL texture options: -s and -o scale and move the texture coordinates (u' = s·u + o,
+// Blender's tiling), -clamp on holds the edge texels outside [0, 1). On the quad, u runs
+// 0 to 1 from x −1 to 1 (the top row: red, green).
+TEST(ModelTextures, MtlScaleOffsetAndClampOptions) {
+  struct Case {
+    std::string options;
+    double x;
+    std::array<double, 3> colour;
+  };
+  for (const Case& c : {Case{"-s 2 1 1", 0.25, {1, 0, 0}}, Case{"-s 2 1 1", 0.75, {0, 1, 0}},
+                        Case{"-clamp on -s 2 1 1", 0.25, {0, 1, 0}}, Case{"-o 0.5 0 0", -0.5, {0, 1, 0}},
+                        Case{"-o 0.5 0 0", 0.5, {1, 0, 0}}, Case{"", 0.5, {0, 1, 0}}}) {
+    SCOPED_TRACE(c.options + " at x " + std::to_string(c.x));
+    TempDir dir;
+    write_texture(dir, "tex.png");
+    dir.write("quad.mtl", "newmtl Painted\nKd 1 1 1\nmap_Kd " + c.options + " tex.png\n");
+    write_obj_quad(dir);
+    const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.obj", "z")));
+    const PreparedScene prepared(scene);
+    expect_about_color(point_below(prepared, c.x, 0.5), c.colour);
+  }
+}
+
+// A texture whose image only EXT_texture_webp (or KHR_texture_basisu) gives is not
+// read, and said once; with a PNG fallback as its source the fallback is read.
+TEST(ModelTextures, ImagesOnlyAnExtensionGivesAreSaidNotSilentlyDropped) {
+  TempDir dir;
+  write_texture(dir, "tex.png");
+  write_gltf(dir, "tex.png");
+  const std::string plain = testing::read_file(dir.path() / "quad.gltf");
+  auto with_textures = [&](const std::string& textures) {
+    std::string text = plain;
+    const std::string from = R"("textures": [{"source": 0}])";
+    text.replace(text.find(from), from.size(), R"("textures": )" + textures);
+    return load_model_file(dir.write("quad.gltf", text), UpAxis::y);
+  };
+  const LoadedModel webp_only = with_textures(R"([{"extensions": {"EXT_texture_webp": {"source": 0}}}])");
+  EXPECT_EQ(webp_only.materials[0].color_texture, nullptr);
+  ASSERT_EQ(webp_only.read_warnings.size(), 1u);
+  EXPECT_NE(webp_only.read_warnings[0].find("textures given only by EXT_texture_webp are not read"), std::string::npos)
+      << webp_only.read_warnings[0];
+  const LoadedModel with_fallback =
+      with_textures(R"([{"source": 0, "extensions": {"EXT_texture_webp": {"source": 0}}}])");
+  EXPECT_NE(with_fallback.materials[0].color_texture, nullptr);
+  EXPECT_TRUE(with_fallback.read_warnings.empty());
 }
 
 TEST(ModelTextures, AMissingImageIsListedAndABrokenOneIsAnError) {

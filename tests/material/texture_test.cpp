@@ -43,6 +43,32 @@ TEST(Texture, TexelCentresReadBackAndDecodeSrgb) {
   EXPECT_NEAR(data.bilinear(0, 0.3, 0.3)[0], 128 / 255.0, 1e-6);
 }
 
+// Outside [0, 1): repeated, the edge stretched on, or mirrored at each whole number,
+// each axis as set. A 2 × 1 texture, left texel 1 and right 0 (linear data).
+TEST(Texture, WrapModesOutsideTheImage) {
+  const Texture repeated(2, 1, {255, 0, 0, 255, 0, 0, 0, 255}, TextureEncoding::linear);
+  const Texture clamped = repeated.with_wrap(TextureWrap::clamp_to_edge, TextureWrap::repeat);
+  const Texture mirrored = repeated.with_wrap(TextureWrap::mirrored_repeat, TextureWrap::repeat);
+  struct Case {
+    double u;
+    float repeat, clamp, mirror;
+  };
+  // Left texel centre at u 0.25, right at 0.75.
+  for (const Case& c : {Case{1.25, 1, 0, 0}, Case{1.75, 0, 0, 1}, Case{-0.25, 0, 1, 1}, Case{-1.25, 0, 1, 0},
+                        Case{2.25, 1, 0, 1}, Case{0.25, 1, 1, 1}}) {
+    SCOPED_TRACE(c.u);
+    EXPECT_NEAR(repeated.bilinear(0, c.u, 0.5)[0], c.repeat, 1e-6);
+    EXPECT_NEAR(clamped.bilinear(0, c.u, 0.5)[0], c.clamp, 1e-6);
+    EXPECT_NEAR(mirrored.bilinear(0, c.u, 0.5)[0], c.mirror, 1e-6);
+  }
+  // At a fold the neighbour is the edge texel itself: u = 1 reads the right texel alone.
+  EXPECT_NEAR(mirrored.bilinear(0, 1.0, 0.5)[0], 0, 1e-6);
+  EXPECT_NEAR(clamped.bilinear(0, 1e6, 0.5)[0], 0, 1e-6);
+  // The other axis keeps its own mode, and the mean is the image's.
+  EXPECT_EQ(clamped.wrap_v(), TextureWrap::repeat);
+  EXPECT_NEAR(clamped.mean()[0], 0.5, 1e-2);
+}
+
 TEST(Texture, MipLevelsKeepTheMean) {
   // Black and white average to linear 0.5 (sRGB 188 after rounding, decoded 0.5029): the
   // last level's mean within one 8-bit step of it.

@@ -25,6 +25,28 @@ int wrap(int i, int n) {
   return r < 0 ? r + n : r;
 }
 
+// A coordinate in [0, 1] for `wrap` (repeat's in [0, 1), mirrored's folded at each whole
+// number), and the texel index a bilinear tap i stands for on an axis of n texels.
+double wrapped_coordinate(double x, TextureWrap mode) {
+  switch (mode) {
+    case TextureWrap::repeat:
+      return x - std::floor(x);
+    case TextureWrap::clamp_to_edge:
+      return std::clamp(x, 0.0, 1.0);
+    case TextureWrap::mirrored_repeat: {
+      const double period = x - 2 * std::floor(x / 2);  // in [0, 2)
+      return period <= 1 ? period : 2 - period;
+    }
+  }
+  return 0;
+}
+
+int wrapped_index(int i, int n, TextureWrap mode) {
+  // Mirrored coordinates lie in [0, 1]: at the fold the neighbour is the edge texel
+  // itself, as clamping gives.
+  return mode == TextureWrap::repeat ? wrap(i, n) : std::clamp(i, 0, n - 1);
+}
+
 }  // namespace
 
 Texture::Texture(int width, int height, std::vector<uint8_t> rgba, TextureEncoding encoding) : encoding_(encoding) {
@@ -60,6 +82,13 @@ Texture::Texture(int width, int height, std::vector<uint8_t> rgba, TextureEncodi
   }
 }
 
+Texture Texture::with_wrap(TextureWrap u, TextureWrap v) const {
+  Texture out = *this;
+  out.wrap_u_ = u;
+  out.wrap_v_ = v;
+  return out;
+}
+
 size_t Texture::bytes() const {
   size_t total = 0;
   for (const Level& l : levels_) total += l.rgba.size();
@@ -78,7 +107,7 @@ Rgba Texture::bilinear(int level, double u, double v) const {
   const Level& l = levels_[static_cast<size_t>(level)];
   if (!std::isfinite(u) || !std::isfinite(v)) u = v = 0;
   // Texel centres at (i + ½) / size; the repeat is applied per texel index.
-  const double fx = (u - std::floor(u)) * l.width - 0.5, fy = (v - std::floor(v)) * l.height - 0.5;
+  const double fx = wrapped_coordinate(u, wrap_u_) * l.width - 0.5, fy = wrapped_coordinate(v, wrap_v_) * l.height - 0.5;
   const double x0 = std::floor(fx), y0 = std::floor(fy);
   const float tx = static_cast<float>(fx - x0), ty = static_cast<float>(fy - y0);
   const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
@@ -86,7 +115,7 @@ Rgba Texture::bilinear(int level, double u, double v) const {
   for (int dy = 0; dy <= 1; ++dy)
     for (int dx = 0; dx <= 1; ++dx) {
       const float w = (dx ? tx : 1 - tx) * (dy ? ty : 1 - ty);
-      const Rgba t = texel(level, wrap(ix + dx, l.width), wrap(iy + dy, l.height));
+      const Rgba t = texel(level, wrapped_index(ix + dx, l.width, wrap_u_), wrapped_index(iy + dy, l.height, wrap_v_));
       for (size_t c = 0; c < 4; ++c) out[c] += w * t[c];
     }
   return out;

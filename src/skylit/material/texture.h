@@ -25,6 +25,11 @@ using Rgba = std::array<float, 4>;  // linear (colour textures decoded from sRGB
 // as glTF and image files have them), data linearly (roughness, normals).
 enum class TextureEncoding { srgb, linear };
 
+// What lies outside [0, 1) along one texture axis (glTF's sampler wrapS and wrapT; MTL's
+// -clamp): the image repeated, its edge texels stretched on, or the image mirrored at
+// each whole coordinate.
+enum class TextureWrap { repeat, clamp_to_edge, mirrored_repeat };
+
 class Texture {
  public:
   static constexpr int kMaxAnisotropy = 8;
@@ -44,8 +49,15 @@ class Texture {
   // The mean over the whole texture (its last, 1 × 1 level).
   Rgba mean() const { return texel(levels() - 1, 0, 0); }
 
+  // The same texels read with other wraps (a copy; the same image may be read through
+  // several glTF samplers).
+  Texture with_wrap(TextureWrap u, TextureWrap v) const;
+  TextureWrap wrap_u() const { return wrap_u_; }
+  TextureWrap wrap_v() const { return wrap_v_; }
+
   // Bilinear at (u, v) on one level; u, v in [0, 1) across the image (u to the right, v
-  // down from the top row), repeated outside.
+  // down from the top row), wrapped outside as wrap_u and wrap_v say (repeated unless
+  // set otherwise).
   Rgba bilinear(int level, double u, double v) const;
   // Filtered over the footprint whose axes are (du_a, dv_a) and (du_b, dv_b) in uv
   // units, centred on (u, v). A zero footprint is a bilinear look-up on the finest level.
@@ -60,6 +72,7 @@ class Texture {
 
   std::vector<Level> levels_;
   TextureEncoding encoding_;
+  TextureWrap wrap_u_ = TextureWrap::repeat, wrap_v_ = TextureWrap::repeat;
 };
 
 }  // namespace skylit

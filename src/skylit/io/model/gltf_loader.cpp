@@ -30,6 +30,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -55,6 +56,7 @@ bool harmless_extension(const std::string& name) {
 }
 
 constexpr const char* kSpecularGlossiness = "KHR_materials_pbrSpecularGlossiness";
+constexpr const char* kUnlit = "KHR_materials_unlit";
 
 // A material extension's object, or null.
 const tinygltf::Value* material_extension(const tinygltf::Material& m, const char* extension) {
@@ -134,6 +136,10 @@ ModelMaterial model_material(const tinygltf::Material& m, size_t index,
     out.kind = ModelMaterial::Kind::coated;
   }
   if (const tinygltf::Value* sg = material_extension(m, kSpecularGlossiness)) read_specular_glossiness(*sg, out);
+  // An unlit material (KHR_materials_unlit: baked light, photogrammetry, signs) has no
+  // reflection model to keep; its base colour is read as a matte body's, lit by the
+  // scene (its metallic factors, often left at the default 1, ignored).
+  if (material_extension(m, kUnlit)) out.kind = ModelMaterial::Kind::diffuse;
   // emissiveFactor × KHR_materials_emissive_strength, taken as cd/m²
   // (docs/model-materials.md).
   const double strength = extension_number(m, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
@@ -163,7 +169,7 @@ bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const 
                     : std::filesystem::file_size(path, ec) > kMaxMeshFileBytes ? "larger than the limit of 1 GiB"
                                                                                : nullptr;
   if (why != nullptr) {
-    if (err) *err += "file " + quote_excerpt(std::filesystem::path(path).filename().string()) + ": " + why + "\n";
+    if (err) *err += "file " + quote_name(std::filesystem::path(path).filename().string()) + ": " + why + "\n";
     return false;
   }
   return tinygltf::ReadWholeFile(out, err, path, nullptr);
@@ -295,7 +301,7 @@ class GltfReader {
   GltfReader(const tinygltf::Model& model, std::string name, const ImageBytes& images, std::filesystem::path folder)
       : model_(model), name_(std::move(name)), images_(images), folder_(std::move(folder)) {
     for (const tinygltf::Buffer& buffer : model_.buffers) buffer_bytes_ += buffer.data.size();
-    std::vector<std::string> default_metals;
+    std::vector<std::string> default_metals, unlit;
     for (size_t i = 0; i < model_.materials.size(); ++i) {
       const tinygltf::Material& m = model_.materials[i];
       const auto& pbr = m.pbrMetallicRoughness;
@@ -323,15 +329,21 @@ class GltfReader {
       set_alpha(m, material, sg);
       if (material.alpha_cutoff > 0 && !material.alpha_texture && material.alpha_factor < material.alpha_cutoff)
         out_.read_warnings.push_back(
-            "material " + quote_excerpt(material.name) +
+            "material " + quote_name(material.name) +
             formatted(" is cut away whole: alphaMode MASK with alpha %.3g below its alphaCutoff "
                       "%.3g and no texture",
                       material.alpha_factor, material.alpha_cutoff));
       if (!sg && is_metal_by_default(m, material, metallic_roughness_mean.has_value()))
-        default_metals.push_back(quote_excerpt(material.name));
+        default_metals.push_back(quote_name(material.name));
+      if (material_extension(m, kUnlit)) unlit.push_back(quote_name(material.name));
       out_.materials.push_back(std::move(material));
     }
     warn_of_default_metals(default_metals);
+    if (!unlit.empty())
+      out_.read_warnings.push_back(
+          (unlit.size() == 1 ? "material " : "materials ") + first_few(unlit, 4) +
+          " (KHR_materials_unlit) read as matte surfaces of their base colour, lit by the scene's sun and sky: an "
+          "unlit look (light baked into the texture) is not kept");
   }
 
   // A textureInfo inside an extension's object: its texture index (−1 for none) and
@@ -581,7 +593,7 @@ class GltfReader {
         primitive.attributes.find("TEXCOORD_" + std::to_string(set == uv_set_.end() ? 0 : set->second));
     if (triangles.empty() || set == uv_set_.end() || attribute == primitive.attributes.end()) {
       if (!triangles.empty() && set != uv_set_.end() && uvless_materials_.insert(material).second)
-        out_.read_warnings.push_back("material " + quote_excerpt(out_.materials[static_cast<size_t>(material)].name) +
+        out_.read_warnings.push_back("material " + quote_name(out_.materials[static_cast<size_t>(material)].name) +
                                      ": its texture reads TEXCOORD_" + std::to_string(set->second) +
                                      ", which a primitive using it does not have (shown untextured)");
       uvs.insert(uvs.end(), triangles.triangles.size(), CornerUvs{});
@@ -635,7 +647,10 @@ class GltfReader {
 
   // Material `index` reads TEXCOORD_`set`, or the set and transform its textureInfo's
   // KHR_texture_transform gives: uv' = T(offset) R(rotation) S(scale) (u, v, 1), with
-  // R = [cos r, sin r; −sin r, cos r] as the extension's specification writes it.
+  // R = [cos r, sin r; −sin r, cos r] (row by row), the rotation of the extension's
+  // sample model, Khronos' and Blender's importers, three.js and Babylon. The GLSL
+  // listing in the extension's text, read column by column as GLSL reads it, turns the
+  // other way: a known error of the listing (KhronosGroup/glTF issue 1563).
   void use_uvs_of(int32_t index, int set, const tinygltf::ExtensionMap& extensions) {
     uv_set_[index] = set;
     uv_transform_.erase(index);
@@ -660,14 +675,48 @@ class GltfReader {
 
   // The texture a material's textureInfo names, decoded once per image; null for none,
   // and for an image file that cannot be found (listed as missing).
+  // Read through the texture's sampler's wrapS and wrapT (glTF 2.0 §5.26; repeat by
+  // default); the filters are the renderer's own (texture.h).
   std::shared_ptr<const Texture> texture(int index, TextureEncoding encoding) {
     if (index < 0) return nullptr;
     if (static_cast<size_t>(index) >= model_.textures.size())
       fail("a material refers to texture " + std::to_string(index) + " which does not exist");
-    const int source = model_.textures[static_cast<size_t>(index)].source;
-    if (source < 0) return nullptr;  // an extension's image source (WebP, KTX2): not read
+    const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(index)];
+    if (texture.source < 0) {
+      warn_of_unread_image_extensions(texture);
+      return nullptr;
+    }
+    std::shared_ptr<const Texture> image = image_texture(texture.source, encoding);
+    if (!image || texture.sampler < 0 || static_cast<size_t>(texture.sampler) >= model_.samplers.size()) return image;
+    const tinygltf::Sampler& sampler = model_.samplers[static_cast<size_t>(texture.sampler)];
+    const TextureWrap u = wrap_of(sampler.wrapS), v = wrap_of(sampler.wrapT);
+    if (u == TextureWrap::repeat && v == TextureWrap::repeat) return image;
+    auto [it, added] = wrapped_textures_.try_emplace({texture.source, encoding, u, v});
+    if (added) it->second = std::make_shared<const Texture>(image->with_wrap(u, v));
+    return it->second;
+  }
+
+  static TextureWrap wrap_of(int gl_wrap) {
+    if (gl_wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::clamp_to_edge;
+    if (gl_wrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::mirrored_repeat;
+    return TextureWrap::repeat;
+  }
+
+  // A texture whose image only an extension gives (WebP, KTX2 with Basis Universal,
+  // AVIF; with a PNG or JPEG fallback `source` is that and is read): said once per
+  // extension, as its materials then show their colour factors alone.
+  void warn_of_unread_image_extensions(const tinygltf::Texture& texture) {
+    for (const auto& [extension, value] : texture.extensions)
+      if (value.IsObject() && value.Has("source") && unread_image_extensions_.insert(extension).second)
+        out_.read_warnings.push_back("textures given only by " + extension +
+                                     " are not read (skylit reads PNG, JPEG, BMP and TGA): their materials "
+                                     "show their colour factors alone; export the images as PNG or JPEG");
+  }
+
+  // The texture of image `source`, decoded once per encoding.
+  std::shared_ptr<const Texture> image_texture(int source, TextureEncoding encoding) {
     if (static_cast<size_t>(source) >= model_.images.size())
-      fail("texture " + std::to_string(index) + " refers to image " + std::to_string(source) + " which does not exist");
+      fail("a texture refers to image " + std::to_string(source) + " which does not exist");
     auto [it, added] = textures_.try_emplace({source, encoding});
     if (!added) return it->second;
     const tinygltf::Image& image = model_.images[static_cast<size_t>(source)];
@@ -791,6 +840,9 @@ class GltfReader {
   const ImageBytes& images_;
   std::filesystem::path folder_;
   std::map<std::pair<int, TextureEncoding>, std::shared_ptr<const Texture>> textures_;  // by image
+  std::map<std::tuple<int, TextureEncoding, TextureWrap, TextureWrap>, std::shared_ptr<const Texture>>
+      wrapped_textures_;  // by image and sampler wraps other than repeat
+  std::set<std::string> unread_image_extensions_;
   std::map<int32_t, int> uv_set_;       // by material: its texture's TEXCOORD set
   std::set<int32_t> uvless_materials_;  // warned of: a primitive lacks their TEXCOORD set
   // By material: its texture's KHR_texture_transform, uv' = M (u, v, 1), row-major 2 × 3.

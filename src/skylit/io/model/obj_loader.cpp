@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <tiny_obj_loader.h>
@@ -157,10 +158,18 @@ class ObjTextures {
   ObjTextures(std::filesystem::path folder, std::vector<std::string>& missing)
       : folder_(std::move(folder)), missing_(missing) {}
 
-  std::shared_ptr<const Texture> get(const std::string& name, TextureEncoding encoding = TextureEncoding::srgb) {
+  // `clamp`: the map's -clamp on (its edge texels outside [0, 1], not the image repeated).
+  std::shared_ptr<const Texture> get(const std::string& name, TextureEncoding encoding = TextureEncoding::srgb,
+                                     bool clamp = false) {
     if (name.empty()) return nullptr;
-    auto [it, added] = cache_.try_emplace({name, encoding});
+    auto [it, added] = cache_.try_emplace({name, encoding, clamp});
     if (!added) return it->second;
+    if (clamp) {
+      if (const std::shared_ptr<const Texture> repeated = get(name, encoding))
+        it->second = std::make_shared<const Texture>(
+            repeated->with_wrap(TextureWrap::clamp_to_edge, TextureWrap::clamp_to_edge));
+      return it->second;
+    }
     std::error_code ec;
     const std::filesystem::path file = beside(folder_, name);
     if (std::filesystem::is_regular_file(file, ec))
@@ -173,8 +182,20 @@ class ObjTextures {
  private:
   std::filesystem::path folder_;
   std::vector<std::string>& missing_;
-  std::map<std::pair<std::string, TextureEncoding>, std::shared_ptr<const Texture>> cache_;
+  std::map<std::tuple<std::string, TextureEncoding, bool>, std::shared_ptr<const Texture>> cache_;
 };
+
+// A map's -s and -o (scale and origin offset of its texture coordinates, u' = s·u + o, as
+// Blender writes a material's mapping), taken from map_Kd for every map of the material.
+struct UvScaleOffset {
+  float su = 1, sv = 1, ou = 0, ov = 0;
+};
+
+UvScaleOffset uv_scale_offset(const tinyobj::texture_option_t& option) {
+  auto finite_or = [](double x, float fallback) { return std::isfinite(x) ? static_cast<float>(x) : fallback; };
+  return {finite_or(option.scale[0], 1), finite_or(option.scale[1], 1), finite_or(option.origin_offset[0], 0),
+          finite_or(option.origin_offset[1], 0)};
+}
 
 // Whether a texture holds a tangent-space normal map rather than a height (bump) map:
 // MTL's map_Bump names either, and exporters (Blender's among them) write normal maps
@@ -215,18 +236,20 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
   const std::vector<MtlDefinition> definitions = mtl_definitions(libraries);
 
   ObjTextures textures(path.parent_path(), model.missing_images);
+  std::vector<UvScaleOffset> uv_transforms;  // per material
   for (size_t i = 0; i < materials.size(); ++i) {
     tinyobj::material_t m = materials[i];
     if (i < definitions.size() && tr_is_meshlab_opacity(m, definitions[i])) {
       model.read_warnings.push_back(
-          "material library " + quote_excerpt(definitions[i].library) + ", material '" + m.name + "'" +
+          "material library " + quote_name(definitions[i].library) + ", material " + quote_name(m.name) +
           formatted(": Tr %g without d read as MeshLab writes it, an opacity (opaque), not as 1 − d (clear glass)",
                     1.0 - m.dissolve));
       m.dissolve = 1;
     }
     ModelMaterial material = model_material(m);
-    material.color_texture = textures.get(m.diffuse_texname);
-    material.emission_texture = textures.get(m.emissive_texname);
+    material.color_texture = textures.get(m.diffuse_texname, TextureEncoding::srgb, m.diffuse_texopt.clamp);
+    material.emission_texture = textures.get(m.emissive_texname, TextureEncoding::srgb, m.emissive_texopt.clamp);
+    uv_transforms.push_back(uv_scale_offset(m.diffuse_texopt));
     set_alpha_map(m.alpha_texname, textures, material);
     const bool normal_map = !m.normal_texname.empty();
     const std::string& normals = normal_map ? m.normal_texname : m.bump_texname;
@@ -245,7 +268,7 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
     auto it = material_ids.find(used);
     if (it == material_ids.end()) it = material_ids.find(used.substr(0, used.find_first_of(" \t")));
     material_of_name.push_back(it == material_ids.end() ? LoadedModel::kNoMaterial : it->second);
-    if (it == material_ids.end() && !used.empty()) undefined.push_back(quote_excerpt(used));
+    if (it == material_ids.end() && !used.empty()) undefined.push_back(quote_name(used));
   }
   // Said unless a library was not found (which is warned of, and likely defines them).
   if (!undefined.empty() && model.missing_libraries.empty()) {
@@ -257,10 +280,11 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
   const auto& texcoords = obj.texcoords;
   // A corner's (u, v), v turned over (OBJ's v runs up from the image's bottom row);
   // zero for a corner without one.
-  const auto uv = [&](const ObjCorner& corner) -> std::array<float, 2> {
+  // The material's -s and -o are applied before the turn.
+  const auto uv = [&](const ObjCorner& corner, const UvScaleOffset& t) -> std::array<float, 2> {
     if (corner.texcoord < 0 || static_cast<size_t>(corner.texcoord) >= texcoords.size()) return {0.0f, 0.0f};
     const auto [u, v] = texcoords[static_cast<size_t>(corner.texcoord)];
-    return {std::isfinite(u) ? u : 0.0f, std::isfinite(v) ? 1.0f - v : 0.0f};
+    return {std::isfinite(u) ? t.su * u + t.ou : 0.0f, std::isfinite(v) ? 1.0f - (t.sv * v + t.ov) : 0.0f};
   };
   const bool any_uv = !texcoords.empty();
   const auto& file_normals = obj.normals;
@@ -306,13 +330,17 @@ LoadedModel load_obj_file(const std::filesystem::path& path) {
     const ObjCorner* corners = obj.corners.data() + first;
     const int32_t named = obj.face_material_names[f];
     const int32_t material = named < 0 ? LoadedModel::kNoMaterial : material_of_name[static_cast<size_t>(named)];
+    const UvScaleOffset& uv_transform =
+        material == LoadedModel::kNoMaterial ? UvScaleOffset{} : uv_transforms[static_cast<size_t>(material)];
     const size_t before = mesh.triangles.size();
     face.clear();
     rings[0].clear();
     for (size_t k = 0; k < n; ++k) face.push_back(vertex(corners[k]));
     const auto add = [&](size_t a, size_t b, size_t c) {
       mesh.triangles.push_back({face[a], face[b], face[c]});
-      if (any_uv) model.corner_uvs.push_back({uv(corners[a]), uv(corners[b]), uv(corners[c])});
+      if (any_uv)
+        model.corner_uvs.push_back(
+            {uv(corners[a], uv_transform), uv(corners[b], uv_transform), uv(corners[c], uv_transform)});
       if (any_normal) model.corner_normals.push_back({normal(corners[a]), normal(corners[b]), normal(corners[c])});
     };
     if (n == 3) {

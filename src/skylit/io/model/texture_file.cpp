@@ -84,6 +84,10 @@ std::shared_ptr<const Texture> decode_texture(const unsigned char* bytes, size_t
   }
   if (!stbi_info_from_memory(bytes, static_cast<int>(size), &width, &height, &channels))
     throw InputError(where + ": not a PNG, JPEG, BMP or TGA image, or a damaged one (" + stbi_failure_reason() + ")");
+  // A BMP stored top row first gives its height negative; stb_image 2.27's info passes
+  // the sign on (its load turns the rows right).
+  const bool bmp = size >= 2 && bytes[0] == 'B' && bytes[1] == 'M';
+  if (bmp && height < 0 && height >= -kMaxTextureSide) height = -height;
   if (width <= 0 || height <= 0 || width > kMaxTextureSide || height > kMaxTextureSide)
     throw InputError(where + ": the image is " + std::to_string(width) + " × " + std::to_string(height) +
                      " texels; at most " + std::to_string(kMaxTextureSide) + " a side is read");
