@@ -9,6 +9,8 @@
 #include "../io/epw_fixture.h"
 #include "../test_support.h"
 #include "skylit/atmosphere/atmosphere.h"
+#include "skylit/atmosphere/optical_properties.h"
+#include "skylit/io/scene/scene_report.h"
 #include "skylit/spectrum/cie.h"
 #include "skylit/sun/solar_position.h"
 
@@ -153,11 +155,16 @@ TEST(WeatherConditions, OpaqueCoverBeyondTheTotalIsSaid) {
   EXPECT_FALSE(consistent_said);
 }
 
-// A visibility of 999 km, which files write for "unlimited", leaves the scene's aerosol
-// (taken literally it is beyond clean air's own, about 320 km at 550 nm, and gave none);
-// 200 km gives a small one.
+// A visibility beyond clean air's own (about 320 km at 550 nm), which files write for
+// "unlimited" (999 km, TMYx's 777.7 and 1600 km), leaves the scene's aerosol (taken
+// literally it gave none; a cut at 999 alone made 998 km aerosol-free and 999 hazy);
+// 200 and 300 km give small ones, the clearer the less.
 TEST(WeatherConditions, AnUnlimitedVisibilityLeavesTheAerosol) {
-  for (const auto& [visibility, unchanged] : {std::pair{"999.0", true}, std::pair{"200.0", false}}) {
+  EXPECT_NEAR(clean_air_visibility_km(), 320, 10);
+  double previous_aod = 1;
+  for (const auto& [visibility, unchanged] : {std::pair{"200.0", false}, std::pair{"300.0", false},
+                                              std::pair{"777.7", true}, std::pair{"998.0", true},
+                                              std::pair{"999.0", true}, std::pair{"1600.0", true}}) {
     EpwRecordFields night;
     night.day = 26, night.hour = 1, night.visibility = visibility;
     night.ghi = night.dni = night.dhi = night.gh_lux = night.dn_lux = night.dh_lux = "0";
@@ -168,10 +175,43 @@ TEST(WeatherConditions, AnUnlimitedVisibilityLeavesTheAerosol) {
     if (unchanged) {
       EXPECT_EQ(scene.atmosphere.aerosol.aod_550, 0.123) << visibility;
     } else {
-      EXPECT_GT(scene.atmosphere.aerosol.aod_550, 0.001) << visibility;
-      EXPECT_LT(scene.atmosphere.aerosol.aod_550, 0.05) << visibility;
+      EXPECT_GT(scene.atmosphere.aerosol.aod_550, 0.0001) << visibility;
+      EXPECT_LT(scene.atmosphere.aerosol.aod_550, std::min(0.05, previous_aod)) << visibility;
+      previous_aod = scene.atmosphere.aerosol.aod_550;
     }
   }
+}
+
+// A file that gives irradiances alone (PVGIS) with 0 W/m² in every field while the sun
+// is up: no light, whatever the efficacy, so an overcast sky of 0 lx, not the scene's
+// clear sky as for a missing value. (Such a record is not physical, a gap filled with
+// zeros, and `skylit info` says so: SceneReport tests.)
+TEST(WeatherConditions, ZeroIrradianceWithoutIlluminancesIsNoLightNotMissing) {
+  // No illuminance in the whole file, so no efficacy of its own either.
+  EpwRecordFields sunny, dark;
+  sunny.gh_lux = sunny.dn_lux = sunny.dh_lux = "999999";  // missing
+  dark = sunny;
+  dark.day = 26;
+  dark.ghi = dark.dni = dark.dhi = "0";
+  const EpwFile file = parse_epw(testing::epw_header() + epw_record(sunny) + epw_record(dark), "fixture.epw");
+  Scene scene;
+  apply_weather_hour(file, epw_hour_containing(file, 6, 26, 13, 0, "test"), scene);
+  ASSERT_TRUE(scene.weather.has_value());
+  EXPECT_GT(scene.weather->sun_altitude_deg, 30);
+  ASSERT_TRUE(scene.weather->file_global_horizontal_lux.has_value());
+  EXPECT_EQ(*scene.weather->file_global_horizontal_lux, 0.0);
+  ASSERT_TRUE(scene.atmosphere.cie_sky.has_value());
+  EXPECT_EQ(scene.atmosphere.cie_sky->diffuse_horizontal_lux, 0.0);
+  const auto said = [](const Scene& s) {
+    for (const std::string& w : scene_warnings(s, false))
+      if (w.find("gives no daylight (0 lx global horizontal) with the sun") != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_TRUE(said(scene));
+  // A sunlit record of the same file is not warned of.
+  Scene lit;
+  apply_weather_hour(file, epw_hour_containing(file, 6, 21, 13, 0, "test"), lit);
+  EXPECT_FALSE(said(lit));
 }
 
 TEST(WeatherConditions, TheSceneFileTakesAnHourAndInfoReportsIt) {

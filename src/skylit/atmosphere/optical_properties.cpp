@@ -90,11 +90,18 @@ double rayleigh_optical_depth_sea_level(double wavelength_nm) {
   return rayleigh_cross_section_m2(wavelength_nm) * 1e4 * column_per_cm2;
 }
 
+namespace {
+// Koschmieder's constant: −ln 0.02, the 2 % contrast threshold.
+constexpr double kKoschmieder = 3.912;
+double rayleigh_extinction_550_per_m() { return rayleigh_optical_depth_sea_level(550.0) / 7994.0; }
+}  // namespace
+
 double aod_550_from_visibility(double visibility_km, double aerosol_scale_height_m) {
-  const double ground_extinction = 3.912 / (visibility_km * 1e3);  // 2 % contrast threshold
-  const double rayleigh = rayleigh_optical_depth_sea_level(550.0) / 7994.0;
-  return std::max(0.0, ground_extinction - rayleigh) * aerosol_scale_height_m;
+  const double ground_extinction = kKoschmieder / (visibility_km * 1e3);
+  return std::max(0.0, ground_extinction - rayleigh_extinction_550_per_m()) * aerosol_scale_height_m;
 }
+
+double clean_air_visibility_km() { return kKoschmieder / rayleigh_extinction_550_per_m() / 1e3; }
 
 double aod_550_from_linke_turbidity(double linke_turbidity) {
   // Ineichen (2008), Eq. 5 at p = p0 and w = 1.5 cm:

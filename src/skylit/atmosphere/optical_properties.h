@@ -39,6 +39,10 @@ double rayleigh_optical_depth_sea_level(double wavelength_nm);
 // Aerosol optical depth at 550 nm from a meteorological visibility (Koschmieder: the
 // ground extinction is 3.912/V, less the Rayleigh part) with the aerosol scale height.
 double aod_550_from_visibility(double visibility_km, double aerosol_scale_height_m);
+// The farthest anything can be seen through air without aerosol at sea level
+// (Koschmieder's 3.912 over the Rayleigh extinction at 550 nm): about 320 km. A reported
+// visibility beyond it gives aod_550 = 0.
+double clean_air_visibility_km();
 // From a Linke turbidity at air mass 2 (Ineichen 2008, Solar Energy 82, 1095, with
 // 1.5 cm of precipitable water and sea-level pressure).
 double aod_550_from_linke_turbidity(double linke_turbidity);

@@ -206,6 +206,15 @@ std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
         formatted("weather: the file's station lies %.0f km from the site; its weather is taken as "
                   "the site's (a nearer station's file would be truer)",
                   scene.weather->station_distance_km));
+  // No sky leaves the ground without daylight while the sun is up (an overcast winter
+  // noon still gives thousands of lux): a record of none then is a gap the file filled
+  // with zeros (PVGIS files have many), rendered as it says.
+  if (scene.weather && scene.weather->sun_altitude_deg > 1 && scene.weather->file_global_horizontal_lux &&
+      *scene.weather->file_global_horizontal_lux <= 0)
+    warnings.push_back(formatted("weather: the record gives no daylight (0 lx global horizontal) with the sun "
+                                 "%.1f° up, which no sky allows: probably a gap in the file filled with zeros; "
+                                 "rendered as the file says, dark",
+                                 scene.weather->sun_altitude_deg));
   for (const std::string& pattern : scene.unused_material_overrides)
     warnings.push_back("material_overrides: pattern " + quoted(pattern) + " matched no material of any file");
   if (check_camera && !scene.objects.empty()) {

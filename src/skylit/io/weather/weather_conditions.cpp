@@ -5,6 +5,7 @@
 #include <string>
 
 #include "skylit/atmosphere/atmosphere.h"
+#include "skylit/atmosphere/optical_properties.h"
 #include "skylit/atmosphere/seen_sun.h"
 #include "skylit/core/formatted.h"
 #include "skylit/io/weather/luminous_efficacy.h"
@@ -60,6 +61,10 @@ std::optional<double> illuminance_of(const EpwFile& file, const EpwHour& hour, s
                                      const std::optional<ModelEfficacy>& model = std::nullopt) {
   if (hour.*lux) return *(hour.*lux);
   if (!(hour.*watts)) return std::nullopt;
+  // No light is no light, whatever the efficacy (which, for Perez's, is undefined then):
+  // PVGIS files give 0 W/m² and no illuminances, and such hours read as missing and
+  // took the scene's clear sky.
+  if (*(hour.*watts) == 0) return 0.0;
   if (const std::optional<double> efficacy = file_efficacy(file, lux, watts)) {
     decisions.push_back(std::string(what) + " illuminance missing: the irradiance × the file's median efficacy " +
                         formatted("%.1f lm/W", *efficacy));
@@ -121,16 +126,20 @@ void fit_aerosol(AtmosphereSettings& air, double sun_elevation_rad, double targe
 }
 
 void aerosol_from_visibility(const EpwHour& hour, AtmosphereSettings& air, WeatherSummary& summary, const char* why) {
-  // Files write 999 km for "unlimited" (German test reference years among others): no
-  // measure of the aerosol, which taken literally (beyond clean air's own visibility,
-  // about 320 km at 550 nm) would be none at all. Other values are taken as they are, so
-  // that a clearer report never gives a hazier sky.
-  constexpr double kUnlimitedVisibilityKm = 999;
-  if (hour.visibility_km && *hour.visibility_km >= kUnlimitedVisibilityKm) {
+  // No observation sees farther than clean air lets it (Koschmieder's range of the
+  // Rayleigh extinction alone, about 320 km at 550 nm): files write such values for
+  // "unlimited" (999 km in German test reference years, 777.7 and 1600 km in TMYx
+  // files), which say nothing of the aerosol and taken literally would leave none at all.
+  // The scene's aerosol stays for all of them; below it, values are taken as they are,
+  // so that a clearer report never gives a hazier sky. (A cut at 999 km alone made 998
+  // km aerosol-free and 999 km the scene's haze.)
+  const double clean_air_km = clean_air_visibility_km();
+  if (hour.visibility_km && *hour.visibility_km >= clean_air_km) {
     summary.decisions.push_back(
         std::string("aerosol: ") + why +
-        formatted("; aod_550 = %.3f as the scene gives it (a visibility of %.0f km marks it unlimited)",
-                  air.aerosol.aod_550, *hour.visibility_km));
+        formatted("; aod_550 = %.3f as the scene gives it (a visibility of %.0f km, beyond clean air's %.0f km, "
+                  "marks it unlimited)",
+                  air.aerosol.aod_550, *hour.visibility_km, clean_air_km));
   } else if (hour.visibility_km && *hour.visibility_km >= kFogBelowKm) {
     air.aerosol.aod_550 = aod_550_from_visibility(*hour.visibility_km, air.aerosol.scale_height_m);
     summary.decisions.push_back(
