@@ -162,9 +162,9 @@ TEST(WeatherConditions, OpaqueCoverBeyondTheTotalIsSaid) {
 TEST(WeatherConditions, AnUnlimitedVisibilityLeavesTheAerosol) {
   EXPECT_NEAR(clean_air_visibility_km(), 320, 10);
   double previous_aod = 1;
-  for (const auto& [visibility, unchanged] : {std::pair{"200.0", false}, std::pair{"300.0", false},
-                                              std::pair{"777.7", true}, std::pair{"998.0", true},
-                                              std::pair{"999.0", true}, std::pair{"1600.0", true}}) {
+  for (const auto& [visibility, unchanged] :
+       {std::pair{"200.0", false}, std::pair{"300.0", false}, std::pair{"777.7", true}, std::pair{"998.0", true},
+        std::pair{"999.0", true}, std::pair{"1600.0", true}}) {
     EpwRecordFields night;
     night.day = 26, night.hour = 1, night.visibility = visibility;
     night.ghi = night.dni = night.dhi = night.gh_lux = night.dn_lux = night.dh_lux = "0";

@@ -107,7 +107,8 @@ Rgba Texture::bilinear(int level, double u, double v) const {
   const Level& l = levels_[static_cast<size_t>(level)];
   if (!std::isfinite(u) || !std::isfinite(v)) u = v = 0;
   // Texel centres at (i + ½) / size; the repeat is applied per texel index.
-  const double fx = wrapped_coordinate(u, wrap_u_) * l.width - 0.5, fy = wrapped_coordinate(v, wrap_v_) * l.height - 0.5;
+  const double fx = wrapped_coordinate(u, wrap_u_) * l.width - 0.5,
+               fy = wrapped_coordinate(v, wrap_v_) * l.height - 0.5;
   const double x0 = std::floor(fx), y0 = std::floor(fy);
   const float tx = static_cast<float>(fx - x0), ty = static_cast<float>(fy - y0);
   const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);

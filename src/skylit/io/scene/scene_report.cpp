@@ -211,10 +211,11 @@ std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
   // with zeros (PVGIS files have many), rendered as it says.
   if (scene.weather && scene.weather->sun_altitude_deg > 1 && scene.weather->file_global_horizontal_lux &&
       *scene.weather->file_global_horizontal_lux <= 0)
-    warnings.push_back(formatted("weather: the record gives no daylight (0 lx global horizontal) with the sun "
-                                 "%.1f° up, which no sky allows: probably a gap in the file filled with zeros; "
-                                 "rendered as the file says, dark",
-                                 scene.weather->sun_altitude_deg));
+    warnings.push_back(
+        formatted("weather: the record gives no daylight (0 lx global horizontal) with the sun "
+                  "%.1f° up, which no sky allows: probably a gap in the file filled with zeros; "
+                  "rendered as the file says, dark",
+                  scene.weather->sun_altitude_deg));
   for (const std::string& pattern : scene.unused_material_overrides)
     warnings.push_back("material_overrides: pattern " + quoted(pattern) + " matched no material of any file");
   if (check_camera && !scene.objects.empty()) {
