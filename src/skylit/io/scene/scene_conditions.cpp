@@ -59,6 +59,26 @@ std::string atmosphere_text(const AtmosphereSettings& a) {
          number(a.ground_albedo);
 }
 
+// What the sky's radiance comes from: the atmosphere model's scattering, or a CIE
+// standard sky scaled to an illuminance (the scene's, or an overcast weather hour's),
+// which replaces it (docs/atmosphere.md).
+std::string sky_text(const AtmosphereSettings& a) {
+  if (!a.cie_sky) return "from the atmosphere above (scattering of the sun's light)";
+  return "CIE standard general sky type " + std::to_string(a.cie_sky->type) + " (ISO 15469) scaled to " +
+         number(a.cie_sky->diffuse_horizontal_lux) + " lx of diffuse horizontal illuminance, in place of the "
+         "atmosphere's own sky; " +
+         (a.cie_sky->direct_sun ? "the sun's beam from the atmosphere" : "no direct sun");
+}
+
+// The weather file's hour and what was made of it, one decision after another.
+std::string weather_text(const Scene& scene) {
+  if (!scene.weather) return "none (the conditions above are the scene's)";
+  const WeatherSummary& w = *scene.weather;
+  std::string text = w.file + ", " + w.station + ": " + w.record + "; the sun placed at " + w.sun_time;
+  for (const std::string& decision : w.decisions) text += "; " + decision;
+  return text;
+}
+
 std::string fog_text(const Scene& scene) {
   if (!scene.fog) return "none";
   const FogSettings& f = *scene.fog;
@@ -126,7 +146,9 @@ std::vector<ConditionRow> scene_conditions(const Scene& scene) {
       {"Site", site_text(scene)},
       {"Time", scene.time.empty() ? "not given" : scene.time},
       {"Sun", sun_text(scene)},
+      {"Weather", weather_text(scene)},
       {"Atmosphere", atmosphere_text(scene.atmosphere)},
+      {"Sky", sky_text(scene.atmosphere)},
       {"Fog", fog_text(scene)},
       {"Clouds", clouds_text(scene)},
       {"Lights", scene.lights.empty() ? "none" : std::to_string(scene.lights.size()) + " luminaire(s)"},

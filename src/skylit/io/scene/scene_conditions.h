@@ -1,5 +1,5 @@
 // The conditions of a render said in words and numbers, one row per subject: site,
-// time, sun, atmosphere, fog, clouds, lights, camera and lens, image. For the HTML
+// time, sun, weather, atmosphere, sky, fog, clouds, lights, camera and lens, image. For the HTML
 // report (docs/report.md), where they stand beside the pictures they explain.
 #pragma once
 
