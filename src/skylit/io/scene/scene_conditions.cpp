@@ -65,7 +65,8 @@ std::string atmosphere_text(const AtmosphereSettings& a) {
 std::string sky_text(const AtmosphereSettings& a) {
   if (!a.cie_sky) return "from the atmosphere above (scattering of the sun's light)";
   return "CIE standard general sky type " + std::to_string(a.cie_sky->type) + " (ISO 15469) scaled to " +
-         number(a.cie_sky->diffuse_horizontal_lux) + " lx of diffuse horizontal illuminance, in place of the "
+         number(a.cie_sky->diffuse_horizontal_lux) +
+         " lx of diffuse horizontal illuminance, in place of the "
          "atmosphere's own sky; " +
          (a.cie_sky->direct_sun ? "the sun's beam from the atmosphere" : "no direct sun");
 }
