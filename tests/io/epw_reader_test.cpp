@@ -103,6 +103,14 @@ TEST(EpwReader, AMalformedFileIsOneLocatedError) {
   EXPECT_EQ(error_of(epw_header("LOCATION,X,-,Y,src,1,95.0,0,0,0")),
             "bad.epw:1: field 7 (latitude): must lie within -90 to 90");
   EXPECT_NE(error_of(epw_header()).find("no hourly records"), std::string::npos);
+  // Without its DATA PERIODS line the header runs into the records: said at the first
+  // record (line 8 here), not at the file's last line.
+  std::string header = epw_header();
+  const size_t periods = header.find("DATA PERIODS");
+  ASSERT_NE(periods, std::string::npos);
+  header.erase(periods, header.find('\n', periods) + 1 - periods);
+  EXPECT_EQ(error_of(header + epw_record({}) + epw_record({})),
+            "bad.epw:8: a record before the DATA PERIODS line, which ends the header (is it missing?)");
   EXPECT_NE(error_of("").find("empty file"), std::string::npos);
 }
 

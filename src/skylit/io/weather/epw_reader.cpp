@@ -1,6 +1,7 @@
 #include "skylit/io/weather/epw_reader.h"
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -196,8 +197,12 @@ EpwFile parse_epw(std::string_view text, const std::string& name) {
       location_seen = true;
     } else if (!data_periods_seen) {
       // The other header lines (design conditions, periods, ground temperatures,
-      // holidays, comments) say nothing skylit uses; DATA PERIODS is the last.
+      // holidays, comments) say nothing skylit uses; DATA PERIODS is the last. They
+      // begin with their names; a line that begins with a digit is a record (a year).
       data_periods_seen = r.text(0) == "DATA PERIODS";
+      if (!data_periods_seen && std::isdigit(static_cast<unsigned char>(trimmed(line).front())))
+        throw InputError(name + ":" + std::to_string(line_number) +
+                         ": a record before the DATA PERIODS line, which ends the header (is it missing?)");
     } else {
       file.hours.push_back(read_record(r, line_number, name));
     }
