@@ -363,6 +363,27 @@ TEST(ModelTextures, ObjTexturePathsWithBackslashesAreFound) {
   expect_color(point_below(PreparedScene(scene), 0.5, 0.5), 0, 1, 0);
 }
 
+// An absolute path of the exporting machine (Windows' or another's), the image handed
+// over beside the model: found by its bare file name, as most importers find it.
+TEST(ModelTextures, ObjTexturesNamedByAnotherMachinesPathAreFoundBesideTheModel) {
+  for (const std::string path : {"C:\\Users\\arch\\Documents\\tex.png", "/home/arch/project/maps/tex.png"}) {
+    SCOPED_TRACE(path);
+    TempDir dir;
+    write_texture(dir, "tex.png");
+    dir.write("quad.mtl", "newmtl Painted\nKd 1 1 1\nmap_Kd " + path + "\n");
+    write_obj_quad(dir);
+    const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.obj", "z")));
+    EXPECT_TRUE(scene.objects[0].source->missing_images.empty());
+    expect_color(point_below(PreparedScene(scene), 0.5, 0.5), 0, 1, 0);
+  }
+  // Not beside it either: listed as missing under the name the file gives.
+  TempDir dir;
+  dir.write("quad.mtl", "newmtl Painted\nKd 1 1 1\nmap_Kd C:\\maps\\gone.png\n");
+  write_obj_quad(dir);
+  const Scene scene = load_scene(dir.write("scene.json", scene_json("quad.obj", "z")));
+  EXPECT_EQ(scene.objects[0].source->missing_images, std::vector<std::string>{"C:\\maps\\gone.png"});
+}
+
 TEST(ModelTextures, PercentEncodedNamesAndDataUrisOfAnyImageTypeAreRead) {
   TempDir dir;
   write_texture(dir, "te x.png");

@@ -29,13 +29,22 @@ namespace skylit {
 namespace {
 
 // A file an OBJ or MTL names, beside it: as written, else with Windows' backslashes read
-// as slashes ("map_Kd .\textures\brick.jpg", as Windows exporters write it).
+// as slashes ("map_Kd .\textures\brick.jpg", as Windows exporters write it), else by its
+// bare file name beside the model (an absolute path of the exporting machine,
+// "C:\Users\arch\Documents\brick.jpg", with the file handed over beside the model, as
+// most importers find it); as written if none is there.
 std::filesystem::path beside(const std::filesystem::path& dir, const std::string& name) {
   std::error_code ec;
-  if (std::filesystem::exists(dir / name, ec) || name.find('\\') == std::string::npos) return dir / name;
+  if (std::filesystem::exists(dir / name, ec)) return dir / name;
   std::string slashed = name;
   std::replace(slashed.begin(), slashed.end(), '\\', '/');
-  return dir / slashed;
+  if (std::filesystem::exists(dir / slashed, ec)) return dir / slashed;
+  const size_t last = slashed.find_last_of('/');
+  if (last != std::string::npos && last + 1 < slashed.size()) {
+    const std::filesystem::path bare = dir / slashed.substr(last + 1);
+    if (std::filesystem::exists(bare, ec)) return bare;
+  }
+  return dir / name;
 }
 
 // A material library the file names, read beside it.
