@@ -120,6 +120,7 @@ struct CitySource {
   double latitude_deg = 0, longitude_deg = 0, ground_height_m = 0;
   bool site_from_model = false;
   bool curvature_applied = false;
+  bool axes_swapped = false;                                    // PlacedCity::axes_swapped
   std::vector<std::pair<std::string, size_t>> objects_by_type;  // city objects placed
   struct ClassUse {
     std::string name;  // "Building.RoofSurface"

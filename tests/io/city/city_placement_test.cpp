@@ -51,17 +51,21 @@ TEST(CityPlacement, RotterdamSiteAndVerticesAgreeWithCs2csAndGeod) {
   const auto file = kModels / "rotterdam_one.city.json";
   if (!std::filesystem::exists(file)) GTEST_SKIP() << "no shared models";
   const PlacedCity city = place_city_model(read_cityjson_file(file), {}, file.string());
-  // The centre of the vertices' box in RD, (90938.528, 435647.363), by
-  //   echo 90938.528 435647.363 0 | cs2cs -f %.10f EPSG:7415 EPSG:4979
-  //   → 51.9065947350 4.4565822844 0
+  // The file's CRS is EPSG:7415 (RD New + NAP height), placed through its horizontal
+  // part (geo_frame.h). The centre of the vertices' box in RD, (90938.528, 435647.363), by
+  //   echo 90938.528 435647.363 | cs2cs -f %.10f EPSG:28992 EPSG:4326
+  //   → 51.9056375705 4.4562821710
+  // (cs2cs EPSG:7415 EPSG:4979 gives 51.9065947, 4.4565823, 108 m off: without the NAP
+  // grid PROJ's compound operation is a "ballpark" geographic offset, no datum shift.)
   ASSERT_TRUE(city.origin_from_model);
-  EXPECT_NEAR(city.origin.latitude_deg, 51.9065947350, kAngleToleranceDeg);
-  EXPECT_NEAR(city.origin.longitude_deg, 4.4565822844, kAngleToleranceDeg);
-  // Vertices 0 and 7 (the file's first roof vertex, a wall's) by cs2cs as above, then
-  //   echo 51.9065947350 4.4565822844 LAT LON | geod -I +ellps=WGS84 -f %.10f
+  EXPECT_NEAR(city.origin.latitude_deg, 51.9056375705, kAngleToleranceDeg);
+  EXPECT_NEAR(city.origin.longitude_deg, 4.4562821710, kAngleToleranceDeg);
+  // Vertices 0 and 7 (the file's first roof vertex, a wall's; RD (90933.358, 435649.498)
+  // and (90937.034, 435644.309)) by cs2cs as above, then
+  //   echo 51.9056375705 4.4562821710 LAT LON | geod -I +ellps=WGS84 -f %.10f
   // giving the true azimuth and the distance from the site. The ground level is 0 m.
-  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(-68.2955979780, 5.595, 15.311)), kPositionToleranceM);
-  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(-154.6661805169, 3.400, 11.136)), kPositionToleranceM);
+  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(-68.2951117748, 5.594, 15.311)), kPositionToleranceM);
+  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(-154.6662029455, 3.400, 11.136)), kPositionToleranceM);
   EXPECT_NEAR(city.origin.height_m, 0.0, 1e-9);
 }
 
@@ -69,15 +73,17 @@ TEST(CityPlacement, DelftSiteAndVerticesAgreeWithCs2csAndGeod) {
   const auto file = kModels / "delft.city.json";
   if (!std::filesystem::exists(file)) GTEST_SKIP() << "no shared models";
   const PlacedCity city = place_city_model(read_cityjson_file(file), {}, file.string());
-  // echo 84878.6535 447586.8175 0 | cs2cs -f %.10f EPSG:7415 EPSG:4979
-  EXPECT_NEAR(city.origin.latitude_deg, 52.0131769079, kAngleToleranceDeg);
-  EXPECT_NEAR(city.origin.longitude_deg, 4.3660822931, kAngleToleranceDeg);
+  // echo 84878.6535 447586.8175 | cs2cs -f %.10f EPSG:28992 EPSG:4326 (see Rotterdam)
+  EXPECT_NEAR(city.origin.latitude_deg, 52.0122074939, kAngleToleranceDeg);
+  EXPECT_NEAR(city.origin.longitude_deg, 4.3657961633, kAngleToleranceDeg);
   // Vertices 0 (85027.751, 447448.180, 0.120) and 5000 (85046.828, 447447.892, 13.672)
-  // by cs2cs and geod -I as in the Rotterdam test; heights above the ground level.
+  // by cs2cs and geod -I as in the Rotterdam test; heights above the ground level. (The
+  // ballpark offset also read Bessel's latitudes and longitudes on WGS 84's larger
+  // ellipsoid: these distances were 2.4 and 2.6 cm, 1.2e-4, too long.)
   const double ground = city.origin.height_m;
-  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(132.1118992973, 203.630, 0.120 - ground)),
+  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(132.1123692627, 203.606, 0.120 - ground)),
             kPositionToleranceM);
-  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(128.7532670217, 218.174, 13.672 - ground)),
+  EXPECT_LT(distance_to_nearest_vertex(city, from_azimuth(128.7537329153, 218.148, 13.672 - ground)),
             kPositionToleranceM);
   EXPECT_FALSE(city.curvature_applied);  // all within 1 km of the centre
 }
@@ -86,6 +92,40 @@ TEST(CityPlacement, DelftSiteAndVerticesAgreeWithCs2csAndGeod) {
 // sun's true shadow azimuth, computed on the ellipsoid (GeographicLib's direct
 // problem, PROJ's geodesic.h), both written in UTM zone 31N 2.9° east of the zone's
 // central meridian at 60° N, where grid north lies 2.5° west of true north.
+// Files write easting first whatever their CRS's definition says: a German state model
+// under AdV's name of Gauss-Krüger zone 4 (EPSG:31468, northing first by EPSG; the OGC's
+// CityGML 3.0 Dynamizer sample near Munich), Helsinki's EPSG:3879 as CityJSON writes it.
+// Read as defined they land in Greece, or nowhere; read the other way round inside the
+// CRS's area of use, where
+//   echo N E | cs2cs -f %.8f EPSG:31468 EPSG:4326 (and EPSG:3879)
+// puts them. Japan's plane systems are written as defined (northing first, EPSG:6677):
+// both orders fall inside Japan there, and the definition's is kept.
+TEST(CityPlacement, AFileWritingEastingFirstForANorthingFirstCrsIsReadSo) {
+  struct Case {
+    std::string crs;
+    double first, second;
+    double latitude_deg, longitude_deg;
+    bool swapped;
+  };
+  for (const Case& c : {Case{"EPSG:31468", 4490663, 5322007, 48.03610485, 11.87335469, true},
+                        Case{"EPSG:3879", 25496000, 6672000, 60.16088692, 24.92796536, true},
+                        Case{"EPSG:6677", -35000, -5000, 35.684516, 139.778092, false}}) {
+    SCOPED_TRACE(c.crs);
+    CityModel model;
+    model.crs = c.crs;
+    CityObject block{"block", "Building", 10, {}};
+    block.surfaces.push_back(surface_of({{{c.first - 5, c.second - 5, 0},
+                                          {c.first + 5, c.second - 5, 0},
+                                          {c.first + 5, c.second + 5, 0},
+                                          {c.first - 5, c.second + 5, 0}}}));
+    model.objects.push_back(block);
+    const PlacedCity city = place_city_model(model, {}, "test");
+    EXPECT_EQ(city.axes_swapped, c.swapped);
+    EXPECT_NEAR(city.origin.latitude_deg, c.latitude_deg, 1e-6);
+    EXPECT_NEAR(city.origin.longitude_deg, c.longitude_deg, 1e-6);
+  }
+}
+
 TEST(CityPlacement, ShadowsFallAlongTheSunsTrueAzimuthInAMapGrid) {
   const double pole_lat = 60.0, pole_lon = 5.9;
   const OffsetDateTime when = parse_offset_date_time("2026-06-21T17:00:00+02:00", "test");

@@ -119,8 +119,13 @@ PlacedCity place_city_model(const CityModel& model, const CityPlacementOptions& 
   placed.crs = options.crs.empty() ? model.crs : options.crs;
   if (placed.crs.empty())
     throw InputError(source + ": the file names no coordinate reference system: give the object a \"crs\"");
-  const CrsToWgs84 to_wgs84(placed.crs, source);
+  CrsToWgs84 to_wgs84(placed.crs, source);
   const FlatPoints flat = flatten(model);
+  if (!flat.points.empty()) {
+    BoundingBox box;
+    for (const Vec3& p : flat.points) box.add(p);
+    placed.axes_swapped = to_wgs84.fit_axis_order(box.center());
+  }
   const std::vector<GeoPoint> geo = to_wgs84.transform(flat.points);
 
   // The origin's latitude and longitude: the site, else the region's centre, else the

@@ -77,6 +77,9 @@ struct PlacedCity {
   GeoPoint origin;
   bool origin_from_model = false;  // the model's centre (no site given)
   bool curvature_applied = false;
+  // The file's first two coordinates read the other way round than the CRS defines them
+  // (CrsToWgs84::fit_axis_order): only so do they lie in the CRS's area of use.
+  bool axes_swapped = false;
   // "Type.Semantic" ("Building.RoofSurface") or "Type" for surfaces without one. A
   // building's surfaces without semantics are classed by their facing (roof: facing
   // up, ground: facing down, wall: otherwise) so that LoD1 blocks get roofs too.

@@ -59,27 +59,72 @@ struct CrsToWgs84::Proj : ProjHandle {};
 
 CrsToWgs84::CrsToWgs84(const std::string& crs, const std::string& source)
     : proj_(std::make_unique<Proj>()), crs_(normalized_crs_name(crs)), source_(source) {
-  PJ* given = proj_create(proj_->context, crs_.c_str());
-  const bool is_crs = given && proj_is_crs(given);
-  if (given) proj_destroy(given);
-  if (!is_crs) throw InputError(source_ + ": the coordinate reference system '" + crs + "' is unknown to PROJ");
+  PJ_CONTEXT* context = proj_->context;
+  PJ* given = proj_create(context, crs_.c_str());
+  if (!given || !proj_is_crs(given)) {
+    if (given) proj_destroy(given);
+    throw InputError(source_ + ": the coordinate reference system '" + crs + "' is unknown to PROJ");
+  }
+  // A compound CRS (RD New + NAP height, EPSG:7415) through its horizontal part, the
+  // heights as the file gives them. Without the geoid grid of its vertical datum (not in
+  // Debian's proj-data) PROJ's whole operation took a "ballpark" horizontal step too
+  // (no datum shift: the 3D BAG 108 m off); with the grid it would add the geoid's
+  // undulation to every height alike, which the local frame subtracts again.
+  PJ* horizontal = proj_get_type(given) == PJ_TYPE_COMPOUND_CRS ? proj_crs_get_sub_crs(context, given, 0) : nullptr;
+  PJ* source_crs = horizontal ? horizontal : given;
+  geographic_ =
+      proj_get_type(source_crs) == PJ_TYPE_GEOGRAPHIC_2D_CRS || proj_get_type(source_crs) == PJ_TYPE_GEOGRAPHIC_3D_CRS;
+  double west = 0, south = 0, east = 0, north = 0;
+  if (proj_get_area_of_use(context, source_crs, &west, &south, &east, &north, nullptr) && west > -1000)
+    area_of_use_ = {west, south, east, north};
+  PJ* wgs84 = proj_create(context, "EPSG:4979");
   // The best operation PROJ has (with its grids where installed) for each point's area.
-  proj_->operation = proj_create_crs_to_crs(proj_->context, crs_.c_str(), "EPSG:4979", nullptr);
+  proj_->operation = proj_create_crs_to_crs_from_pj(context, source_crs, wgs84, nullptr, nullptr);
+  proj_destroy(wgs84);
+  if (horizontal) proj_destroy(horizontal);
+  proj_destroy(given);
   if (!proj_->operation)
     throw InputError(source_ + ": PROJ cannot transform '" + crs + "' to WGS 84: " + proj_->last_error());
 }
 
 CrsToWgs84::~CrsToWgs84() = default;
 
+std::optional<GeoPoint> CrsToWgs84::try_transform(const Vec3& p, bool swapped) const {
+  const double first = swapped ? p.y : p.x, second = swapped ? p.x : p.y;
+  // EPSG:4979 in its own axis order: latitude, longitude (degrees), height.
+  const PJ_COORD c = proj_trans(proj_->operation, PJ_FWD, proj_coord(first, second, p.z, 0));
+  if (!finite(c)) return std::nullopt;
+  return GeoPoint{c.v[0], c.v[1], c.v[2]};
+}
+
+bool CrsToWgs84::inside_area_of_use(const GeoPoint& g) const {
+  if (!area_of_use_) return true;
+  const auto [west, south, east, north] = *area_of_use_;
+  // A margin of a degree: models reach past a zone's edge, and areas are rounded.
+  constexpr double kMarginDeg = 1.0;
+  const bool lon_inside = west <= east ? g.longitude_deg >= west - kMarginDeg && g.longitude_deg <= east + kMarginDeg
+                                       : g.longitude_deg >= west - kMarginDeg || g.longitude_deg <= east + kMarginDeg;
+  return lon_inside && g.latitude_deg >= south - kMarginDeg && g.latitude_deg <= north + kMarginDeg;
+}
+
+bool CrsToWgs84::fit_axis_order(const Vec3& sample) {
+  swapped_ = false;
+  if (geographic_) return false;  // latitude first as the CRS says (GML, PLATEAU's EPSG:6697)
+  const std::optional<GeoPoint> as_defined = try_transform(sample, false);
+  if (as_defined && inside_area_of_use(*as_defined)) return false;
+  const std::optional<GeoPoint> swapped = try_transform(sample, true);
+  swapped_ = swapped && inside_area_of_use(*swapped);
+  return swapped_;
+}
+
 std::vector<GeoPoint> CrsToWgs84::transform(const std::vector<Vec3>& points) const {
   std::vector<GeoPoint> out(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    // EPSG:4979 in its own axis order: latitude, longitude (degrees), height.
-    const PJ_COORD c = proj_trans(proj_->operation, PJ_FWD, proj_coord(points[i].x, points[i].y, points[i].z, 0));
-    if (!finite(c))
+    const std::optional<GeoPoint> g = try_transform(points[i], swapped_);
+    if (!g)
       throw InputError(source_ + ": PROJ cannot transform the point " + describe(points[i]) + " of " + crs_ +
                        " to WGS 84 (outside the CRS's area?)");
-    out[i] = {c.v[0], c.v[1], c.v[2]};
+    out[i] = *g;
   }
   return out;
 }

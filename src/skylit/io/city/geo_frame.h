@@ -4,7 +4,9 @@
 // placed scene is single precision (Embree).
 #pragma once
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,7 +40,9 @@ std::string normalized_crs_name(const std::string& name);
 
 // Transforms points given in a CRS (in its own axis order: easting, northing, height
 // for most projected CRSs; northing first for some, e.g. EPSG:6677; latitude first
-// for geographic ones) to WGS 84.
+// for geographic ones; or with the two horizontal axes the other way round where
+// fit_axis_order finds the file so) to WGS 84. A compound CRS goes through its
+// horizontal part, the heights as given.
 class CrsToWgs84 {
  public:
   // Throws InputError "<source>: <what is wrong>" if PROJ does not know the CRS.
@@ -47,14 +51,29 @@ class CrsToWgs84 {
   CrsToWgs84(const CrsToWgs84&) = delete;
   CrsToWgs84& operator=(const CrsToWgs84&) = delete;
 
+  // For a projected CRS: whether `sample` (a point of the file) lands inside the CRS's
+  // area of use only with its first two coordinates exchanged, and if so reads every
+  // point so from now on. Files write easting first whatever the CRS's definition says
+  // (CityJSON always; German state models under AdV's names of Gauss-Krüger zones,
+  // EPSG:31466–31469, whose EPSG order is northing first; Helsinki's EPSG:3879), and some
+  // follow the definition (Japan's plane rectangular systems, northing first): the area of
+  // use tells them apart. Geographic CRSs keep their order (latitude first in GML).
+  bool fit_axis_order(const Vec3& sample);
+  bool axes_swapped() const { return swapped_; }
+
   // Throws InputError naming the first point PROJ cannot transform.
   std::vector<GeoPoint> transform(const std::vector<Vec3>& points) const;
   GeoPoint transform(const Vec3& point) const;
 
  private:
+  std::optional<GeoPoint> try_transform(const Vec3& point, bool swapped) const;
+  bool inside_area_of_use(const GeoPoint& point) const;
+
   struct Proj;
   std::unique_ptr<Proj> proj_;
   std::string crs_, source_;
+  bool geographic_ = false, swapped_ = false;
+  std::optional<std::array<double, 4>> area_of_use_;  // west, south, east, north (degrees)
 };
 
 // The scene's local frame: x east, y north, z up, metres, the origin at `origin`.

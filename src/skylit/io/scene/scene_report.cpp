@@ -57,6 +57,14 @@ void check_model_placement(const SceneObject& object, std::vector<std::string>& 
 // probably wrong (another city's, or a weather station's far away), and the earth's
 // curvature puts the model kilometres below the horizon.
 void check_city_placement(const SceneObject& object, std::vector<std::string>& warnings) {
+  if (object.city && object.city->axes_swapped)
+    warnings.push_back("object " + quoted(object.name) +
+                       ": the file's first two coordinates are read the other way "
+                       "round than " +
+                       object.city->crs +
+                       " defines them (easting first for a northing-first CRS, or "
+                       "the reverse): only so do they lie in its area of use; if the model is misplaced, give "
+                       "\"crs\" as a PROJ string with the file's axis order");
   const BoundingBox box = object.mesh.bounds();
   if (box.empty()) return;
   const double distance = centre_distance_m(box);
@@ -109,8 +117,11 @@ double printed_mm(double metres) { return std::abs(metres) < 5e-4 ? 0.0 : metres
 // The city model's file, CRS, site, city objects by type and surface classes with
 // their materials.
 std::string describe_city(const CitySource& c) {
-  std::string out = c.file + ", CRS " + c.crs + "\n";
-  out += formatted("  site %.7f° N, %.7f° E", c.latitude_deg, c.longitude_deg) +
+  std::string out = c.file + ", CRS " + c.crs +
+                    (c.axes_swapped ? " (its first two coordinates read the other way round: see the warning)" : "") +
+                    "\n";
+  out += formatted("  site %.7f° ", std::abs(c.latitude_deg)) + (c.latitude_deg < 0 ? "S" : "N") +
+         formatted(", %.7f° ", std::abs(c.longitude_deg)) + (c.longitude_deg < 0 ? "W" : "E") +
          (c.site_from_model ? " (the model's centre: no site given)" : " (the scene's site)") +
          formatted("; ground level %.2f m (z = 0)", c.ground_height_m) +
          (c.curvature_applied ? "; earth curvature and refraction applied" : "") + "\n";
