@@ -279,6 +279,41 @@ TEST(CityAppearance, CityGmlParameterizedTextureAndX3dMaterial) {
   EXPECT_EQ(city.city->appearance_theme, "rgbTexture");
 }
 
+// CityGML 3.0 names a TexCoordList's ring in an element after its coordinates
+// (<app:ring>#r1</app:ring>) and its target as text in a TextureAssociation; the OGC's
+// PLATEAU 3.0 sample was refused ("ring='#' names no ring"). The same square reads the
+// same texels as in 2.0.
+TEST(CityAppearance, CityGml3TexCoordListWithItsRingElement) {
+  std::string gml = plateau_gml("#r1", kSquareCoordinates);
+  const std::string from = std::string(R"(<app:target uri="#p1"><app:TexCoordList>
+<app:textureCoordinates ring="#r1">)") +
+                           kSquareCoordinates + R"(</app:textureCoordinates>
+</app:TexCoordList></app:target>)";
+  const std::string to =
+      std::string(R"(<app:textureParameterization><app:TextureAssociation><app:target>#p1</app:target>
+<app:textureParameterization><app:TexCoordList><app:textureCoordinates>)") +
+      kSquareCoordinates + R"(</app:textureCoordinates><app:ring>#r1</app:ring>
+</app:TexCoordList></app:textureParameterization></app:TextureAssociation></app:textureParameterization>)";
+  ASSERT_NE(gml.find(from), std::string::npos);
+  gml.replace(gml.find(from), from.size(), to);
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "tex");
+  write_texture(dir, "tex/roof.png");
+  dir.write("block.gml", gml);
+  const Scene scene = load_scene(dir.write("s.json", scene_json("block.gml")));
+  const SceneObject& city = scene.objects.at(0);
+  ASSERT_EQ(city.corner_uvs.size(), city.mesh.triangles.size());
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.25, 0.25)), 0, 0, 1);
+  expect_texel(texel_below(scene, on_quad(city.mesh, 0.75, 0.75)), 0, 1, 0);
+  // A ring element with no coordinates before it is one located error.
+  std::string stray = gml;
+  stray.replace(stray.find("<app:ring>"), 0, "<app:ring>#r1</app:ring>");
+  EXPECT_NE(testing::input_error_of([&] {
+              parse_citygml(stray, "block.gml");
+            }).find("app:ring '#r1' follows no app:textureCoordinates of its own"),
+            std::string::npos);
+}
+
 TEST(CityAppearance, BadCityGmlTextureCoordinatesAreOneLocatedError) {
   const auto error_of = [](const std::string& text) {
     return testing::input_error_of([&] { parse_citygml(text, "block.gml"); });

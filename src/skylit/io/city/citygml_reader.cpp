@@ -131,6 +131,7 @@ enum class TextFor {
   texture_uri,
   wrap_mode,
   texture_coordinates,
+  texture_ring,
   implicit_matrix,
   implicit_reference
 };
@@ -471,6 +472,11 @@ void CityGmlParser::start_appearance(std::string_view local, const Attributes& a
   } else if (local == "textureCoordinates") {
     coordinates_ring_ = without_hash(a.ring);
     capture_text(TextFor::texture_coordinates);
+  } else if (local == "ring" && !surface_data_.empty() && !surface_data_.back().is_material) {
+    // CityGML 3.0 names a TexCoordList's ring in an element after its coordinates
+    // (<app:textureCoordinates>…</app:textureCoordinates><app:ring>#id</app:ring>), pairs
+    // in order, where 2.0 gives it as the coordinates' attribute ring="#id".
+    capture_text(TextFor::texture_ring);
   } else if (surface_data_.back().is_material &&
              (local == "diffuseColor" || local == "emissiveColor" || local == "specularColor" || local == "shininess" ||
               local == "transparency" || local == "isSmooth")) {
@@ -594,6 +600,14 @@ void CityGmlParser::use_text() {
     case TextFor::texture_coordinates:
       surface_data_.back().rings.push_back({coordinates_ring_, numbers(text_), text_line_});
       break;
+    case TextFor::texture_ring: {
+      // The last coordinates without a ring take this one (3.0's pairing).
+      auto& rings = surface_data_.back().rings;
+      if (rings.empty() || !rings.back().ring.empty())
+        fail_at(text_line_, "an app:ring " + quote_excerpt(text_) + " follows no app:textureCoordinates of its own");
+      rings.back().ring = without_hash(text_);
+      break;
+    }
     case TextFor::implicit_matrix:
       implicit_->matrix = numbers(text_);
       if (implicit_->matrix.size() != 16)
