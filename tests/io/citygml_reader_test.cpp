@@ -433,6 +433,29 @@ TEST(CityGmlReader, ImplicitGeometriesArePlacedAtTheirReferencePoints) {
             "trees.gml:4: core:relativeGMLGeometry xlink:href='#nothing' names no implicit geometry before it");
 }
 
+// Parts the reader leaves out do not stop the file: a reference to a room's wall (a
+// CityGML 3.0 storey names its rooms' surfaces, the OGC's BuildingUnits sample) is left
+// out with the room, and an address's location in another CRS (EPSG:4326 in the OGC's
+// 3.0 samples) is not read. A reference to nothing at all stays an error (above).
+TEST(CityGmlReader, ReferencesIntoRoomsAndAddressesInAnotherCrsDoNotStopTheFile) {
+  const std::string room = R"(<bldg:interiorRoom><bldg:Room gml:id="room1"><bldg:lod4Solid><gml:Solid><gml:exterior>
+<gml:CompositeSurface><gml:surfaceMember><gml:Polygon gml:id="room_wall"><gml:exterior><gml:LinearRing>
+<gml:posList>0 0 0 1 0 0 1 0 1 0 0 0</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon></gml:surfaceMember>
+</gml:CompositeSurface></gml:exterior></gml:Solid></bldg:lod4Solid></bldg:Room></bldg:interiorRoom>)";
+  const std::string address = R"(<bldg:address><core:Address><core:multiPoint><gml:MultiPoint srsName="EPSG:4326">
+<gml:pointMember><gml:Point><gml:pos>48.1 11.5 0</gml:pos></gml:Point></gml:pointMember></gml:MultiPoint>
+</core:multiPoint></core:Address></bldg:address>)";
+  const std::string storey_reference = R"(<bldg:lod2MultiSurface><gml:MultiSurface>
+<gml:surfaceMember xlink:href="#room_wall"/></gml:MultiSurface></bldg:lod2MultiSurface>)";
+  std::string members = kHoledRoof;
+  members.replace(members.find("</bldg:Building>"), 0, room + address + storey_reference);
+  const CityModel model = parse_citygml(city_model(members), "rooms.gml");
+  EXPECT_EQ(model.crs, "EPSG:25832");
+  ASSERT_EQ(model.objects.size(), 1u);
+  ASSERT_EQ(model.objects[0].surfaces.size(), 1u);  // the roof alone
+  EXPECT_EQ(model.objects[0].surfaces[0].rings[0][1], (Vec3{10, 0, 6}));
+}
+
 TEST(CityGmlReader, SrsNamesInTheirCommonForms) {
   EXPECT_EQ(citygml::epsg_from_srs_name("http://www.opengis.net/def/crs/EPSG/0/6697"), "EPSG:6697");
   EXPECT_EQ(citygml::epsg_from_srs_name("https://www.opengis.net/def/crs/EPSG/0/7415"), "EPSG:7415");

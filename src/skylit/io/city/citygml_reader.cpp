@@ -319,11 +319,24 @@ class CityGmlParser {
   std::unordered_map<std::string, std::vector<int>> aggregate_polygons_;
   std::unordered_map<std::string, std::pair<int, int>> ring_ids_;  // (polygon, ring) by gml:id
   std::unordered_set<std::string> dropped_ring_ids_;               // holes of fewer than three points (finish_ring)
+  std::unordered_set<std::string> skipped_ids_;  // gml:ids inside subtrees not read (rooms, addresses)
+
+  // Keeps the gml:id of an element inside a skipped subtree, whose namespaces are not
+  // resolved: an attribute "id" with any prefix.
+  void note_skipped_id(const XML_Char** attribute_list) {
+    for (const XML_Char** at = attribute_list; at[0] != nullptr; at += 2) {
+      const std::string_view attribute_name(at[0]);
+      if (attribute_name == "id" || attribute_name.ends_with(":id")) skipped_ids_.insert(std::string(at[1]));
+    }
+  }
 };
 
 void CityGmlParser::start(const XML_Char* name, const XML_Char** attribute_list) {
   ++depth_;
-  if (skip_depth_ > 0) return;  // (a skipped subtree's own declarations are not needed)
+  if (skip_depth_ > 0) {  // (a skipped subtree's own declarations are not needed)
+    note_skipped_id(attribute_list);
+    return;
+  }
   namespaces_.declare(attribute_list, depth_);
   const Name n = namespaces_.resolve(name, false);
   const Attributes a = read_attributes(attribute_list, namespaces_);
@@ -366,7 +379,9 @@ void CityGmlParser::start_citygml(std::string_view local, const Attributes& a) {
     }
     if (local != "referencePoint") return;
   }
-  if (citygml::is_interior_feature(local) || local.find("Implicit") != std::string_view::npos) {
+  // Addresses are not read either: their location points may be in another CRS (the
+  // OGC's 3.0 samples give them in EPSG:4326), which is no reason to refuse the file.
+  if (citygml::is_interior_feature(local) || local == "Address" || local.find("Implicit") != std::string_view::npos) {
     skip_depth_ = depth_;
     return;
   }
@@ -814,6 +829,9 @@ CityModel CityGmlParser::finish() {
     for (const auto& use : finished_[o].uses) {
       if (use.lod != lod) continue;
       std::vector<int> named = use.polygon >= 0 ? std::vector<int>{use.polygon} : polygons_named(use.href);
+      // A surface of a room or other part not read (a 3.0 storey's walls are its rooms')
+      // is left out with it; one the file lacks is an error.
+      if (named.empty() && skipped_ids_.contains(use.href)) continue;
       if (named.empty())
         fail_at(use.line, "xlink:href " + quote_excerpt("#" + use.href) + " names no surface in the file");
       for (int p : named) {
