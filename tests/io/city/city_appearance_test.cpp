@@ -277,6 +277,10 @@ TEST(CityAppearance, CityGmlParameterizedTextureAndX3dMaterial) {
   EXPECT_EQ(tile.name, "c/tile");
   EXPECT_TRUE(std::holds_alternative<CookTorranceMaterial>(tile.material));
   EXPECT_EQ(city.city->appearance_theme, "rgbTexture");
+  // The same file named as Berlin's downloads are (.citygml) reads the same.
+  dir.write("block.citygml", plateau_gml("#r1", kSquareCoordinates));
+  const Scene renamed = load_scene(dir.write("r.json", scene_json("block.citygml")));
+  EXPECT_EQ(renamed.objects.at(0).mesh.triangles.size(), city.mesh.triangles.size());
 }
 
 // CityGML 3.0 names a TexCoordList's ring in an element after its coordinates

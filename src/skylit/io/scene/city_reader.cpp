@@ -27,10 +27,11 @@ CityModel read_city_file(const JsonReader& file_value, const std::filesystem::pa
                          const CityJsonOptions& options) {
   const std::string extension = lower_case_extension(file);
   if (extension == ".json" || extension == ".jsonl") return read_cityjson_file(file, options);
-  if (extension == ".gml" || extension == ".xml")
+  // ".citygml": Berlin's and some other cities' downloads.
+  if (extension == ".gml" || extension == ".xml" || extension == ".citygml")
     return read_citygml_file(file, CityGmlOptions{options.lod, options.appearance});
   file_value.fail("unknown city model file '" + file.filename().string() +
-                  "': expected CityJSON (.json, .city.json, .city.jsonl) or CityGML (.gml, .xml)");
+                  "': expected CityJSON (.json, .city.json, .city.jsonl) or CityGML (.gml, .citygml, .xml)");
 }
 
 // The object's `terrain`: a DEM (GeoTIFF or any raster GDAL reads) placed in the city
