@@ -20,7 +20,8 @@ TEST(FirstFew, NamesTheFirstAndCountsTheRest) {
 TEST(QuoteName, ShowsLongNamesWholeAndCutsOnlyBetweenCharacters) {
   EXPECT_EQ(quote_name("textures/facade/brick_red_01.png"), "'textures/facade/brick_red_01.png'");
   EXPECT_NE(quote_name("textures/facade/brick_red_01.png"), quote_name("textures/facade/brick_red_02.png"));
-  EXPECT_EQ(quote_name("Fa\xC3\xA7ade"), "'Fa\xC3\xA7ade'");  // "Façade"
+  const std::string facade = std::string("Fa") + "\xC3\xA7" + "ade";  // "Façade" in UTF-8
+  EXPECT_EQ(quote_name(facade), "'" + facade + "'");
   EXPECT_EQ(quote_name("a\nb\x7F"), "'a?b?'");
   const std::string long_name = std::string(119, 'x') + "\xC3\xA7" + "tail";  // ç across the 120th byte
   EXPECT_EQ(quote_name(long_name), "'" + std::string(119, 'x') + "...'");
