@@ -41,7 +41,7 @@ std::filesystem::path beside(const std::filesystem::path& dir, const std::string
   if (std::filesystem::exists(dir / slashed, ec)) return dir / slashed;
   const size_t last = slashed.find_last_of('/');
   if (last != std::string::npos && last + 1 < slashed.size()) {
-    const std::filesystem::path bare = dir / slashed.substr(last + 1);
+    std::filesystem::path bare = dir / slashed.substr(last + 1);
     if (std::filesystem::exists(bare, ec)) return bare;
   }
   return dir / name;
