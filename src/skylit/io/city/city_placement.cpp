@@ -46,12 +46,6 @@ FlatPoints flatten(const CityModel& model) {
   return flat;
 }
 
-GeoPoint model_centre(const std::vector<Vec3>& points, const CrsToWgs84& to_wgs84) {
-  BoundingBox box;
-  for (const Vec3& p : points) box.add(p);
-  return to_wgs84.transform(box.center());
-}
-
 double median(std::vector<double> values) {
   if (values.empty()) return 0;
   const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
@@ -121,11 +115,11 @@ PlacedCity place_city_model(const CityModel& model, const CityPlacementOptions& 
     throw InputError(source + ": the file names no coordinate reference system: give the object a \"crs\"");
   CrsToWgs84 to_wgs84(placed.crs, source);
   const FlatPoints flat = flatten(model);
-  if (!flat.points.empty()) {
-    BoundingBox box;
-    for (const Vec3& p : flat.points) box.add(p);
-    placed.axes_swapped = to_wgs84.fit_axis_order(box.center());
-  }
+  // The centre of the model's box in its CRS: where the axis order is judged, and the
+  // origin when neither a site nor a region gives one.
+  BoundingBox box;
+  for (const Vec3& p : flat.points) box.add(p);
+  if (!flat.points.empty()) placed.axes_swapped = to_wgs84.fit_axis_order(box.center());
   const std::vector<GeoPoint> geo = to_wgs84.transform(flat.points);
 
   // The origin's latitude and longitude: the site, else the region's centre, else the
@@ -136,7 +130,7 @@ PlacedCity place_city_model(const CityModel& model, const CityPlacementOptions& 
   else if (options.region)
     placed.origin = region_centre(*options.region);
   else if (!flat.points.empty())
-    placed.origin = model_centre(flat.points, to_wgs84);
+    placed.origin = to_wgs84.transform(box.center());
   LocalFrame frame(GeoPoint{placed.origin.latitude_deg, placed.origin.longitude_deg, 0});
   std::vector<Vec3> local = frame.to_local(geo);
 
