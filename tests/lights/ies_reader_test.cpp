@@ -1,4 +1,4 @@
-// IES LM-63 reading (IES LM-63-02): hand-written 2002, 1995, 1991 and 1986 files,
+// IES LM-63 reading (LM-63-19, LM-63-02): hand-written 2019, 2002, 1995, 1991 and 1986 files,
 // TILT=INCLUDE, each Type C symmetry, absolute candela and flux; malformed files give
 // one InputError naming file:line, and random byte mutations never crash.
 #include "skylit/lights/ies_reader.h"
@@ -125,6 +125,32 @@ TEST(IesReader, ReadsOlderHeaderForms) {
   std::string crlf = kIsotropic2002;
   for (std::size_t p = crlf.find('\n'); p != std::string::npos; p = crlf.find('\n', p + 2)) crlf.insert(p, 1, '\r');
   EXPECT_NEAR(parse_ies(crlf, "crlf.ies").distribution.candela(0, 0), 79.5775, 1e-9);
+}
+
+TEST(IesReader, The2019FormsFileGenerationTypeIsACodeNotAFactor) {
+  // LM-63-19 Table 2: 1.10000 = tested at an accredited laboratory. Read as the
+  // 1986 form's ballast-lamp factor it had made the luminaire 10 % too bright.
+  const std::string body =
+      "[TEST] 1\n[TESTLAB] lab\n[ISSUEDATE] 2024-01-01\n[MANUFAC] m\nTILT=NONE\n"
+      "1 -1 1 2 1 1 2 0 0 0\n1 1.10000 50\n0 90\n0\n10 5\n";
+  const auto ies = parse_ies("IES:LM-63-2019\n" + body, "new.ies");
+  EXPECT_EQ(ies.format, "LM-63-2019");
+  EXPECT_DOUBLE_EQ(ies.file_generation_type, 1.1);
+  EXPECT_DOUBLE_EQ(ies.ballast_lamp_factor, 1);
+  EXPECT_DOUBLE_EQ(ies.distribution.candela(0, 0), 10);
+  EXPECT_DOUBLE_EQ(ies.distribution.candela(0, 90), 5);
+  // Another year under the new identifier is not guessed at.
+  EXPECT_NE(message_of("IES:LM-63-2031\n" + body).find("lamp.ies:1: unknown format identifier"), std::string::npos);
+}
+
+TEST(IesReader, AByteOrderMarkDoesNotHideTheIdentifier) {
+  // A 2002 file whose future-use field is 0: read as the 1986 form (the identifier
+  // hidden behind the mark), that 0 was a ballast-lamp factor and the file refused.
+  std::string text = kIsotropic2002;
+  text.replace(text.find("1.0 1.0 100"), 11, "1.0 0 100");
+  const auto ies = parse_ies("\xEF\xBB\xBF" + text, "bom.ies");
+  EXPECT_EQ(ies.format, "LM-63-2002");
+  EXPECT_NEAR(ies.distribution.candela(0, 0), 79.5775, 1e-9);
 }
 
 TEST(IesReader, MalformedFilesNameFileAndLine) {

@@ -1,4 +1,4 @@
-// IES LM-63 reader (IES LM-63-02; also the 1995, 1991 and 1986 forms): the header and
+// IES LM-63 reader (ANSI/IES LM-63-19 and LM-63-02; also the 1995, 1991 and 1986 forms): the header and
 // keyword lines up to TILT=, the optional inline tilt table, then a free-format
 // numeric block in which numbers may wrap across lines and be separated by commas or
 // whitespace. Every error names the file and the line where the expected item was
@@ -107,7 +107,9 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   std::vector<std::string> lines;
   {
     std::string line;
-    std::istringstream stream(text);
+    // A byte order mark had hidden the identifier line: the file was read as the 1986
+    // form, its "future use" field as a factor.
+    std::istringstream stream{std::string(without_byte_order_mark(text))};
     while (std::getline(stream, line)) {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       lines.push_back(line);
@@ -122,15 +124,17 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   // The identifier line; a 1986 file has none and starts with free text.
   std::size_t li = 0;
   const std::string first = n_lines > 0 ? upper(trim(lines[0])) : std::string();
-  if (first.rfind("IESNA:LM-63-2002", 0) == 0)
+  if (first.rfind("IES:LM-63-2019", 0) == 0)
+    out.format = "LM-63-2019", li = 1;
+  else if (first.rfind("IESNA:LM-63-2002", 0) == 0)
     out.format = "LM-63-2002", li = 1;
   else if (first.rfind("IESNA:LM-63-1995", 0) == 0)
     out.format = "LM-63-1995", li = 1;
   else if (first.rfind("IESNA91", 0) == 0)
     out.format = "LM-63-1991", li = 1;
-  else if (first.rfind("IESNA", 0) == 0)
+  else if (first.rfind("IESNA", 0) == 0 || first.rfind("IES:", 0) == 0)
     fail(1, "unknown format identifier " + quote_excerpt(trim(lines[0])) +
-                " (expected IESNA:LM-63-2002, IESNA:LM-63-1995 or IESNA91)");
+                " (expected IES:LM-63-2019, IESNA:LM-63-2002, IESNA:LM-63-1995 or IESNA91)");
   else
     out.format = "LM-63-1986";
 
@@ -226,9 +230,16 @@ IesPhotometry parse_ies(const std::string& text, const std::string& name) {
   }
   {
     const int line = in.current_line();
-    const double field =
-        in.number(out.format == "LM-63-2002" ? "the future-use field" : "the ballast-lamp photometric factor");
-    if (out.format != "LM-63-2002") {
+    // The ballast-lamp photometric factor until 1995; a field for future use in 2002;
+    // in 2019 the file generation type (LM-63-2019 Table 2: 1.00000 to 1.11100 say
+    // whether the file was measured, simulated, interpolated or scaled), a code and no
+    // factor: an accredited lab's 1.10000 had made the luminaire 10 % too bright.
+    const bool is_factor = out.format != "LM-63-2002" && out.format != "LM-63-2019";
+    const double field = in.number(out.format == "LM-63-2002"   ? "the future-use field"
+                                   : out.format == "LM-63-2019" ? "the file generation type"
+                                                                : "the ballast-lamp photometric factor");
+    if (out.format == "LM-63-2019") out.file_generation_type = field;
+    if (is_factor) {
       if (field <= 0) in.fail(line, "the ballast-lamp photometric factor must be positive");
       out.ballast_lamp_factor = field;
     }
