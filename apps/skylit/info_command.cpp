@@ -28,6 +28,7 @@ struct InfoArguments {
 int run_info(const InfoArguments& args) {
   Scene scene = load_scene(args.scene_file, args.overrides);
   std::fputs(describe_objects(scene).c_str(), stdout);
+  std::fputs(describe_lights(scene).c_str(), stdout);
   if (scene.weather) {
     check_weather_model(scene);
     std::fputs(describe_weather(*scene.weather).c_str(), stdout);

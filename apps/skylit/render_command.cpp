@@ -67,7 +67,7 @@ int run_render(RenderArguments args) {
   if (args.preview) make_preview(scene.render);
   // Likely mistakes are said before the work; the camera checks build a ray-tracing
   // structure of their own, so only when asked for.
-  if (args.verbose) std::fputs(describe_objects(scene).c_str(), stderr);
+  if (args.verbose) std::fputs((describe_objects(scene) + describe_lights(scene)).c_str(), stderr);
   print_scene_warnings(scene, /*check_camera=*/args.verbose);
   if (!args.standard_error_outputs.empty() && scene.render.integrator != Integrator::path)
     throw InputError(args.scene_file +

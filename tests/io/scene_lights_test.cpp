@@ -7,6 +7,7 @@
 #include "../test_support.h"
 #include "skylit/core/error.h"
 #include "skylit/io/scene/scene_loader.h"
+#include "skylit/io/scene/scene_report.h"
 #include "skylit/spectrum/cie.h"
 
 namespace skylit {
@@ -39,6 +40,25 @@ TEST(SceneLights, ReadsFilesShapesLumensAndSpectra) {
   EXPECT_NEAR(scene.lights[1].luminaire.intensity({0, -1, 0}), 20000, 1e-9);
   EXPECT_NEAR(scene.lights[2].luminaire.distribution().luminous_flux(), 1000, 1e-3);  // rescaled
   for (const SceneLight& light : scene.lights) EXPECT_NEAR(luminance(light.spectrum_per_candela), 1.0, 1e-6);
+}
+
+TEST(SceneLights, InfoSaysEachSourcesFluxPeakAndHeights) {
+  TempDir dir;
+  dir.write("iso.ies", kIsotropicIes);
+  const Scene scene = load_scene(dir.write("scene.json", with_lights(R"([
+        {"name": "a", "position": [1, 2, 6], "ies": "iso.ies", "lamp": "led"},
+        {"name": "b", "position": [3, 2, 7.5], "ies": "iso.ies", "lamp": "led"},
+        {"name": "c", "position": [0, 0, 9], "shape": "isotropic", "candela": 10, "lumens": 1000, "lamp": "led"}])")));
+  const std::string text = describe_lights(scene);
+  // 500 cd over the lower half sphere: 500 · 2π = 3141.6 lm, from the file's table.
+  EXPECT_NE(text.find("lights: 3\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("'a' and 1 more: 'iso.ies' (LM-63-2002)\n    3142 lm each, peak 500 cd; at z 6.00 to 7.50 m\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("'c': isotropic shape, scaled to 1000 lm\n    1000 lm each, peak 80 cd; at z 9.00 m\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(describe_lights(load_scene(dir.write("none.json", with_lights("[]")))), "");
 }
 
 TEST(SceneLights, MistakesNameTheFileAndPlace) {

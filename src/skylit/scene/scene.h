@@ -166,6 +166,9 @@ struct SceneLight {
   std::string name;
   Luminaire luminaire;
   Spectrum spectrum_per_candela;
+  // Where its photometry came from, for skylit info: the file and its format and rated
+  // lumens, or the shape ("'road.ies' (LM-63-2002, lamps rated 12000 lm)", "spot shape").
+  std::string source{};
 };
 
 struct Scene {

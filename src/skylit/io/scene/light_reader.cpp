@@ -27,17 +27,20 @@ constexpr size_t kMaxSceneLights = 100000;
 struct Photometry {
   IntensityDistribution distribution;
   TiltTable tilt;
+  std::string source;  // for skylit info (SceneLight::source)
 };
+
+std::string rounded_lumens(double lumens) { return std::to_string(std::lround(lumens)) + " lm"; }
 
 Photometry read_shape(const JsonReader& j) {
   const std::string shape = j.required("shape").one_of({"isotropic", "cosine", "spot"});
   const double candela = j.required("candela").number_in(0, kMaxLuminousIntensityCd);
-  if (shape == "isotropic") return {IntensityDistribution::isotropic(candela), {}};
-  if (shape == "cosine") return {IntensityDistribution::cosine(candela), {}};
+  if (shape == "isotropic") return {IntensityDistribution::isotropic(candela), {}, "isotropic shape"};
+  if (shape == "cosine") return {IntensityDistribution::cosine(candela), {}, "cosine shape"};
   const double inner = j.required("inner_deg").number_in(0, 180);
   const double outer = j.required("outer_deg").number_in(0, 180);
   if (outer < inner) j.required("outer_deg").fail("outer_deg must not be below inner_deg");
-  return {IntensityDistribution::spot(candela, inner, outer), {}};
+  return {IntensityDistribution::spot(candela, inner, outer), {}, "spot shape"};
 }
 
 Photometry read_photometry(const JsonReader& j, const std::filesystem::path& base_dir) {
@@ -47,10 +50,20 @@ Photometry read_photometry(const JsonReader& j, const std::filesystem::path& bas
     if (j.has(key) && (!j.has("shape") || j.required("shape").string() != "spot"))
       j.required(key).fail("only a spot shape has cone angles");
   if (j.has("ies")) {
-    IesPhotometry ies = read_ies(base_dir / j.required("ies").string());
-    return {std::move(ies.distribution), std::move(ies.tilt)};
+    const std::string file = j.required("ies").string();
+    IesPhotometry ies = read_ies(base_dir / file);
+    std::string source = quote_name(file) + " (" + ies.format;
+    if (ies.rated_lumens() > 0) source += ", lamps rated " + rounded_lumens(ies.rated_lumens());
+    return {std::move(ies.distribution), std::move(ies.tilt), source + ")"};
   }
-  if (j.has("ldt")) return {read_eulumdat(base_dir / j.required("ldt").string()).distribution, {}};
+  if (j.has("ldt")) {
+    const std::string file = j.required("ldt").string();
+    EulumdatPhotometry ldt = read_eulumdat(base_dir / file);
+    std::string source = quote_name(file) + " (EULUMDAT, lamps " + rounded_lumens(ldt.lamp_sets.front().total_lumens);
+    if (ldt.light_output_ratio > 0)
+      source += ", light output ratio " + std::to_string(std::lround(ldt.light_output_ratio)) + " %";
+    return {std::move(ldt.distribution), {}, source + ")"};
+  }
   return read_shape(j);
 }
 
@@ -91,6 +104,7 @@ void scale_to_lumens(const JsonReader& j, Photometry& photometry) {
   const double flux = photometry.distribution.luminous_flux();
   if (!(flux > 0)) lumens->fail("the distribution sends out no light to scale");
   photometry.distribution = photometry.distribution.scaled(wanted / flux);
+  photometry.source += ", scaled to " + rounded_lumens(wanted);
   if (!(photometry.distribution.peak_candela() <= kMaxLuminousIntensityCd))
     lumens->fail("this flux from this distribution needs a peak over the limit of 1e9 cd");
 }
@@ -117,7 +131,8 @@ SceneLight read_light(const JsonReader& j, const std::filesystem::path& base_dir
   Photometry photometry = read_photometry(j, base_dir);
   scale_to_lumens(j, photometry);
   const Spectrum spectrum = read_spectrum(j, base_dir);
-  return {name, Luminaire(position, std::move(photometry.distribution), aim, rotation, photometry.tilt), spectrum};
+  return {name, Luminaire(position, std::move(photometry.distribution), aim, rotation, photometry.tilt), spectrum,
+          photometry.source};
 }
 
 LampRowSettings read_row_geometry(const JsonReader& j) {
@@ -167,7 +182,7 @@ void read_lamp_row(const JsonReader& j, const std::filesystem::path& base_dir, s
     out.push_back({name + " " + std::to_string(i + 1),
                    Luminaire(placements[i].position, photometry.distribution, placements[i].aim,
                              placements[i].rotation_deg, photometry.tilt),
-                   spectrum});
+                   spectrum, photometry.source});
 }
 
 // {"name", "position", "heading_deg", "beam", "ies"}: a car's pair of headlamps
@@ -184,9 +199,11 @@ void read_car(const JsonReader& j, const std::filesystem::path& base_dir, std::v
     const std::string lamp = name + " " + side + " headlamp";
     if (auto ies = j.optional("ies")) {
       IesPhotometry file = read_ies(base_dir / ies->string());
-      out.push_back({lamp, Luminaire(at, std::move(file.distribution), pair.forward, 0, file.tilt), spectrum});
+      out.push_back({lamp, Luminaire(at, std::move(file.distribution), pair.forward, 0, file.tilt), spectrum,
+                     "headlamp " + quote_name(ies->string()) + " (" + file.format + ")"});
     } else {
-      out.push_back({lamp, headlamp_luminaire(at, pair.forward, beam), spectrum});
+      out.push_back({lamp, headlamp_luminaire(at, pair.forward, beam), spectrum,
+                     beam == Beam::high ? "headlamp (high beam)" : "headlamp (low beam)"});
     }
   }
 }

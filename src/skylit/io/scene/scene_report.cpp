@@ -182,6 +182,33 @@ std::string describe_objects(const Scene& scene) {
   return out;
 }
 
+std::string describe_lights(const Scene& scene) {
+  if (scene.lights.empty()) return {};
+  std::string out = "lights: " + std::to_string(scene.lights.size()) + "\n";
+  // Lights of one row or file come together: a group is a run of one source.
+  for (size_t first = 0; first < scene.lights.size();) {
+    const SceneLight& light = scene.lights[first];
+    size_t end = first + 1;
+    double z_lo = light.luminaire.position().z, z_hi = z_lo;
+    const auto same_group = [&](const SceneLight& next) {
+      return next.source == light.source && next.luminaire.tilt_multiplier() == light.luminaire.tilt_multiplier();
+    };
+    for (; end < scene.lights.size() && same_group(scene.lights[end]); ++end) {
+      z_lo = std::min(z_lo, scene.lights[end].luminaire.position().z);
+      z_hi = std::max(z_hi, scene.lights[end].luminaire.position().z);
+    }
+    const IntensityDistribution& d = light.luminaire.distribution();
+    const double lumens = d.luminous_flux() * light.luminaire.tilt_multiplier();
+    out += "  " + quoted(light.name);
+    if (end - first > 1) out += " and " + std::to_string(end - first - 1) + " more";
+    out += ": " + (light.source.empty() ? std::string("photometry") : light.source) + "\n";
+    out += formatted("    %.0f lm each, peak %.0f cd; at z %.2f", lumens, d.peak_candela(), z_lo) +
+           (z_hi > z_lo ? formatted(" to %.2f m\n", z_hi) : std::string(" m\n"));
+    first = end;
+  }
+  return out;
+}
+
 std::vector<std::string> scene_warnings(const Scene& scene, bool check_camera) {
   std::vector<std::string> warnings;
   for (const SceneObject& object : scene.objects) {
