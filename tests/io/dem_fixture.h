@@ -13,9 +13,9 @@
 namespace skylit::testing {
 
 // Writes an nx × ny GeoTIFF with heights h(i, j), the geotransform and the EPSG code
-// given (0: no CRS), and -9999 as its no-data value.
+// given (0: no CRS), and -9999 as its no-data value; the band's unit if given.
 inline void write_dem(const std::filesystem::path& file, int nx, int ny, const double gt[6], int epsg,
-                      double (*h)(int, int)) {
+                      double (*h)(int, int), const char* unit = nullptr) {
   GDALAllRegister();
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   ASSERT_NE(driver, nullptr);
@@ -34,6 +34,7 @@ inline void write_dem(const std::filesystem::path& file, int nx, int ny, const d
     for (int i = 0; i < nx; ++i) values[static_cast<size_t>(j * nx + i)] = static_cast<float>(h(i, j));
   GDALRasterBand* band = ds->GetRasterBand(1);
   band->SetNoDataValue(-9999);
+  if (unit != nullptr) band->SetUnitType(unit);
   ASSERT_EQ(band->RasterIO(GF_Write, 0, 0, nx, ny, values.data(), nx, ny, GDT_Float32, 0, 0), CE_None);
   GDALClose(ds);
 }

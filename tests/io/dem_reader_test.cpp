@@ -23,7 +23,7 @@ CityModel written_and_read(int nx, int ny, const double gt[6], int epsg, double 
   TempDir dir;
   const auto file = dir.path() / "dem.tif";
   write_dem(file, nx, ny, gt, epsg, h);
-  return read_dem_terrain(file);
+  return read_dem_terrain(file).model;
 }
 
 double sloped(int i, int j) { return (i == 3 && j == 2) ? -9999 : 10 + i + 2 * j; }
@@ -74,8 +74,72 @@ TEST(DemReader, UnreadableOrUngeoreferencedFilesAreNamed) {
   const double gt[6] = {0, 1, 0, 0, 0, -1};
   write_dem(no_crs, 2, 2, gt, 0, flat);
   EXPECT_EQ(input_error_of([&] { read_dem_terrain(no_crs); }),
-            no_crs.string() + ": the terrain DEM names no coordinate reference system");
+            no_crs.string() + ": the terrain DEM names no coordinate reference system; give the terrain's \"crs\"");
+  // With the scene's CRS it is read (an ESRI grid without its .prj, an XYZ file), the
+  // CRS left to the scene.
+  const DemTerrain given = read_dem_terrain(no_crs, /*crs_given=*/true);
+  EXPECT_EQ(given.model.crs, "");
+  EXPECT_EQ(given.model.objects[0].surfaces.size(), 2u);
+  // A file GDAL recognises without a word still gets a reason (it once ended in ": ").
+  const auto empty = dir.write("empty.tif", "");
+  const std::string message = input_error_of([&] { read_dem_terrain(empty); });
+  EXPECT_EQ(message.back() == ' ', false) << message;
   EXPECT_EQ(input_error_of([&] { read_dem_terrain(dir.path() / "missing.tif"); }).rfind(dir.path().string(), 0), 0u);
+}
+
+double ramp(int i, int j) { return 10 + i + 2 * j; }
+
+TEST(DemReader, HeightsInFeetBecomeMetres) {
+  TempDir dir;
+  const double gt[6] = {380000, 10, 0, 3940000, 0, -10};
+  for (const auto& [unit, metres] : {std::pair{"ft", 0.3048}, std::pair{"US survey foot", 1200.0 / 3937.0},
+                                     std::pair{"m", 1.0}, std::pair{"cm", 0.01}}) {
+    const auto file = dir.path() / (std::string(unit) + ".tif");
+    write_dem(file, 3, 3, gt, 32654, ramp, unit);
+    const DemTerrain dem = read_dem_terrain(file);
+    EXPECT_EQ(dem.height_unit, unit);
+    for (const CitySurface& s : dem.model.objects[0].surfaces)
+      for (const Vec3& p : s.rings[0]) {
+        const int i = static_cast<int>(std::lround((p.x - 380000) / 10 - 0.5));
+        const int j = static_cast<int>(std::lround((3940000 - p.y) / 10 - 0.5));
+        EXPECT_NEAR(p.z, ramp(i, j) * metres, 1e-9) << unit;
+      }
+  }
+}
+
+double spike(int i, int j) { return (i == 1 && j == 2) ? 1e30 : 5.0; }
+
+TEST(DemReader, AHeightNoTerrainHasIsRefusedNamingItsCell) {
+  TempDir dir;
+  const auto file = dir.path() / "spike.tif";
+  const double gt[6] = {380000, 10, 0, 3940000, 0, -10};
+  write_dem(file, 3, 3, gt, 32654, spike);
+  EXPECT_EQ(input_error_of([&] { read_dem_terrain(file); }),
+            file.string() +
+                ": the terrain DEM's cell at pixel 1, line 2 has a height of 1e+30 m, beyond any terrain on earth: "
+                "a no-data value the file does not declare?");
+}
+
+TEST(DemReader, ALargeDemIsReadAveragedDownToFit) {
+  TempDir dir;
+  const auto file = dir.path() / "big.tif";
+  // 40 × 30 cells of 10 m read into at most 300: a factor 2, 20 × 15 cells of 20 m.
+  const double gt[6] = {380000, 10, 0, 3940000, 0, -10};
+  write_dem(file, 40, 30, gt, 32654, ramp);
+  const DemTerrain dem = read_dem_terrain(file, false, 300);
+  EXPECT_EQ(dem.file_width, 40);
+  EXPECT_EQ(dem.read_width, 20);
+  EXPECT_EQ(dem.read_height, 15);
+  EXPECT_DOUBLE_EQ(dem.cell_size_x, 20);
+  EXPECT_EQ(dem.model.objects[0].surfaces.size(), 2u * 19 * 14);
+  for (const CitySurface& s : dem.model.objects[0].surfaces)
+    for (const Vec3& p : s.rings[0]) {
+      // At a coarse cell's centre the mean of its four fine cells, which for a ramp is
+      // the ramp there (fine indices i = 2I + 0.5, j = 2J + 0.5).
+      const double I = (p.x - 380000) / 20 - 0.5, J = (3940000 - p.y) / 20 - 0.5;
+      EXPECT_NEAR(I, std::round(I), 1e-9);
+      EXPECT_NEAR(p.z, 10 + (2 * std::round(I) + 0.5) + 2 * (2 * std::round(J) + 0.5), 1e-4);
+    }
 }
 
 }  // namespace

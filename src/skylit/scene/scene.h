@@ -135,6 +135,10 @@ struct CitySource {
   std::string appearance_theme;
   size_t appearance_triangles = 0;
   std::vector<std::string> missing_texture_images;
+  // The terrain DEM, if any, said for skylit info (its file, cells, resampling, height
+  // unit), and what looks wrong about it (placed far from the model, a unit not known).
+  std::string terrain;
+  std::vector<std::string> terrain_warnings;
 };
 
 struct SceneObject {

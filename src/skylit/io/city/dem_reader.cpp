@@ -3,7 +3,9 @@
 // back into the CRS's own axis order.
 #include "skylit/io/city/dem_reader.h"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <mutex>
 #include <string>
@@ -13,6 +15,7 @@
 #include <ogr_spatialref.h>
 
 #include "skylit/core/error.h"
+#include "skylit/core/formatted.h"
 #include "skylit/core/text_file.h"
 
 namespace skylit {
@@ -33,47 +36,110 @@ std::string crs_of(const OGRSpatialReference& srs) {
   return text;
 }
 
+// GDAL's messages are gathered for ours, not printed: a damaged file gives one line.
+class QuietGdalErrors {
+ public:
+  QuietGdalErrors() {
+    CPLErrorReset();
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+  }
+  ~QuietGdalErrors() { CPLPopErrorHandler(); }
+  QuietGdalErrors(const QuietGdalErrors&) = delete;
+  QuietGdalErrors& operator=(const QuietGdalErrors&) = delete;
+  // GDAL's last message, or what is known without one (a file it does not recognise
+  // leaves none).
+  static std::string reason() {
+    const std::string message = CPLGetLastErrorMsg();
+    return message.empty() ? "not a raster GDAL reads" : message;
+  }
+};
+
+// Metres per unit of a height unit's name (GDAL's band unit or a vertical CRS's unit):
+// feet are the international foot unless US survey feet are named; `known` is false
+// for a name not recognised (read as metres).
+double metres_per_unit(std::string name, bool& known) {
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  known = true;
+  const bool us = name.find("us") != std::string::npos || name.find("survey") != std::string::npos;
+  if (name.find("foot") != std::string::npos || name.find("feet") != std::string::npos || name == "ft" ||
+      name == "ftus" || name == "us-ft" || name == "us_ft")
+    return us ? 1200.0 / 3937.0 : 0.3048;
+  if (name == "cm" || name.rfind("centimet", 0) == 0) return 0.01;
+  if (name == "mm" || name.rfind("millimet", 0) == 0) return 0.001;
+  if (name.empty() || name == "m" || name.rfind("metre", 0) == 0 || name.rfind("meter", 0) == 0) return 1;
+  known = false;
+  return 1;
+}
+
 }  // namespace
 
-CityModel read_dem_terrain(const std::filesystem::path& file) {
+DemTerrain read_dem_terrain(const std::filesystem::path& file, bool crs_given, size_t max_cells) {
   const std::string name = file.string();
   require_regular_file(file, "terrain DEM");
   static std::once_flag registered;
   std::call_once(registered, [] { GDALAllRegister(); });
-  CPLErrorReset();
-  CPLPushErrorHandler(CPLQuietErrorHandler);
+  const QuietGdalErrors quiet;
   GDALDatasetUniquePtr dataset(GDALDataset::Open(name.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-  CPLPopErrorHandler();
-  if (!dataset) throw InputError(name + ": cannot read the terrain DEM: " + CPLGetLastErrorMsg());
+  if (!dataset) throw InputError(name + ": cannot read the terrain DEM: " + QuietGdalErrors::reason());
   double gt[6];
   if (dataset->GetGeoTransform(gt) != CE_None)
     throw InputError(name + ": the terrain DEM has no georeferencing (no geotransform)");
   const OGRSpatialReference* srs = dataset->GetSpatialRef();
-  if (srs == nullptr || srs->IsEmpty())
-    throw InputError(name + ": the terrain DEM names no coordinate reference system");
+  const bool has_crs = srs != nullptr && !srs->IsEmpty();
+  if (!has_crs && !crs_given)
+    throw InputError(name + ": the terrain DEM names no coordinate reference system; give the terrain's \"crs\"");
   if (dataset->GetRasterCount() < 1) throw InputError(name + ": the terrain DEM has no band");
-  const size_t nx = static_cast<size_t>(dataset->GetRasterXSize()), ny = static_cast<size_t>(dataset->GetRasterYSize());
-  if (nx < 2 || ny < 2) throw InputError(name + ": the terrain DEM has fewer than 2 × 2 cells");
-  if (nx * ny > kMaxDemCells)
-    throw InputError(name + ": the terrain DEM has " + std::to_string(nx) + " × " + std::to_string(ny) +
-                     " cells, more than the 4096² read; crop or resample it (gdal_translate)");
+  DemTerrain out;
+  out.file_width = dataset->GetRasterXSize();
+  out.file_height = dataset->GetRasterYSize();
+  if (out.file_width < 2 || out.file_height < 2)
+    throw InputError(name + ": the terrain DEM has fewer than 2 × 2 cells");
+  // A larger raster is read averaged down to fit, its aspect kept.
+  const double cells = static_cast<double>(out.file_width) * out.file_height;
+  const double shrink = std::max(1.0, std::sqrt(cells / static_cast<double>(max_cells)));
+  out.read_width = std::max(2, static_cast<int>(out.file_width / shrink));
+  out.read_height = std::max(2, static_cast<int>(out.file_height / shrink));
+  const size_t nx = static_cast<size_t>(out.read_width), ny = static_cast<size_t>(out.read_height);
+  const double sx = static_cast<double>(out.file_width) / out.read_width;
+  const double sy = static_cast<double>(out.file_height) / out.read_height;
+  gt[1] *= sx, gt[4] *= sx, gt[2] *= sy, gt[5] *= sy;
+  out.cell_size_x = std::hypot(gt[1], gt[4]);
+  out.cell_size_y = std::hypot(gt[2], gt[5]);
 
   GDALRasterBand* band = dataset->GetRasterBand(1);
   std::vector<double> height(nx * ny);
-  if (band->RasterIO(GF_Read, 0, 0, static_cast<int>(nx), static_cast<int>(ny), height.data(), static_cast<int>(nx),
-                     static_cast<int>(ny), GDT_Float64, 0, 0) != CE_None)
-    throw InputError(name + ": cannot read the terrain DEM's heights: " + CPLGetLastErrorMsg());
+  GDALRasterIOExtraArg resampling;
+  INIT_RASTERIO_EXTRA_ARG(resampling);
+  resampling.eResampleAlg = GRIORA_Average;  // no-data cells are left out of the means
+  if (band->RasterIO(GF_Read, 0, 0, out.file_width, out.file_height, height.data(), static_cast<int>(nx),
+                     static_cast<int>(ny), GDT_Float64, 0, 0, &resampling) != CE_None)
+    throw InputError(name + ": cannot read the terrain DEM's heights: " + QuietGdalErrors::reason());
   int has_no_data = 0;
   const double no_data = band->GetNoDataValue(&has_no_data);
   const double scale = band->GetScale(), offset = band->GetOffset();
+  // The heights' unit: the band's, else the vertical CRS's (a compound CRS in US feet).
+  out.height_unit = band->GetUnitType();
+  if (out.height_unit.empty() && has_crs && srs->IsCompound()) {
+    const char* vertical = nullptr;
+    srs->GetTargetLinearUnits("VERT_CS", &vertical);
+    if (vertical != nullptr) out.height_unit = vertical;
+  }
+  out.metres_per_height_unit = metres_per_unit(out.height_unit, out.height_unit_known);
   std::vector<bool> valid(nx * ny);
   for (size_t k = 0; k < height.size(); ++k) {
     valid[k] = !(has_no_data && height[k] == no_data) && std::isfinite(height[k]);
-    height[k] = height[k] * scale + offset;
+    height[k] = (height[k] * scale + offset) * out.metres_per_height_unit;
+    if (valid[k] && !(height[k] >= kLowestTerrainM && height[k] <= kHighestTerrainM))
+      throw InputError(name + ": the terrain DEM's cell at pixel " + std::to_string(k % nx) + ", line " +
+                       std::to_string(k / nx) + (shrink > 1 ? " (of the raster resampled to fit)" : "") +
+                       " has a height of " + formatted("%g", height[k]) +
+                       " m, beyond any terrain on earth: a no-data value the file does not declare?");
   }
 
   // GDAL's map coordinates (east first) → the CRS's own axis order.
-  OGRSpatialReference gis(*srs);
+  // Without a CRS of its own the scene's gives the order, and the file's is GDAL's.
+  OGRSpatialReference gis;
+  if (has_crs) gis = *srs;
   gis.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   const std::vector<int> mapping = gis.GetDataAxisToSRSAxisMapping();
   const auto point = [&](size_t i, size_t j) {
@@ -118,10 +184,9 @@ CityModel read_dem_terrain(const std::filesystem::path& file) {
   }
   if (terrain.surfaces.empty())
     throw InputError(name + ": the terrain DEM has no cell with heights at its four corners");
-  CityModel model;
-  model.crs = crs_of(*srs);
-  model.objects.push_back(std::move(terrain));
-  return model;
+  if (has_crs) out.model.crs = crs_of(*srs);
+  out.model.objects.push_back(std::move(terrain));
+  return out;
 }
 
 }  // namespace skylit

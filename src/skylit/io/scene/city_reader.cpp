@@ -4,10 +4,12 @@
 // and textures of one theme), else the default palette for their class
 // (io/city/city_palette.h). docs/city-models.md describes it.
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 
 #include "skylit/core/file_names.h"
+#include "skylit/core/formatted.h"
 #include "skylit/core/text_file.h"
 #include "skylit/geometry/terrain_surface.h"
 #include "skylit/io/city/city_appearance.h"
@@ -34,20 +36,61 @@ CityModel read_city_file(const JsonReader& file_value, const std::filesystem::pa
                   "': expected CityJSON (.json, .city.json, .city.jsonl) or CityGML (.gml, .citygml, .xml)");
 }
 
+// The x–y box of the placed objects' vertices (metres, the local frame).
+BoundingBox plan_box(const std::vector<PlacedCityObject>& objects) {
+  BoundingBox box;
+  for (const PlacedCityObject& o : objects)
+    for (const Vec3& v : o.mesh.vertices) box.add({v.x, v.y, 0});
+  return box;
+}
+
 // The object's `terrain`: a DEM (GeoTIFF or any raster GDAL reads) placed in the city
 // model's frame, at its ground level, as one more TIN relief of the model.
 void add_dem_terrain(const JsonReader& terrain, const std::filesystem::path& base_dir, CityPlacementOptions options,
-                     PlacedCity& placed) {
+                     PlacedCity& placed, CitySource& source) {
   terrain.allow_only({"file", "crs"});
   const std::filesystem::path file = base_dir / terrain.required("file").string();
-  const CityModel dem = read_dem_terrain(file);
+  const DemTerrain dem = read_dem_terrain(file, terrain.has("crs"));
   options.crs = terrain.optional("crs") ? terrain.required("crs").string() : "";
   options.origin = GeoPoint{placed.origin.latitude_deg, placed.origin.longitude_deg, 0};
   options.ground_height_m = placed.origin.height_m;
   options.region.reset();  // the DEM is one object: a region would take all or none of it
-  options.curvature = placed.curvature_applied ? EarthCurvature::on : EarthCurvature::off;
-  PlacedCity relief = place_city_model(dem, options, file.string());
+  // The curvature drop where the model has it, and where the DEM alone reaches far
+  // enough for it (a DEM of 100 km under a small model had stood 800 m too high at its
+  // edge); the buildings are set down on the terrain either way.
+  if (placed.curvature_applied) options.curvature = EarthCurvature::on;
+  PlacedCity relief = place_city_model(dem.model, options, file.string());
   if (relief.objects.empty()) terrain.required("file").fail("the DEM gives no terrain");
+
+  // A CRS without an EPSG code is WKT: its name says it in a line.
+  const size_t quote = relief.crs.find('"');
+  const std::string crs = relief.crs.starts_with("EPSG:") || quote == std::string::npos
+                              ? relief.crs
+                              : relief.crs.substr(quote + 1, relief.crs.find('"', quote + 1) - quote - 1);
+  source.terrain = file.string() + ", CRS " + crs + ", " + std::to_string(dem.file_width) + " × " +
+                   std::to_string(dem.file_height) + " cells";
+  if (dem.read_width != dem.file_width || dem.read_height != dem.file_height)
+    source.terrain += " read averaged down to " + std::to_string(dem.read_width) + " × " +
+                      std::to_string(dem.read_height) + " (at most " + std::to_string(kMaxDemCells) + " cells)";
+  source.terrain += formatted(" of %.4g × %.4g", dem.cell_size_x, dem.cell_size_y) + " CRS units";
+  if (!dem.height_unit.empty())
+    source.terrain += "; heights in '" + dem.height_unit + "'" +
+                      (dem.metres_per_height_unit != 1 ? formatted(" × %.10g m", dem.metres_per_height_unit) : "");
+  if (!dem.height_unit_known)
+    source.terrain_warnings.push_back("terrain DEM " + quote_name(file.string()) + ": its heights' unit '" +
+                                      dem.height_unit + "' is not one skylit knows; they are read as metres");
+  // A DEM in another place than the model (a wrong CRS, of the DEM or of the model)
+  // would otherwise only show as an empty or odd picture.
+  const BoundingBox city = plan_box(placed.objects), ground = plan_box(relief.objects);
+  if (!city.empty() && !ground.empty()) {
+    const double gap_x = std::max({0.0, city.lo.x - ground.hi.x, ground.lo.x - city.hi.x});
+    const double gap_y = std::max({0.0, city.lo.y - ground.hi.y, ground.lo.y - city.hi.y});
+    if (const double gap = std::hypot(gap_x, gap_y); gap > 0)
+      source.terrain_warnings.push_back(
+          "terrain DEM " + quote_name(file.string()) +
+          formatted(" lies %.1f km from the city model and does not reach under it: ", gap / 1000) +
+          "is the CRS of either right?");
+  }
   for (PlacedCityObject& o : relief.objects) {
     for (uint32_t& c : o.triangle_class) {
       const std::string& key = relief.classes[c];
@@ -246,12 +289,12 @@ SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir
                               " surfaces of the city model have zero area once placed: are its coordinates (or a "
                               "CityJSON transform's scale and translate) right?"
                         : "the city model has no surfaces to show (in the region, at the LoD)");
-  if (auto terrain = j.optional("terrain")) add_dem_terrain(*terrain, base_dir, options, placed);
+  CitySource source;
+  if (auto terrain = j.optional("terrain")) add_dem_terrain(*terrain, base_dir, options, placed, source);
   if (!site)  // the model's centre becomes the site, for the sun
     site = SiteLocation{placed.origin.latitude_deg, placed.origin.longitude_deg,
                         std::clamp(placed.origin.height_m, -500.0, 9000.0)};
 
-  CitySource source;
   source.file = file.string();
   source.crs = placed.crs;
   source.latitude_deg = placed.origin.latitude_deg;

@@ -57,6 +57,8 @@ void check_model_placement(const SceneObject& object, std::vector<std::string>& 
 // probably wrong (another city's, or a weather station's far away), and the earth's
 // curvature puts the model kilometres below the horizon.
 void check_city_placement(const SceneObject& object, std::vector<std::string>& warnings) {
+  for (const std::string& w : object.city->terrain_warnings)
+    warnings.push_back("object " + quoted(object.name) + ": " + w);
   if (object.city && object.city->axes_swapped)
     warnings.push_back("object " + quoted(object.name) +
                        ": the file's first two coordinates are read the other way "
@@ -135,6 +137,7 @@ std::string describe_city(const CitySource& c) {
   if (c.appearance_triangles > 0)
     out += "  " + std::to_string(c.appearance_triangles) + " triangles take the file's appearance (theme " +
            quoted(c.appearance_theme) + "); the others their class's material\n";
+  if (!c.terrain.empty()) out += "  terrain: " + c.terrain + "\n";
   out += "  surfaces (by class):\n";
   for (const auto& k : c.classes)
     out += "    " + k.name + ": " + std::to_string(k.triangles) + " triangles → " + k.material + "\n";
