@@ -11,8 +11,9 @@
 
 namespace skylit {
 
-// evalglare's default: a pixel is part of a glare source when its luminance exceeds
-// this many times the view's mean luminance.
+// The paper's method (evalglare's -b 5; its own default is now a fixed 2000 cd/m²): a
+// pixel is part of a glare source when its luminance exceeds this many times the
+// view's mean luminance.
 inline constexpr double kGlareSourceFactor = 5.0;
 
 struct GlareResult {
