@@ -118,6 +118,21 @@ TEST(TerrainSurface, ABuildingMeshMovesByItsGroundTriangles) {
   EXPECT_NEAR(cube.vertices[4].z, plane(2, 2) + 4, 1e-5);  // the roof moved with it
 }
 
+TEST(TerrainSurface, ABlockWithoutAFloorIsSetDownByItsWallsBottomEdges) {
+  const TerrainSurface terrain(terrain_mesh(tin_file(20, plane)));
+  // Two walls of a 4 m block (no floor, no ground flags), their bottom 1.2 m above the
+  // slope at its downhill corner (2, 2): set down there, as the same block with a floor.
+  TriangleMesh walls;
+  const double bottom = plane(2, 2) + 1.2;
+  walls.vertices = {{2, 2, bottom},     {6, 2, bottom}, {6, 2, bottom + 4},
+                    {2, 2, bottom + 4}, {2, 6, bottom}, {2, 6, bottom + 4}};
+  walls.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 0, 3}, {4, 3, 5}};
+  const auto shift = seat_on_terrain(terrain, walls, {false, false, false, false});
+  ASSERT_TRUE(shift);
+  EXPECT_NEAR(*shift, -1.2, 1e-5);
+  EXPECT_NEAR(walls.vertices[0].z, plane(2, 2), 1e-5);
+}
+
 TEST(TerrainSurface, AHollowBetweenCornersIsSeen) {
   // A valley along x = 5 (0.2 m per m either side): the corners of a 10 m floor see
   // terrain 1 m high, the middle of its edges 0 m.

@@ -110,6 +110,18 @@ std::optional<double> seat_on_terrain(const TerrainSurface& terrain, TriangleMes
       const auto& t = building.triangles[k];
       ground.push_back({building.vertices[t[0]], building.vertices[t[1]], building.vertices[t[2]]});
     }
+  if (ground.empty() && !building.vertices.empty()) {
+    // No ground surface (LoD1 blocks with an open bottom, as in Delft's 3D BAG extract):
+    // its walls' bottom edges, those within 1 cm of its lowest point, are its footprint.
+    // Until 2026-12-07 such a building was not set down at all, and nothing said so.
+    double lowest = building.vertices.front().z;
+    for (const Vec3& v : building.vertices) lowest = std::min(lowest, v.z);
+    for (const auto& t : building.triangles)
+      for (size_t e = 0; e < 3; ++e) {
+        const Vec3 &a = building.vertices[t[e]], &b = building.vertices[t[(e + 1) % 3]];
+        if (a.z < lowest + 0.01 && b.z < lowest + 0.01) ground.push_back({a, b});
+      }
+  }
   const auto shift = seating_shift_m(terrain, ground);
   if (shift)
     for (Vec3& v : building.vertices) v.z += *shift;

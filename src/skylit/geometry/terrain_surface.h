@@ -48,8 +48,9 @@ std::optional<double> seating_shift_m(const TerrainSurface& terrain,
                                       const std::vector<std::vector<Vec3>>& ground_rings);
 
 // The same for a placed building's mesh: its ground triangles (is_ground, one flag per
-// triangle) are its ground surface; every vertex is moved by the shift, which is
-// returned (nullopt, nothing moved, when no ground triangle lies over the terrain).
+// triangle) are its ground surface, or without any the edges along its lowest point
+// (walls of a block with an open bottom); every vertex is moved by the shift, which is
+// returned (nullopt, nothing moved, when no ground lies over the terrain).
 std::optional<double> seat_on_terrain(const TerrainSurface& terrain, TriangleMesh& building,
                                       const std::vector<bool>& is_ground);
 
