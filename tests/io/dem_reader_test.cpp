@@ -109,6 +109,22 @@ TEST(DemReader, HeightsInFeetBecomeMetres) {
 
 double spike(int i, int j) { return (i == 1 && j == 2) ? 1e30 : 5.0; }
 
+TEST(DemReader, CellsOfACommonNoDataValueTheFileDoesNotDeclareAreCounted) {
+  TempDir dir;
+  const double gt[6] = {380000, 10, 0, 3940000, 0, -10};
+  // write_dem declares -9999; the fixture's corner cell holds it, so nothing is counted.
+  const auto declared = dir.path() / "declared.tif";
+  write_dem(declared, 4, 3, gt, 32654, sloped);
+  EXPECT_EQ(read_dem_terrain(declared).undeclared_no_data_cells, 0u);
+  // The same heights as an ESRI grid without a NODATA_value line.
+  const auto grid = dir.write("grid.asc",
+                              "ncols 4\nnrows 3\nxllcorner 380000\nyllcorner 3939970\ncellsize 10\n"
+                              "10 11 12 13\n12 13 14 15\n14 15 16 -9999\n");
+  const DemTerrain dem = read_dem_terrain(grid, /*crs_given=*/true);
+  EXPECT_EQ(dem.undeclared_no_data_cells, 1u);
+  EXPECT_EQ(dem.undeclared_no_data_value, -9999);
+}
+
 TEST(DemReader, AHeightNoTerrainHasIsRefusedNamingItsCell) {
   TempDir dir;
   const auto file = dir.path() / "spike.tif";

@@ -128,6 +128,10 @@ DemTerrain read_dem_terrain(const std::filesystem::path& file, bool crs_given, s
   std::vector<bool> valid(nx * ny);
   for (size_t k = 0; k < height.size(); ++k) {
     valid[k] = !(has_no_data && height[k] == no_data) && std::isfinite(height[k]);
+    if (!has_no_data && (height[k] == -9999 || height[k] == -32767 || height[k] == -32768)) {
+      ++out.undeclared_no_data_cells;
+      out.undeclared_no_data_value = height[k];
+    }
     height[k] = (height[k] * scale + offset) * out.metres_per_height_unit;
     if (valid[k] && !(height[k] >= kLowestTerrainM && height[k] <= kHighestTerrainM))
       throw InputError(name + ": the terrain DEM's cell at pixel " + std::to_string(k % nx) + ", line " +

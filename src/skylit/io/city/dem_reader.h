@@ -33,6 +33,10 @@ struct DemTerrain {
   std::string height_unit;
   double metres_per_height_unit = 1;
   bool height_unit_known = true;  // false: a unit name not recognised, read as metres
+  // Without a declared no-data value: how many cells hold one of the values commonly
+  // written for it (-9999, -32767, -32768), read as heights (pits), and which.
+  size_t undeclared_no_data_cells = 0;
+  double undeclared_no_data_value = 0;
 };
 
 // The first band's heights (scaled and offset as the band says, converted to metres) at

@@ -79,6 +79,12 @@ void add_dem_terrain(const JsonReader& terrain, const std::filesystem::path& bas
   if (!dem.height_unit_known)
     source.terrain_warnings.push_back("terrain DEM " + quote_name(file.string()) + ": its heights' unit '" +
                                       dem.height_unit + "' is not one skylit knows; they are read as metres");
+  if (dem.undeclared_no_data_cells > 0)
+    source.terrain_warnings.push_back(
+        "terrain DEM " + quote_name(file.string()) + ": " + std::to_string(dem.undeclared_no_data_cells) +
+        formatted(" cells hold %g, a value often written for no data, but the file declares none: ",
+                  dem.undeclared_no_data_value) +
+        "they are read as heights (pits); declare it as the no-data value if it is one");
   // A DEM in another place than the model (a wrong CRS, of the DEM or of the model)
   // would otherwise only show as an empty or odd picture.
   const BoundingBox city = plan_box(placed.objects), ground = plan_box(relief.objects);
