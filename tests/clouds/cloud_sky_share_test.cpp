@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "cloud_test_support.h"
+#include "skylit/clouds/clouds_in_sky.h"
+#include "skylit/spectrum/cie.h"
 
 namespace skylit {
 namespace {
@@ -148,6 +150,29 @@ TEST(CloudSkyShare, GridFollowsTheShareMeasuredAtEachPoint) {
               share().nodes_y(), mean, p95, offs.back(), offs.size());
   EXPECT_LT(mean, 0.02);
   EXPECT_LT(p95, 0.07);
+}
+
+}  // namespace
+}  // namespace skylit
+
+namespace skylit {
+namespace {
+
+// A generated layer's light share (cloud_layer.h) scales the light its clouds send and
+// nothing else the sky sends past them, so the clouded sky's mean horizontal irradiance
+// is linear in it: what the weather hours' fit of the share relies on (two measurements
+// give it exactly). At share 0 the clouds only hide and dim the sky behind them.
+TEST(CloudSkyShare, TheMeanIrradianceIsLinearInTheLayersLightShare) {
+  CloudLayerSettings settings;
+  settings.coverage = 0.6, settings.altitude = 1500, settings.half_extent = 3000, settings.seed = 7;
+  auto mean_lux = [&](double light_share) {
+    settings.light_share = light_share;
+    const CloudsInSky in_sky({}, settings, test_sky(), {0, 0, 0}, CloudLightModel::two_stream, 4);
+    return illuminance(in_sky.sky_share_grid().mean_irradiance_up());
+  };
+  const double dark = mean_lux(0), half = mean_lux(0.5), lit = mean_lux(1);
+  EXPECT_GT(lit, 1.5 * dark);  // sunlit clouds send most of the light under them
+  EXPECT_NEAR(half, 0.5 * (dark + lit), 1e-4 * lit);
 }
 
 }  // namespace

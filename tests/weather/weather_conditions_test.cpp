@@ -116,6 +116,53 @@ TEST(WeatherConditions, ClearHoursOfTheSharedFileMatchTheModel) {
   EXPECT_EQ(checked, all ? 102 : 2);
 }
 
+// A cloudy hour's beam is a mean through moving clouds: the aerosol comes from the
+// visibility, and the beam says how much of the hour the sun shone (it is not the clear
+// part of the sky). A beam brighter than that air lets through all hour means clearer air:
+// then the aerosol is fitted to it with the sun out all hour.
+TEST(WeatherConditions, ACloudyHoursBeamGivesTheSunshineNotTheAerosol) {
+  EpwRecordFields dim, bright;
+  dim.day = 24, dim.opaque_cover = dim.total_cover = "9", dim.dn_lux = "2800", dim.visibility = "20.0";
+  bright.day = 25, bright.opaque_cover = bright.total_cover = "9", bright.dn_lux = "95000", bright.visibility = "5.0";
+  const EpwFile file = parse_epw(epw_fixture({dim, bright}), "fixture.epw");
+  const Scene a = scene_for(file, 6, 24, 13);
+  AtmosphereSettings air = a.atmosphere;
+  EXPECT_NEAR(air.aerosol.aod_550, aod_550_from_visibility(20.0, air.aerosol.scale_height_m), 1e-12);
+  const double clear_beam = illuminance(direct_sun_at_ground(air, radians(a.sun.altitude_deg)));
+  EXPECT_GT(clear_beam, 60000);  // a clear summer noon's beam, not 2800 / 0.1 = 28,000 lx
+  EXPECT_NEAR(a.weather->clear_fraction, 2800 / clear_beam, 1e-9);
+  const Scene b = scene_for(file, 6, 25, 13);
+  EXPECT_DOUBLE_EQ(b.weather->clear_fraction, 1.0);
+  air = b.atmosphere;
+  EXPECT_LT(air.aerosol.aod_550, aod_550_from_visibility(5.0, air.aerosol.scale_height_m));
+  EXPECT_NEAR(illuminance(direct_sun_at_ground(air, radians(b.sun.altitude_deg))), 95000, 0.001 * 95000);
+}
+
+// The outside check's hour (docs/weather.md, "Cloudy hours"): Amsterdam 07-10 hour 13,
+// opaque cover 9/10, a beam of 2,800 lx and 43,100 lx of diffuse light. Its beam fitted
+// as the clear tenth's (aod_550 1.22) and a layer of clouds each lit as if alone gave the
+// clouded sky 65,800 lx (+53 %). Now the clouded sky, as the renderer sees it, gives the
+// file's diffuse and global horizontal illuminance within 5 % (the clouds' light share is
+// fitted to the diffuse light, and the beam is the file's), and the aerosol is the
+// visibility's.
+TEST(WeatherConditions, ANearlyOvercastHourGivesTheFilesDiffuseLight) {
+  const std::filesystem::path path =
+      std::filesystem::path(SKYLIT_SOURCE_DIR) / "../shared/data/NLD_Amsterdam062400_IWEC.epw";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path << " (the shared data is not on this machine)";
+  const EpwFile file = read_epw(path);
+  Scene scene = scene_for(file, 7, 10, 13);
+  ASSERT_TRUE(scene.cloud_layer);
+  EXPECT_DOUBLE_EQ(scene.cloud_layer->coverage, 0.9);
+  EXPECT_LT(scene.atmosphere.aerosol.aod_550, 0.3);  // 45 km of visibility, not a haze of 1.2
+  ASSERT_TRUE(scene.cloud_layer->diffuse_horizontal_lux);
+  EXPECT_DOUBLE_EQ(*scene.cloud_layer->diffuse_horizontal_lux, 43100);
+  check_weather_model(scene);
+  const WeatherSummary& w = *scene.weather;
+  EXPECT_NEAR(*w.model_diffuse_horizontal_lux, 43100, 0.05 * 43100);
+  EXPECT_NEAR(*w.model_global_horizontal_lux, 45000, 0.05 * 45000);
+  EXPECT_NEAR(*w.model_direct_normal_lux, 2800, 0.02 * 2800);
+}
+
 // A station's weather placed at a site elsewhere: the sun as seen from the site at the
 // record's instant (the hour's middle in the file's standard time), the site's own
 // elevation for the air, and how far the station lies.
@@ -148,7 +195,6 @@ TEST(WeatherConditions, OpaqueCoverBeyondTheTotalIsSaid) {
   for (const std::string& d : scene.weather->decisions)
     said = said || d.find("the opaque cover (5 tenths) exceeds the total (2)") != std::string::npos;
   EXPECT_TRUE(said);
-  EXPECT_NEAR(scene.weather->clear_fraction, 0.5, 1e-12);
   bool consistent_said = false;
   const Scene consistent = scene_for(file, 6, 21, 13);
   for (const std::string& d : consistent.weather->decisions)

@@ -31,7 +31,20 @@ struct CloudLayerSettings {
   double extinction = kDefaultCloudExtinction;       // m⁻¹
   int waves = 4;                                     // sine waves per axis (Gardner's series)
   double first_amplitude = 0.3;                      // then ×1/√2 per wave
+  // The share of the sun's and the sky's light that reaches the clouds: 1 lights each
+  // cloud as if it were alone.
+  double light_share = 1.0;
+  // When given (weather hours: the file's diffuse horizontal illuminance, lx), light_share
+  // is instead fitted, when the clouds are placed under the scene's sky (CloudsInSky), so
+  // that the clouded sky gives the open ground this illuminance on average
+  // (docs/weather.md, "Clouds").
+  std::optional<double> diffuse_horizontal_lux;
 };
+
+// The bounds of a fitted light share: clouds get no more light than the sun and the sky
+// send, and at least what a cloud deep in a layer of 95 % cover, under two or three
+// others, might (docs/weather.md).
+inline constexpr double kLeastCloudLightShare = 0.25, kMostCloudLightShare = 1.0;
 
 // The most clouds a generated layer may hold. Each cloud a view meets builds a sun grid
 // (0.4 MB, about 0.1–0.4 s on one core here), so a layer of many more can take many

@@ -36,15 +36,15 @@ Footprint footprint(const CloudLayer& layer, double ground_z) {
 }
 
 // Nodes along one axis spanning [lo, hi] with cells of at most `cell_m`, and their spacing.
-std::pair<int, double> axis_nodes(double lo, double hi, double cell_m) {
-  const int cells = std::clamp(static_cast<int>(std::ceil((hi - lo) / cell_m)), 1, CloudSkyShare::kMaxCells);
+std::pair<int, double> axis_nodes(double lo, double hi, double cell_m, int max_cells) {
+  const int cells = std::clamp(static_cast<int>(std::ceil((hi - lo) / cell_m)), 1, std::max(1, max_cells));
   return {cells + 1, (hi - lo) / cells};
 }
 
 }  // namespace
 
 CloudSkyShare::CloudSkyShare(const CloudLayer& layer, const CloudLighting& lighting, const SkyModel& sky,
-                             const Vec3& camera_ground)
+                             const Vec3& camera_ground, int max_cells)
     : x0_m_(camera_ground.x), y0_m_(camera_ground.y) {
   add_directions(normalize(lighting.to_sun));
   for (Direction& d : directions_) {
@@ -56,7 +56,7 @@ CloudSkyShare::CloudSkyShare(const CloudLayer& layer, const CloudLighting& light
       clear_[static_cast<size_t>(p)] += d.clear.spectrum() * weight;
     }
   }
-  if (!layer.empty()) place_grid(layer, camera_ground);
+  if (!layer.empty()) place_grid(layer, camera_ground, max_cells);
   nodes_.resize(static_cast<size_t>(nodes_x_ * nodes_y_));
   tbb::parallel_for(0, nodes_x_ * nodes_y_, [&](int k) {
     const int i = k % nodes_x_, j = k / nodes_x_;  // the node's column and row
@@ -99,7 +99,7 @@ void CloudSkyShare::add_directions(const Vec3& to_sun) {
   for (const Vec3& d : outside) directions_.push_back({d, outside_sr, Radiance{}, {}});
 }
 
-void CloudSkyShare::place_grid(const CloudLayer& layer, const Vec3& camera_ground) {
+void CloudSkyShare::place_grid(const CloudLayer& layer, const Vec3& camera_ground, int max_cells) {
   const Footprint f = footprint(layer, camera_ground.z);
   const double widen = 2 * f.mean_altitude_m;
   const double x_lo = std::max(f.x_lo - widen, camera_ground.x - kMaxReach_m);
@@ -108,10 +108,16 @@ void CloudSkyShare::place_grid(const CloudLayer& layer, const Vec3& camera_groun
   const double y_hi = std::min(f.y_hi + widen, camera_ground.y + kMaxReach_m);
   if (!(x_hi > x_lo && y_hi > y_lo)) return;  // clouds far from the camera: one node below it
   const double cell_m = f.mean_altitude_m / 3;
-  std::tie(nodes_x_, cell_x_m_) = axis_nodes(x_lo, x_hi, cell_m);
-  std::tie(nodes_y_, cell_y_m_) = axis_nodes(y_lo, y_hi, cell_m);
+  std::tie(nodes_x_, cell_x_m_) = axis_nodes(x_lo, x_hi, cell_m, max_cells);
+  std::tie(nodes_y_, cell_y_m_) = axis_nodes(y_lo, y_hi, cell_m, max_cells);
   x0_m_ = x_lo;
   y0_m_ = y_lo;
+}
+
+Irradiance CloudSkyShare::mean_irradiance_up() const {
+  Spectrum sum;
+  for (const PlaneIrradiances& e : nodes_) sum += e[0];
+  return Irradiance(sum * (1.0f / static_cast<float>(std::max<size_t>(1, nodes_.size()))));
 }
 
 Vec3 CloudSkyShare::plane_normal(int plane) {

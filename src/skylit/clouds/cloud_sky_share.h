@@ -53,8 +53,9 @@ namespace skylit {
 class CloudSkyShare {
  public:
   // The grid over `layer`'s clouds lit by `lighting` under `sky`, around `camera_ground`
-  // (its z is the ground's altitude).
-  CloudSkyShare(const CloudLayer& layer, const CloudLighting& lighting, const SkyModel& sky, const Vec3& camera_ground);
+  // (its z is the ground's altitude), with at most `max_cells` cells on a side.
+  CloudSkyShare(const CloudLayer& layer, const CloudLighting& lighting, const SkyModel& sky, const Vec3& camera_ground,
+                int max_cells = kMaxCells);
 
   // The planes whose irradiances a node holds (plane 0 faces up; then kPlaneAzimuths
   // per elevation of kPlaneElevations_deg, from east counter-clockwise), and the
@@ -82,6 +83,12 @@ class CloudSkyShare {
   // measured 1.5–1.8 in the blue and 3.1–4.2 in the red (it was capped at 2 before).
   static constexpr float kMaxShare = 8.0f;
 
+  // The clouded sky's irradiance on a horizontal surface facing up, averaged over the
+  // nodes: what the open ground around the camera receives from the sky and the clouds
+  // (the sun's beam not counted), W m⁻² nm⁻¹. Under a generated layer it stands for the
+  // mean over an hour in which the clouds drift over a point.
+  Irradiance mean_irradiance_up() const;
+
   int nodes_x() const { return nodes_x_; }
   int nodes_y() const { return nodes_y_; }
 
@@ -108,7 +115,7 @@ class CloudSkyShare {
   // The quadrature's directions and solid angles (before the clear sky's radiance).
   void add_directions(const Vec3& to_sun);
   // The grid's origin, cells and nodes over the clouds' footprint.
-  void place_grid(const CloudLayer& layer, const Vec3& camera_ground);
+  void place_grid(const CloudLayer& layer, const Vec3& camera_ground, int max_cells);
   const PlaneIrradiances& node(int i, int j) const { return nodes_[static_cast<size_t>(j * nodes_x_ + i)]; }
 
   std::vector<Direction> directions_;

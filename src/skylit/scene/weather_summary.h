@@ -29,7 +29,11 @@ struct WeatherSummary {
   // The file's values and the model's, in lx (photopic: the band skylit renders).
   std::optional<double> file_direct_normal_lux, file_diffuse_horizontal_lux, file_global_horizontal_lux;
   std::optional<double> model_direct_normal_lux, model_diffuse_horizontal_lux, model_global_horizontal_lux;
-  // The part of the hour the direct beam is taken to shine: 1 − opaque sky cover.
+  // The clear sky's diffuse horizontal illuminance alone (the model's above counts the
+  // clouds as rendered, where there are any).
+  std::optional<double> clear_sky_diffuse_horizontal_lux;
+  // The part of the hour the direct beam is taken to shine: 1 − opaque sky cover up to
+  // 3/10 of it, above that the file's beam over the clear air's (docs/weather.md).
   double clear_fraction = 1.0;
   double sun_altitude_deg = 0;
 };

@@ -7,6 +7,7 @@
 #include "skylit/atmosphere/atmosphere.h"
 #include "skylit/atmosphere/optical_properties.h"
 #include "skylit/atmosphere/seen_sun.h"
+#include "skylit/clouds/clouds_in_sky.h"
 #include "skylit/core/formatted.h"
 #include "skylit/io/weather/luminous_efficacy.h"
 #include "skylit/spectrum/cie.h"
@@ -27,6 +28,16 @@ constexpr double kSnowAlbedo = 0.6;
 constexpr double kDefaultCloudAltitudeM = 2000.0;
 // The bisection's bracket: aod_550 from 0 (no aerosol) to 5 (thick smoke or dust).
 constexpr double kMaxFittedAod = 5.0;
+// The check's grid of ground points under the clouds (cells on a side; the renderer's
+// has up to CloudSkyShare::kMaxCells): their mean is what is compared with the file.
+constexpr int kCheckShareCells = 8;
+// Up to this opaque cover (tenths / 10) the aerosol is fitted to the beam over the clear
+// part of the hour; above it the beam is a mean through moving clouds, the aerosol comes
+// from the visibility and the beam gives the sunshine (docs/weather.md, "Cloudy hours":
+// on the Amsterdam file the visibility's aerosol spread the diffuse light of 1–3 tenths
+// over −46 % to +29 % of the file's, p10 to p90, where the beam fit kept it within −4 %
+// and +16 %).
+constexpr double kMostCoverForBeamFit = 0.3;
 // Below this the beam counts as none (the file's illuminances are whole hundreds of lx).
 constexpr double kNoBeamLux = 1.0;
 
@@ -265,10 +276,32 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
                            : formatted("the sky all covered, its %.0f lx of direct beam notwithstanding",
                                        *summary.file_direct_normal_lux);
     aerosol_from_visibility(hour, air, summary, overcast_because.c_str());
-  } else {
-    // The beam shines the clear part of the hour: its clear-sky value is the hour's mean
-    // over that part.
+  } else if (coverage <= kMostCoverForBeamFit) {
+    // A clear or lightly clouded hour: the sun was seldom hidden, and its beam is the
+    // clear air's over the clear part of the hour (a small correction here).
     fit_aerosol(air, sun_elevation, *summary.file_direct_normal_lux / summary.clear_fraction, summary);
+  } else {
+    // A cloudy hour: its beam is a mean over an hour of moving clouds, in which the sun
+    // shone some unknown part (not the clear part of the sky: a sun behind a 1/10 cover
+    // may never be hidden, one behind 9/10 shine only a few minutes, and thin edges dim
+    // it). The air's haze comes from the visibility, as on overcast hours; the beam then
+    // says how much of the hour the sun shone. A beam brighter than that air lets through
+    // for the whole hour means clearer air: the aerosol is fitted to it, the sun out all
+    // hour (the beam bounds the aerosol from above in any case).
+    aerosol_from_visibility(hour, air, summary, "a cloudy hour: its beam is a mean through moving clouds");
+    const double clear_beam = direct_normal_lux(air, air.aerosol.aod_550, sun_elevation);
+    if (*summary.file_direct_normal_lux >= clear_beam) {
+      summary.decisions.push_back(formatted(
+          "aerosol: the file's beam (%.0f lx) exceeds what that air lets through (%.0f lx) with the sun out all hour",
+          *summary.file_direct_normal_lux, clear_beam));
+      fit_aerosol(air, sun_elevation, *summary.file_direct_normal_lux, summary);
+      summary.clear_fraction = 1;
+    } else {
+      summary.clear_fraction = *summary.file_direct_normal_lux / clear_beam;
+      summary.decisions.push_back(formatted(
+          "sunshine: the sun shone %.0f %% of the hour (the file's beam, %.0f lx, over the clear air's, %.0f lx)",
+          100 * summary.clear_fraction, *summary.file_direct_normal_lux, clear_beam));
+    }
   }
 
   if (overcast && summary.file_diffuse_horizontal_lux) {
@@ -294,6 +327,13 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
     decisions.push_back(formatted("clouds: a generated layer covering %.0f %% of the sky at %.0f m, seed %.0f",
                                   100 * scene.cloud_layer->coverage, scene.cloud_layer->altitude,
                                   static_cast<double>(scene.cloud_layer->seed)));
+    if (sun.altitude_deg > 0 && summary.file_diffuse_horizontal_lux) {
+      scene.cloud_layer->diffuse_horizontal_lux = *summary.file_diffuse_horizontal_lux;
+      decisions.push_back(
+          formatted("clouds: the share of the sun's and the sky's light that reaches them fitted, "
+                    "where they are placed under the sky, to the file's %.0f lx of diffuse light",
+                    *summary.file_diffuse_horizontal_lux));
+    }
   }
 
   if (hour.visibility_km && *hour.visibility_km < kFogBelowKm && !scene.fog) {
@@ -324,6 +364,22 @@ void check_weather_model(Scene& scene) {
   const double beam = illuminance(sky.direct_sun(0.0)) * w.clear_fraction;
   w.model_direct_normal_lux = beam;
   w.model_diffuse_horizontal_lux = illuminance(sky.sky_irradiance({0, 0, 1}));
+  w.clear_sky_diffuse_horizontal_lux = w.model_diffuse_horizontal_lux;
+  // The clouds as the renderer sees them: the clouded sky's light on the open ground,
+  // averaged over a grid around the site (the clouds drift over a point in an hour).
+  if (!scene.clouds.empty() || scene.cloud_layer) {
+    const CloudsInSky clouds(scene.clouds, scene.cloud_layer, sky, {0, 0, 0}, scene.render.cloud_light,
+                             kCheckShareCells);
+    w.model_diffuse_horizontal_lux = illuminance(clouds.sky_share_grid().mean_irradiance_up());
+    if (scene.cloud_layer && scene.cloud_layer->diffuse_horizontal_lux) {
+      w.decisions.push_back(formatted("clouds: lit by %.2f of the sun's and the sky's light", clouds.light_share()));
+      if (clouds.light_share() != clouds.fitted_light_share())
+        w.decisions.push_back(
+            formatted("clouds: the share that would give the file's diffuse light, %.2f, lies "
+                      "outside [%.2f, %.2f]",
+                      clouds.fitted_light_share(), kLeastCloudLightShare, kMostCloudLightShare));
+    }
+  }
   w.model_global_horizontal_lux = *w.model_diffuse_horizontal_lux + beam * std::max(0.0, to_sun.z);
 }
 
@@ -356,8 +412,11 @@ std::string describe_weather(const WeatherSummary& w) {
     text += "\n";
   }
   for (const std::string& d : w.decisions) text += "  " + d + "\n";
-  text += formatted("  check (photopic, lx; direct beam over %.0f %% of the hour, cloud layer not counted):\n",
-                    100 * w.clear_fraction);
+  text += formatted("  check (photopic, lx; direct beam over %.0f %% of the hour", 100 * w.clear_fraction) +
+          (w.clear_sky_diffuse_horizontal_lux && w.model_diffuse_horizontal_lux &&
+                   *w.clear_sky_diffuse_horizontal_lux != *w.model_diffuse_horizontal_lux
+               ? formatted("; diffuse with the clouds, %.0f lx without):\n", *w.clear_sky_diffuse_horizontal_lux)
+               : std::string("):\n"));
   text += compared("direct normal", w.file_direct_normal_lux, w.model_direct_normal_lux, kWeatherDirectNormalTolerance);
   text += compared("diffuse horizontal", w.file_diffuse_horizontal_lux, w.model_diffuse_horizontal_lux,
                    kWeatherDiffuseHorizontalTolerance);

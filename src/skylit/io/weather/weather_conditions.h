@@ -4,13 +4,18 @@
 // - site and time zone from the LOCATION line; the sun at the middle of the record's
 //   hour (the record holds the hour's means, and the middle is the instant whose sun
 //   best stands for them);
-// - the aerosol optical depth at 550 nm fitted by bisection so that the model's direct
-//   normal illuminance (380–780 nm weighted by V(λ), the band skylit renders) equals the
-//   file's, divided by the clear part of the hour (1 − opaque sky cover);
+// - up to 3/10 opaque cover, the aerosol optical depth at 550 nm fitted by bisection so
+//   that the model's direct normal illuminance (380–780 nm weighted by V(λ), the band
+//   skylit renders) equals the file's, divided by the clear part of the hour (1 − opaque
+//   sky cover); above it the aerosol from the visibility, and the file's beam over the
+//   clear air's as the part of the hour the sun shone (the beam is a mean through moving
+//   clouds);
 // - no direct beam while the sun is up (overcast): the CIE standard overcast sky (type 1)
 //   scaled to the file's diffuse horizontal illuminance, and no cloud geometry;
 // - otherwise a generated cloud layer covering the opaque sky cover, at the ceiling
-//   height (or 2000 m), its seed made from the date and hour;
+//   height (or 2000 m), its seed made from the date and hour, the share of the sun's and
+//   the sky's light that reaches its clouds fitted to the file's diffuse horizontal
+//   illuminance (clouds/clouds_in_sky.h);
 // - fog below 1 km of visibility (the meteorological definition of fog);
 // - snow on the ground from the snow depth (ground albedo 0.6), else the file's albedo.
 #pragma once
@@ -31,9 +36,10 @@ void apply_weather_hour(const EpwFile& file, const EpwHour& hour, Scene& scene,
                         const std::optional<SiteLocation>& site = std::nullopt);
 
 // Fills scene.weather's model values: the model's direct normal, diffuse and global
-// horizontal illuminance for the scene's air and sky (the clear part; a generated
-// cloud layer's own shading of the diffuse light is not in it). Builds the sky's
-// tables (about a second).
+// horizontal illuminance for the scene's air, sky and clouds (the clouded sky as the
+// renderer sees it, averaged over a grid of ground points around the site; the beam
+// over the part of the hour the sun shone). Builds the sky's tables (about a second)
+// and, under clouds, places them (a few seconds).
 void check_weather_model(Scene& scene);
 
 // For `skylit info`: the station, the record, the sun's instant, the missing fields, each
