@@ -53,8 +53,9 @@ TEST(WeatherSurvey, TheSharedFileByOpaqueCover) {
     for (Bin& b : bins)
       if (*h.opaque_sky_cover_tenths >= b.lo && *h.opaque_sky_cover_tenths <= b.hi) b.hours.push_back(&h);
   }
-  std::printf("cover  hours(of)  DH model/file: median [p10, p90] (min, max) within 25%%  |  GH: median [p10, p90] "
-              "(min, max) within 10%%\n");
+  std::printf(
+      "cover  hours(of)  DH model/file: median [p10, p90] (min, max) within 25%%  |  GH: median [p10, p90] "
+      "(min, max) within 10%%\n");
   for (const Bin& b : bins) {
     std::vector<double> dh, gh, clear_dh;
     const size_t n = std::min(per_bin, b.hours.size());
@@ -78,8 +79,8 @@ TEST(WeatherSurvey, TheSharedFileByOpaqueCover) {
     auto within = [](const std::vector<double>& v, double tol) {
       return std::count_if(v.begin(), v.end(), [&](double r) { return std::abs(r - 1) <= tol; });
     };
-    std::printf("%-5s  %3zu(%4zu)  %.3f [%.3f, %.3f] (%.3f, %.3f) %3ld  |  %.3f [%.3f, %.3f] (%.3f, %.3f) %3ld\n", b.name,
-                n, b.hours.size(), quantile(dh, 0.5), quantile(dh, 0.1), quantile(dh, 0.9), quantile(dh, 0),
+    std::printf("%-5s  %3zu(%4zu)  %.3f [%.3f, %.3f] (%.3f, %.3f) %3ld  |  %.3f [%.3f, %.3f] (%.3f, %.3f) %3ld\n",
+                b.name, n, b.hours.size(), quantile(dh, 0.5), quantile(dh, 0.1), quantile(dh, 0.9), quantile(dh, 0),
                 quantile(dh, 1), static_cast<long>(within(dh, 0.25)), quantile(gh, 0.5), quantile(gh, 0.1),
                 quantile(gh, 0.9), quantile(gh, 0), quantile(gh, 1), static_cast<long>(within(gh, 0.10)));
     std::printf("       the air's own diffuse light, clouds left out: DH median %.3f [%.3f, %.3f]\n",
@@ -99,7 +100,8 @@ namespace {
 TEST(WeatherSurvey, ScanCloudExtinction) {
   const char* asked = std::getenv("SKYLIT_EPW_SCAN");
   if (!asked) GTEST_SKIP();
-  const EpwFile file = read_epw(std::filesystem::path(SKYLIT_SOURCE_DIR) / "../shared/data/NLD_Amsterdam062400_IWEC.epw");
+  const EpwFile file =
+      read_epw(std::filesystem::path(SKYLIT_SOURCE_DIR) / "../shared/data/NLD_Amsterdam062400_IWEC.epw");
   int m = 0, d = 0, hr = 0;
   std::sscanf(asked, "%d-%d-%d", &m, &d, &hr);
   for (double f : {0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0}) {
