@@ -121,6 +121,7 @@ struct CitySource {
   bool site_from_model = false;
   bool curvature_applied = false;
   bool axes_swapped = false;                                    // PlacedCity::axes_swapped
+  bool axes_swapped_by_format = false;                          // PlacedCity::axes_swapped_by_format
   std::vector<std::pair<std::string, size_t>> objects_by_type;  // city objects placed
   struct ClassUse {
     std::string name;  // "Building.RoofSurface"

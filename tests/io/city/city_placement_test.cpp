@@ -121,8 +121,14 @@ TEST(CityPlacement, AFileWritingEastingFirstForANorthingFirstCrsIsReadSo) {
     model.objects.push_back(block);
     const PlacedCity city = place_city_model(model, {}, "test");
     EXPECT_EQ(city.axes_swapped, c.swapped);
+    EXPECT_FALSE(city.axes_swapped_by_format);  // a GML file's order is its CRS's: worth a warning
     EXPECT_NEAR(city.origin.latitude_deg, c.latitude_deg, 1e-6);
     EXPECT_NEAR(city.origin.longitude_deg, c.longitude_deg, 1e-6);
+    // CityJSON writes easting first by its own rule: read the same, nothing to warn of.
+    model.easting_first = true;
+    const PlacedCity as_cityjson = place_city_model(model, {}, "test");
+    EXPECT_EQ(as_cityjson.axes_swapped_by_format, c.swapped);
+    EXPECT_NEAR(as_cityjson.origin.latitude_deg, c.latitude_deg, 1e-6);
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "../../test_support.h"
 #include "skylit/io/scene/scene_loader.h"
+#include "skylit/io/scene/scene_report.h"
 #include "skylit/sun/solar_position.h"
 
 namespace skylit {
@@ -70,6 +71,31 @@ TEST(CityScene, RoofsAndWallsGetTheirMaterialsAndTheScenesOverrides) {
                                            parse_offset_date_time("2026-06-21T12:00:00+02:00", "t"));
   EXPECT_NEAR(scene.sun.azimuth_deg, sun.azimuth_deg, 1e-9);
   EXPECT_NEAR(scene.sun.altitude_deg, sun.altitude_deg, 1e-9);
+}
+
+// Helsinki's models are CityJSON in EPSG:3879, whose definition puts northing first;
+// CityJSON writes easting first whatever the CRS says, so reading them so is the rule,
+// and a warning on every such file (as until 2026-12-07) only taught users to ignore it.
+TEST(CityScene, ACityJsonFileInANorthingFirstCrsIsReadEastingFirstWithoutAWarning) {
+  testing::TempDir dir;
+  dir.write("block.city.json",
+            R"({"type": "CityJSON", "version": "2.0", "transform": {"scale": [1, 1, 1], "translate": [0, 0, 0]},
+    "metadata": {"referenceSystem": "https://www.opengis.net/def/crs/EPSG/0/3879"},
+    "vertices": [[25496000, 6672000, 0], [25496010, 6672000, 0], [25496010, 6672010, 0], [25496000, 6672010, 0],
+                 [25496000, 6672000, 10], [25496010, 6672000, 10], [25496010, 6672010, 10], [25496000, 6672010, 10]],
+    "CityObjects": {"b": {"type": "Building", "geometry": [{"type": "Solid", "lod": "1",
+      "boundaries": [[[[4, 5, 6, 7]], [[0, 1, 5, 4]], [[1, 2, 6, 5]], [[2, 3, 7, 6]], [[3, 0, 4, 7]], [[0, 3, 2, 1]]]]}]}}})");
+  const Scene scene =
+      load_scene(dir.write("s.json", scene_with(R"({"type": "city", "name": "h", "file": "block.city.json"})",
+                                                R"("time": "2026-06-21T12:00:00+03:00")")));
+  const CitySource& source = *scene.objects.at(0).city;
+  EXPECT_TRUE(source.axes_swapped);
+  EXPECT_TRUE(source.axes_swapped_by_format);
+  EXPECT_NEAR(source.latitude_deg, 60.1609, 1e-3);  // Helsinki, not the Gulf of Guinea
+  EXPECT_NEAR(source.longitude_deg, 24.928, 1e-3);
+  for (const std::string& w : scene_warnings(scene, false))
+    EXPECT_EQ(w.find("other way round"), std::string::npos) << w;
+  EXPECT_NE(describe_objects(scene).find("easting first, as the format writes it"), std::string::npos);
 }
 
 TEST(CityScene, MalformedModelIsOneLineAndExitStatusTwo) {

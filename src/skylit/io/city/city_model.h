@@ -68,6 +68,10 @@ struct CityModel {
   // The CRS as "EPSG:code" (e.g. "EPSG:7415"), or a PROJ-readable definition; empty
   // when the file names none (the scene must then say which).
   std::string crs;
+  // The format writes easting first whatever the CRS's definition says (CityJSON: its
+  // x is east, y north): reading a northing-first CRS's points the other way round is
+  // then the format's rule, not a fault of the file's.
+  bool easting_first = false;
   std::vector<CityObject> objects;
   // The appearances the surfaces refer to, and the themes: every theme the file has,
   // and the ones the surfaces' appearances were taken from (empty: none).

@@ -120,6 +120,7 @@ PlacedCity place_city_model(const CityModel& model, const CityPlacementOptions& 
   BoundingBox box;
   for (const Vec3& p : flat.points) box.add(p);
   if (!flat.points.empty()) placed.axes_swapped = to_wgs84.fit_axis_order(box.center());
+  placed.axes_swapped_by_format = placed.axes_swapped && model.easting_first;
   const std::vector<GeoPoint> geo = to_wgs84.transform(flat.points);
 
   // The origin's latitude and longitude: the site, else the region's centre, else the

@@ -80,6 +80,8 @@ struct PlacedCity {
   // The file's first two coordinates read the other way round than the CRS defines them
   // (CrsToWgs84::fit_axis_order): only so do they lie in the CRS's area of use.
   bool axes_swapped = false;
+  // ... and the format writes them so (CityModel::easting_first): nothing to warn of.
+  bool axes_swapped_by_format = false;
   // "Type.Semantic" ("Building.RoofSurface") or "Type" for surfaces without one. A
   // building's surfaces without semantics are classed by their facing (roof: facing
   // up, ground: facing down, wall: otherwise) so that LoD1 blocks get roofs too.

@@ -520,6 +520,7 @@ CityModel read_document(const std::string& text, const std::string& source, cons
   Reader reader(source, options);
   expect_type(reader, document, "CityJSON", "");
   CityModel model;
+  model.easting_first = true;
   reader.read_transform(document);
   model.crs = reader.read_crs(document);
   reader.read_appearance(document, model);
@@ -534,6 +535,7 @@ CityModel read_document(const std::string& text, const std::string& source, cons
 // CityJSONFeature per line with its own vertices.
 CityModel read_sequence(const std::string& text, const std::string& source, const CityJsonOptions& options) {
   CityModel model;
+  model.easting_first = true;
   json header_document;  // kept: the header's templates are read from it
   std::optional<Reader> header;
   size_t line_number = 0;

@@ -309,6 +309,7 @@ SceneObject read_city(const JsonReader& j, const std::filesystem::path& base_dir
   source.site_from_model = placed.origin_from_model;
   source.curvature_applied = placed.curvature_applied;
   source.axes_swapped = placed.axes_swapped;
+  source.axes_swapped_by_format = placed.axes_swapped_by_format;
   source.objects_outside_region = placed.objects_outside_region;
   source.degenerate_surfaces = placed.degenerate_surfaces;
 

@@ -59,7 +59,7 @@ void check_model_placement(const SceneObject& object, std::vector<std::string>& 
 void check_city_placement(const SceneObject& object, std::vector<std::string>& warnings) {
   for (const std::string& w : object.city->terrain_warnings)
     warnings.push_back("object " + quoted(object.name) + ": " + w);
-  if (object.city && object.city->axes_swapped)
+  if (object.city && object.city->axes_swapped && !object.city->axes_swapped_by_format)
     warnings.push_back("object " + quoted(object.name) +
                        ": the file's first two coordinates are read the other way "
                        "round than " +
@@ -119,9 +119,11 @@ double printed_mm(double metres) { return std::abs(metres) < 5e-4 ? 0.0 : metres
 // The city model's file, CRS, site, city objects by type and surface classes with
 // their materials.
 std::string describe_city(const CitySource& c) {
-  std::string out = c.file + ", CRS " + c.crs +
-                    (c.axes_swapped ? " (its first two coordinates read the other way round: see the warning)" : "") +
-                    "\n";
+  const char* axes = !c.axes_swapped ? ""
+                     : c.axes_swapped_by_format
+                         ? " (read easting first, as the format writes it)"
+                         : " (its first two coordinates read the other way round: see the warning)";
+  std::string out = c.file + ", CRS " + c.crs + axes + "\n";
   out += formatted("  site %.7f° ", std::abs(c.latitude_deg)) + (c.latitude_deg < 0 ? "S" : "N") +
          formatted(", %.7f° ", std::abs(c.longitude_deg)) + (c.longitude_deg < 0 ? "W" : "E") +
          (c.site_from_model ? " (the model's centre: no site given)" : " (the scene's site)") +
