@@ -90,6 +90,40 @@ TEST(CityTerrain, DemBecomesTheGroundAndTheBuildingStandsOnIt) {
   EXPECT_NEAR(highest_above, 0.0, 0.01);
 }
 
+// A DEM that covers one of two buildings: `info` says where the terrain lies, and a
+// warning names how many objects stand beyond its edge (they would stand on nothing,
+// at the model's ground level, with no word said until 2026-12-07).
+TEST(CityTerrain, InfoSaysWhereTheDemLiesAndWhatStandsBeyondIt) {
+  TempDir dir;
+  const double gt[6] = {380000, 10, 0, 3940100, 0, -10};  // 10 m cells over 100 m × 100 m
+  write_dem(dir.path() / "dem.tif", 10, 10, gt, 32654, slope);
+  std::string two_boxes = kFloatingBox;
+  // A second box 200 m east of the first, beyond the DEM's east edge.
+  const std::string first = R"("CityObjects": {)";
+  two_boxes.insert(two_boxes.find(first) + first.size(),
+                   R"("east": {"type": "Building", "geometry": [{"type": "Solid", "lod": "1",
+    "boundaries": [[[[8, 11, 10, 9]], [[12, 13, 14, 15]], [[8, 9, 13, 12]], [[9, 10, 14, 13]], [[10, 11, 15, 14]], [[11, 8, 12, 15]]]]}]}, )");
+  const std::string last = R"([40000, 50000, 60000])";
+  two_boxes.insert(two_boxes.find(last) + last.size(),
+                   R"(, [240000, 40000, 0], [250000, 40000, 0], [250000, 50000, 0], [240000, 50000, 0],
+               [240000, 40000, 10000], [250000, 40000, 10000], [250000, 50000, 10000], [240000, 50000, 10000])");
+  std::ofstream(dir.path() / "box.city.json") << two_boxes;
+  std::ofstream(dir.path() / "scene.json") << R"({"camera": {"position": [0, -60, 20], "look_at": [0, 0, 5]},
+    "sun": {"altitude_deg": 40, "azimuth_deg": 135}, "materials": {},
+    "objects": [{"type": "city", "name": "block", "file": "box.city.json", "terrain": {"file": "dem.tif"}}]})";
+  const Scene scene = load_scene(dir.path() / "scene.json", {});
+  const CitySource& source = *scene.objects.at(0).city;
+  // The DEM's cell centres span 90 m each way; its heights 10–14.5 m above the model's
+  // ground level (the median of the objects' lowest points: 0 and the 50 m floor).
+  EXPECT_NE(source.terrain.find("; covers x "), std::string::npos) << source.terrain;
+  ASSERT_EQ(source.terrain_warnings.size(), 1u);
+  EXPECT_NE(source.terrain_warnings[0].find("1 of the city model's 2 objects stand beyond its edge"), std::string::npos)
+      << source.terrain_warnings[0];
+  // Without the second box nothing stands beyond it.
+  std::ofstream(dir.path() / "box.city.json") << kFloatingBox;
+  EXPECT_TRUE(load_scene(dir.path() / "scene.json", {}).objects.at(0).city->terrain_warnings.empty());
+}
+
 TEST(CityTerrain, UnreadableDemIsOneLineAndExitStatusTwo) {
   TempDir dir;
   std::ofstream(dir.path() / "box.city.json") << kFloatingBox;

@@ -88,6 +88,23 @@ void add_dem_terrain(const JsonReader& terrain, const std::filesystem::path& bas
   // A DEM in another place than the model (a wrong CRS, of the DEM or of the model)
   // would otherwise only show as an empty or odd picture.
   const BoundingBox city = plan_box(placed.objects), ground = plan_box(relief.objects);
+  // Where the terrain lies, in the scene's frame: a planner checks it covers the site.
+  BoundingBox heights;
+  for (const PlacedCityObject& o : relief.objects)
+    for (const Vec3& v : o.mesh.vertices) heights.add(v);
+  if (!ground.empty())
+    source.terrain += formatted("; covers x %.0f to %.0f m, ", ground.lo.x, ground.hi.x) +
+                      formatted("y %.0f to %.0f m, ", ground.lo.y, ground.hi.y) +
+                      formatted("heights %.1f to %.1f m (z)", heights.lo.z, heights.hi.z);
+  size_t beyond_edge = 0;
+  for (const PlacedCityObject& o : placed.objects) {
+    if (o.type == "TINRelief") continue;
+    BoundingBox own;
+    for (const Vec3& v : o.mesh.vertices) own.add({v.x, v.y, 0});
+    const Vec3 c = own.center();
+    if (!own.empty() && (c.x < ground.lo.x || c.x > ground.hi.x || c.y < ground.lo.y || c.y > ground.hi.y))
+      ++beyond_edge;
+  }
   if (!city.empty() && !ground.empty()) {
     const double gap_x = std::max({0.0, city.lo.x - ground.hi.x, ground.lo.x - city.hi.x});
     const double gap_y = std::max({0.0, city.lo.y - ground.hi.y, ground.lo.y - city.hi.y});
@@ -96,6 +113,11 @@ void add_dem_terrain(const JsonReader& terrain, const std::filesystem::path& bas
           "terrain DEM " + quote_name(file.string()) +
           formatted(" lies %.1f km from the city model and does not reach under it: ", gap / 1000) +
           "is the CRS of either right?");
+    else if (beyond_edge > 0)
+      source.terrain_warnings.push_back("terrain DEM " + quote_name(file.string()) + ": " +
+                                        std::to_string(beyond_edge) + " of the city model's " +
+                                        std::to_string(placed.objects.size()) +
+                                        " objects stand beyond its edge, where there is no ground under them");
   }
   for (PlacedCityObject& o : relief.objects) {
     for (uint32_t& c : o.triangle_class) {
