@@ -8,7 +8,9 @@
 namespace skylit::cli {
 
 void add_atmosphere_options(CLI::App* command, AtmosphereOptions& o) {
-  command->add_option("--sun-altitude", o.sun_altitude_deg, "Sun's altitude above the horizon, degrees (−90 to 90)")
+  command
+      ->add_option("--sun-altitude", o.sun_altitude_deg,
+                   "Sun's altitude above the horizon as seen (refraction included, as a scene's), degrees (−90 to 90)")
       ->required()
       ->check(finite_range(-90.0, 90.0));
   command->add_option("--sun-azimuth", o.sun_azimuth_deg, "Sun's azimuth, degrees clockwise from north (default 180)")

@@ -4,6 +4,7 @@
 
 #include "atmosphere_options.h"
 #include "commands.h"
+#include "skylit/atmosphere/seen_sun.h"
 #include "skylit/io/image/image.h"
 #include "skylit/io/image/tone_map.h"
 #include "skylit/render/sky_image.h"
@@ -38,8 +39,12 @@ XyzImage sky_pixels(const XyzImage& image, SkyProjection projection) {
 int run_sky(const SkyArguments& args) {
   image_format_from_path(args.output);  // a bad extension fails before the work
   const Atmosphere atmosphere(atmosphere_settings(args.atmosphere));
-  const SkyModel sky(atmosphere,
-                     direction_from_altitude_azimuth(args.atmosphere.sun_altitude_deg, args.atmosphere.sun_azimuth_deg),
+  // The altitude is the sun as seen, as for `spectrum` and a scene's sun; the sky model
+  // takes the true one (until 2026-12-07 it was given this one: the sky at a sun 0.5° up
+  // rendered as for one 0.5° higher, its zenith 23 % brighter than `spectrum` said).
+  const Vec3 seen_to_sun =
+      direction_from_altitude_azimuth(args.atmosphere.sun_altitude_deg, args.atmosphere.sun_azimuth_deg);
+  const SkyModel sky(atmosphere, SunRefraction(atmosphere).true_direction(seen_to_sun),
                      args.atmosphere.observer_altitude_m);
   const SkyProjection projection = args.projection == "fisheye" ? SkyProjection::fisheye : SkyProjection::equirect;
   const XyzImage image = render_sky(sky, projection, args.size);
