@@ -80,6 +80,11 @@ class SkyModel {
   MediumStretch aerial_perspective(const Vec3& direction, double distance_m) const;
   // The same for several distances along one direction.
   AerialPerspectiveTable::Along aerial_perspective_along(const Vec3& direction) const;
+  // The part of aerial_perspective's light that the air between distances t0 and t1
+  // along the direction scatters from the sun's beam once (absolute, dimmed by the air
+  // in front of it): what that stretch stops adding when a building's shadow covers
+  // it (render/shadowed_air.h).
+  Radiance sunlit_air(const Vec3& direction, double t0_m, double t1_m) const;
   // Unobstructed sky and ground irradiance on a plane near the ground with this normal.
   Irradiance sky_irradiance(const Vec3& normal) const { return Irradiance(ground_sky_irradiance_->at(normal)); }
   // The sun's direct normal irradiance at a height above the ground, along its bent path
@@ -103,6 +108,7 @@ class SkyModel {
   static constexpr double kDirectSunProfileTopM = 2000.0;
   std::vector<Irradiance> direct_sun_profile_;  // at heights top·(k/(size−1))²
   Irradiance sun_through_air_;                  // extraterrestrial × transmittance from the observer
+  Spectrum sun_outside_{0.0f};                  // extraterrestrial; 0 under an overcast CIE sky
   std::unique_ptr<SkyViewTable> observer_view_;
   std::unique_ptr<SkyViewTable> ground_view_;  // the same table when the observer is near the ground
   std::unique_ptr<AerialPerspectiveTable> aerial_;

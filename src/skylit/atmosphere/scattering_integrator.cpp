@@ -75,6 +75,44 @@ void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, doubl
   }
 }
 
+Spectrum ScatteringIntegrator::sun_single_scattering(double r, double mu, double mu_sun, double nu, double t0,
+                                                     double t1, double max_step_m) const {
+  Spectrum gathered(0.0f), in_front(1.0f);
+  if (!(t1 > t0) || !(max_step_m > 0)) return gathered;
+  const Phases phase = phases(nu);
+  // The same midpoint sources and exact attenuation across each step as add_segment,
+  // with the sun's term alone.
+  auto step = [&](double a, double b, bool gather) {
+    const double dt = b - a, t = 0.5 * (a + b);
+    const double r_t = std::max(shell::radius_at(r, mu, t), transmittance_.ground_radius());
+    const double h = r_t - medium_.earth_radius_m;
+    const double rho_r = medium_.rayleigh_density(h), rho_a = medium_.aerosol_density(h);
+    const Spectrum extinction = medium_.extinction(rho_r, rho_a, medium_.ozone_density(h));
+    const Spectrum segment = transmittance_of(extinction * static_cast<float>(dt));
+    if (gather) {
+      const double mu_sun_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
+      const Spectrum sun = transmittance_.sun(r_t, mu_sun_t);
+      const float fr = static_cast<float>(rho_r), fa = static_cast<float>(rho_a), fdt = static_cast<float>(dt);
+      for (int k = 0; k < kSpectralBins; ++k) {
+        const float source = (medium_.rayleigh_scattering[k] * fr * phase.rayleigh +
+                              medium_.aerosol_scattering[k] * fa * phase.aerosol) *
+                             sun[k];
+        gathered[k] += in_front[k] * source * segment_weight(extinction[k], fdt, segment[k]);
+      }
+    }
+    in_front *= segment;
+  };
+  const auto steps = [max_step_m](double length) {
+    return static_cast<int>(std::clamp(std::ceil(length / max_step_m), 1.0, 1e4));
+  };
+  const double front = std::max(t0, 0.0);
+  const int n_front = steps(front), n_stretch = steps(t1 - front);
+  for (int k = 0; k < n_front && front > 0; ++k) step(front * k / n_front, front * (k + 1) / n_front, false);
+  for (int k = 0; k < n_stretch; ++k)
+    step(front + (t1 - front) * k / n_stretch, front + (t1 - front) * (k + 1) / n_stretch, true);
+  return gathered;
+}
+
 void ScatteringIntegrator::add_ground(double r, double mu_sun, double nu, double length, ScatteredLight& light) const {
   const double rg = transmittance_.ground_radius();
   const double mu_sun_g = std::clamp((r * mu_sun + length * nu) / rg, -1.0, 1.0);

@@ -60,6 +60,14 @@ class ScatteringIntegrator {
   std::vector<ScatteredLight> up_to(double r, double mu, double mu_sun, double nu,
                                     const std::vector<double>& stops) const;
 
+  // The sun's single scattering alone that the stretch [t0, t1] of the ray (r, μ) sends
+  // toward the ray's origin, dimmed by the air in front of it (per unit solar
+  // irradiance; [0, t0] and [t0, t1] each in equal steps of at most `max_step_m`):
+  // what the stretch's air stops adding when a building's shadow covers it. Rays
+  // continue through the ground as in up_to.
+  Spectrum sun_single_scattering(double r, double mu, double mu_sun, double nu, double t0, double t1,
+                                 double max_step_m) const;
+
   // Irradiance from the sky on a horizontal plane at radius r (per unit solar
   // irradiance): ∫ L cos θ dω over the upper hemisphere by a midpoint rule in cos²θ and
   // azimuth (mirrored about the sun's vertical plane).

@@ -116,6 +116,7 @@ ViewPath BandsIntegrator::view_path(const Ray& ray, double distance) const {
     return air->at(d);
   };
   if (!path.to_sky) path.near = air_to(distance);
+  if (!path.to_sky && scene_.shadowed_air()) path.near = scene_.shadowed_air()->in_shadows(path.near, ray, distance);
   if (const FogMedium* fog = scene_.fog()) {
     const MediumStretch to_distance = path.near;
     const FogMedium::Along along = fog->along(ray, distance);

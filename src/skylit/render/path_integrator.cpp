@@ -291,7 +291,11 @@ Spectrum PathIntegrator::trace(PathState path, int spike_depth, CounterRandom& r
       break;
     }
     const SurfacePoint point = scene_.surface_point(ray, *hit);
-    if (camera_air && event == 0 && !test_environment_) *camera_air = sky.aerial_perspective(ray.direction, hit->t);
+    if (camera_air && event == 0 && !test_environment_) {
+      *camera_air = sky.aerial_perspective(ray.direction, hit->t);
+      if (const ShadowedAir* shadowed = scene_.shadowed_air())
+        *camera_air = shadowed->in_shadows(*camera_air, ray, hit->t);
+    }
     const Vec3 to_viewer = -ray.direction;
     const PointMaterial point_material = scene_.material_at(point);
     const Material& material = point_material.get();

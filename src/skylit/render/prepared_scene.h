@@ -14,6 +14,7 @@
 #include "skylit/material/surface_appearance.h"
 #include "skylit/render/fog_medium.h"
 #include "skylit/render/scene_lamps.h"
+#include "skylit/render/shadowed_air.h"
 #include "skylit/render/surface_cutouts.h"
 #include "skylit/render/surface_point.h"
 #include "skylit/scene/scene.h"
@@ -48,6 +49,14 @@ class PreparedScene {
   const FogMedium* fog() const { return fog_.get(); }          // null without fog
   const CloudsInSky* clouds() const { return clouds_.get(); }  // null without clouds
   const SceneLamps* lamps() const { return lamps_.get(); }     // null without lights
+  // The clear air's sunlight taken out in the scene's shadows; null in fog (whose own
+  // shadows cut its beams), without a sun, and in scenes of more than
+  // kMaxShadowedAirTriangles triangles.
+  const ShadowedAir* shadowed_air() const { return shadowed_air_.get(); }
+  // The shadow volumes take about 440 bytes and 1.6 µs to build per triangle: a
+  // million-triangle city would add 440 MB and 1.6 s to its frame (2026-12-07) for a
+  // correction of a few per cent on views through its shadows.
+  static constexpr size_t kMaxShadowedAirTriangles = 250'000;
 
   // The surface point a ray meets, its normal facing the ray's origin (surfaces are
   // two-sided; one-sided ones are not met from behind), with the material of the
@@ -100,6 +109,7 @@ class PreparedScene {
   std::unique_ptr<FogMedium> fog_;
   std::unique_ptr<CloudsInSky> clouds_;
   std::unique_ptr<SceneLamps> lamps_;
+  std::unique_ptr<ShadowedAir> shadowed_air_;
 };
 
 }  // namespace skylit
