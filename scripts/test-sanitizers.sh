@@ -38,6 +38,8 @@ heavy=(
   SkyIrradiance.MatchesABruteForceIntegralOverTheSphere
   Renderer.WhitePlaneMatchesTheSpectrumCommandsIlluminances
   SpectrumCommand.CsvHasEveryNanometreAndMatchesTheModel
+  # a full spectrum run too (10 s in Release); `sky`'s code runs here in the other tests
+  SkyCommand.TakesTheSunsAltitudeAsSeenAsSpectrumDoes
   ReflectionSampling.MeanWeightIsTheDirectionalAlbedo
   ReflectionSampling.DirectionsFollowTheStatedDensity
   FogSkyLight.AdaptivePitchMatchesFineFixedSteps
