@@ -58,7 +58,8 @@ std::string scene(const std::string& model, double y0, double y1) {
   return R"({"camera": {"position": [0, 0, 1.6], "look_at": [0, -50, 1.6], "vertical_fov_deg": 10},
     "sun": {"altitude_deg": 30, "azimuth_deg": 0}, "atmosphere": {"model": ")" +
          model + R"("}, "materials": {"black": {"type": "diffuse", "reflectance": 0}},
-    "objects": [)" + roof +
+    "objects": [)" +
+         roof +
          R"({"type": "box", "material": "black", "min": [-20, -51, 0], "max": [20, -50, 8]}],
     "render": {"width": 32, "height": 18}})";
 }
