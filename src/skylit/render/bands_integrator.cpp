@@ -65,6 +65,11 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
         // No ray where the sun cannot shine (facing away, or below the point's horizon).
         return dot(normal, to_sun_) > 0 && sky_.direct_sun(point.z)[kSpectralBins - 1] > 0.0f &&
                !sun_blocked(point, normal);
+      },
+      [this](const Vec3& point, const Vec3& normal) {
+        // Built below, before any patch is asked for.
+        const Irradiance rough = reflected_sun_->from_rough(point, normal);
+        return reflected_sun_->has_mirrors() ? rough + reflected_sun_->from_mirrors(point, normal) : rough;
       });
   // The image's own integrals take the open sky and what obstacles hide from the same
   // cell means (sky/sky_light.h); the obstacles' patches keep the sky model's table.
@@ -209,8 +214,11 @@ ObstacleLight BandsIntegrator::element_obstacle_light(const Ray& ray, const Hit&
     // Without a patch of its own (past the last level, or too small), the integral that
     // meets the obstacle lights it as itself (SkyLight::diffuse_irradiance).
     // The patch's sunlit share stands for the element's hit (obstacle_sky_light.h).
-    if (const std::optional<ObstacleSkyLight::Patch> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin)))
-      return obstacle_radiance(ray, point, body, own->sky, level, own->sunlit);
+    if (const std::optional<ObstacleSkyLight::Patch> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin))) {
+      const Radiance reflected_sun =
+          lambertian_radiance(diffuse_albedo(body, dot(point.normal, -ray.direction)), own->reflected_sun);
+      return obstacle_radiance(ray, point, body, own->sky, level, own->sunlit) + reflected_sun;
+    }
     return {obstacle_radiance(ray, point, body, Irradiance(0.0f), level),
             diffuse_albedo(body, dot(point.normal, -ray.direction))};
   }

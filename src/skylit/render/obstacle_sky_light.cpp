@@ -10,11 +10,13 @@
 namespace skylit {
 
 ObstacleSkyLight::ObstacleSkyLight(const Scene& scene, const RayTracer& tracer,
-                                   const std::vector<int>& lookup_directions, Integral integral, SeesSun sees_sun)
+                                   const std::vector<int>& lookup_directions, Integral integral, SeesSun sees_sun,
+                                   ReflectedSunAt reflected_sun)
     : scene_(scene),
       tracer_(tracer),
       integral_(std::move(integral)),
       sees_sun_(std::move(sees_sun)),
+      reflected_sun_(std::move(reflected_sun)),
       patches_(lookup_directions.size()) {
   // Never 0 (an empty entry of the threads' tables) and never reused.
   static std::atomic<uint64_t> constructed{0};
@@ -128,6 +130,9 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
     for (const Vec3& p : lattice) sunlit += sees_sun_(p, normal) ? 1 : 0;
     value.sunlit = static_cast<float>(sunlit) / static_cast<float>(lattice.size());
   }
+  // At the first level only: the street sees the wall the facade lights; what that wall
+  // sees of such walls is a bounce further and costs a patch's nodes again.
+  if (reflected_sun_ && level == 0) value.reflected_sun = reflected_sun_(*point, normal);
   return remember(recent, level, key, patches.insert({key, value}).first->second);
 }
 

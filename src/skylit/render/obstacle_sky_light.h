@@ -60,10 +60,16 @@ class ObstacleSkyLight {
   // Whether the sun shines on `point`, on a surface facing `normal` (nothing in the way).
   using SeesSun = std::function<bool(const Vec3& point, const Vec3& normal)>;
 
-  // A patch's light: its sky irradiance, and the share of it the sun reaches.
+  // The sunlight that glass and metal facades reflect onto `point` (render/reflected_sun.h).
+  using ReflectedSunAt = std::function<Irradiance(const Vec3& point, const Vec3& normal)>;
+
+  // A patch's light: its sky irradiance, the share of it the sun reaches, and the
+  // sunlight facades reflect onto it (level 0 only: a wall across a street from an
+  // aluminium facade, lit by its reflection, lights the street in turn).
   struct Patch {
     Irradiance sky;
     float sunlit = 1;
+    Irradiance reflected_sun{0.0f};
   };
 
   // `lookup_directions[level]`: the number of directions of the integrals that look up
@@ -72,7 +78,7 @@ class ObstacleSkyLight {
   // holds the scene's objects (mesh ids = object indices) for the probes. Holds
   // references to `scene` and `tracer`.
   ObstacleSkyLight(const Scene& scene, const RayTracer& tracer, const std::vector<int>& lookup_directions,
-                   Integral integral, SeesSun sees_sun = {});
+                   Integral integral, SeesSun sees_sun = {}, ReflectedSunAt reflected_sun = {});
 
   int levels() const { return static_cast<int>(patch_per_distance_.size()); }
 
@@ -130,6 +136,7 @@ class ObstacleSkyLight {
   std::vector<double> patch_per_distance_;  // per level: an element's width, radians
   Integral integral_;
   SeesSun sees_sun_;
+  ReflectedSunAt reflected_sun_;
   // None for a patch none of whose points lies on its plane's triangles.
   mutable std::vector<tbb::concurrent_unordered_map<PatchKey, std::optional<Patch>, PatchKeyHash>> patches_;
 };
