@@ -37,9 +37,8 @@ PreparedScene::PreparedScene(const Scene& scene)
   if (scene.fog) fog_ = std::make_unique<FogMedium>(*scene.fog, meshes, tracer_, sky_, scene.camera.position);
   // Transmittance is largest in the red: a dark last bin means no sunbeam at all (the
   // sun below the horizon, or an overcast CIE sky's).
-  size_t triangles = 0;
-  for (const TriangleMesh* mesh : meshes) triangles += mesh->triangles.size();
-  if (!scene.fog && sky_.direct_sun(0.0)[kSpectralBins - 1] > 0.0f && triangles <= kMaxShadowedAirTriangles)
+  if (!scene.fog && sky_.direct_sun(0.0)[kSpectralBins - 1] > 0.0f &&
+      tracer_.triangle_count() <= kMaxShadowedAirTriangles)
     shadowed_air_ = std::make_unique<ShadowedAir>(meshes, sky_);
   if (!scene.lights.empty())
     lamps_ = std::make_unique<SceneLamps>(scene.lights, tracer_, meshes, fog_ ? &fog_->layer() : nullptr);
