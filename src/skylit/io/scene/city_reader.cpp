@@ -87,23 +87,21 @@ void add_dem_terrain(const JsonReader& terrain, const std::filesystem::path& bas
         "they are read as heights (pits); declare it as the no-data value if it is one");
   // A DEM in another place than the model (a wrong CRS, of the DEM or of the model)
   // would otherwise only show as an empty or odd picture.
-  const BoundingBox city = plan_box(placed.objects), ground = plan_box(relief.objects);
-  // Where the terrain lies, in the scene's frame: a planner checks it covers the site.
-  BoundingBox heights;
-  for (const PlacedCityObject& o : relief.objects)
-    for (const Vec3& v : o.mesh.vertices) heights.add(v);
+  // Where the terrain lies, in the scene's frame (a planner checks it covers the site);
+  // its x and y are the plan's, compared with the model's below.
+  const BoundingBox city = plan_box(placed.objects);
+  BoundingBox ground;
+  for (const PlacedCityObject& o : relief.objects) ground.add(o.mesh.bounds());
   if (!ground.empty())
     source.terrain += formatted("; covers x %.0f to %.0f m, ", ground.lo.x, ground.hi.x) +
                       formatted("y %.0f to %.0f m, ", ground.lo.y, ground.hi.y) +
-                      formatted("heights %.1f to %.1f m (z)", heights.lo.z, heights.hi.z);
+                      formatted("heights %.1f to %.1f m (z)", ground.lo.z, ground.hi.z);
   size_t beyond_edge = 0;
   for (const PlacedCityObject& o : placed.objects) {
-    if (o.type == "TINRelief") continue;
-    BoundingBox own;
-    for (const Vec3& v : o.mesh.vertices) own.add({v.x, v.y, 0});
+    const BoundingBox own = o.mesh.bounds();
+    if (o.type == "TINRelief" || own.empty()) continue;
     const Vec3 c = own.center();
-    if (!own.empty() && (c.x < ground.lo.x || c.x > ground.hi.x || c.y < ground.lo.y || c.y > ground.hi.y))
-      ++beyond_edge;
+    if (c.x < ground.lo.x || c.x > ground.hi.x || c.y < ground.lo.y || c.y > ground.hi.y) ++beyond_edge;
   }
   if (!city.empty() && !ground.empty()) {
     const double gap_x = std::max({0.0, city.lo.x - ground.hi.x, ground.lo.x - city.hi.x});
