@@ -42,33 +42,39 @@ double ScatteringIntegrator::ray_length(double r, double mu, bool& ends_on_groun
                         : shell::distance_to_outer_sphere(r, mu, transmittance_.top_radius());
 }
 
+ScatteringIntegrator::AirAt ScatteringIntegrator::air_at(double r, double mu, double t) const {
+  const double r_t = std::max(shell::radius_at(r, mu, t), transmittance_.ground_radius());
+  const double h = r_t - medium_.earth_radius_m;
+  const double rho_r = medium_.rayleigh_density(h), rho_a = medium_.aerosol_density(h);
+  return {r_t, rho_r, rho_a, medium_.extinction(rho_r, rho_a, medium_.ozone_density(h))};
+}
+
 void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, double nu, double t0, double t1,
-                                       const Phases& phase, ScatteredLight& light) const {
+                                       const Phases& phase, ScatteredLight& light, bool multiple) const {
   const double dt = t1 - t0;
   if (dt <= 0) return;
   // Sources at the segment's midpoint; the attenuation across it is integrated exactly.
   const double t = 0.5 * (t0 + t1);
   // Rays continued through the ground (aerial perspective) see the ground's air there.
-  const double r_t = std::max(shell::radius_at(r, mu, t), transmittance_.ground_radius());
+  const AirAt air = air_at(r, mu, t);
+  const double r_t = air.r, rho_r = air.rho_rayleigh, rho_a = air.rho_aerosol;
+  const Spectrum& extinction = air.extinction;
   const double mu_sun_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
-  const double h = r_t - medium_.earth_radius_m;
-  const double rho_r = medium_.rayleigh_density(h), rho_a = medium_.aerosol_density(h);
-  const Spectrum extinction = medium_.extinction(rho_r, rho_a, medium_.ozone_density(h));
   const Spectrum segment = transmittance_of(extinction * static_cast<float>(dt));
   const Spectrum sun = transmittance_.sun(r_t, mu_sun_t);
   // Multiply scattered light per unit σ_R and σ_A (equal for Hillaire's isotropic Ψ_ms).
-  ScatteringOrdersTable::Source multiple{Spectrum(0.0f), Spectrum(0.0f)};
-  if (orders_) {
-    multiple = orders_->at(r_t, shell::mu_at(r, mu, t, r_t), mu_sun_t, nu);
-  } else if (multiple_) {
-    multiple.rayleigh = multiple_->psi(r_t, mu_sun_t);
-    multiple.aerosol = multiple.rayleigh;
+  ScatteringOrdersTable::Source ms{Spectrum(0.0f), Spectrum(0.0f)};
+  if (multiple && orders_) {
+    ms = orders_->at(r_t, shell::mu_at(r, mu, t, r_t), mu_sun_t, nu);
+  } else if (multiple && multiple_) {
+    ms.rayleigh = multiple_->psi(r_t, mu_sun_t);
+    ms.aerosol = ms.rayleigh;
   }
   const float fr = static_cast<float>(rho_r), fa = static_cast<float>(rho_a), fdt = static_cast<float>(dt);
   for (int k = 0; k < kSpectralBins; ++k) {
     const float sigma_r = medium_.rayleigh_scattering[k] * fr, sigma_a = medium_.aerosol_scattering[k] * fa;
-    const float source = (sigma_r * phase.rayleigh + sigma_a * phase.aerosol) * sun[k] +
-                         sigma_r * multiple.rayleigh[k] + sigma_a * multiple.aerosol[k];
+    const float source = (sigma_r * phase.rayleigh + sigma_a * phase.aerosol) * sun[k] + sigma_r * ms.rayleigh[k] +
+                         sigma_a * ms.aerosol[k];
     const float integral = segment_weight(extinction[k], fdt, segment[k]);
     light.radiance[k] += light.transmittance[k] * source * integral;
     light.transmittance[k] *= segment[k];
@@ -77,40 +83,24 @@ void ScatteringIntegrator::add_segment(double r, double mu, double mu_sun, doubl
 
 Spectrum ScatteringIntegrator::sun_single_scattering(double r, double mu, double mu_sun, double nu, double t0,
                                                      double t1, double max_step_m) const {
-  Spectrum gathered(0.0f), in_front(1.0f);
-  if (!(t1 > t0) || !(max_step_m > 0)) return gathered;
-  const Phases phase = phases(nu);
-  // The same midpoint sources and exact attenuation across each step as add_segment,
-  // with the sun's term alone.
-  auto step = [&](double a, double b, bool gather) {
-    const double dt = b - a, t = 0.5 * (a + b);
-    const double r_t = std::max(shell::radius_at(r, mu, t), transmittance_.ground_radius());
-    const double h = r_t - medium_.earth_radius_m;
-    const double rho_r = medium_.rayleigh_density(h), rho_a = medium_.aerosol_density(h);
-    const Spectrum extinction = medium_.extinction(rho_r, rho_a, medium_.ozone_density(h));
-    const Spectrum segment = transmittance_of(extinction * static_cast<float>(dt));
-    if (gather) {
-      const double mu_sun_t = std::clamp((r * mu_sun + t * nu) / r_t, -1.0, 1.0);
-      const Spectrum sun = transmittance_.sun(r_t, mu_sun_t);
-      const float fr = static_cast<float>(rho_r), fa = static_cast<float>(rho_a), fdt = static_cast<float>(dt);
-      for (int k = 0; k < kSpectralBins; ++k) {
-        const float source = (medium_.rayleigh_scattering[k] * fr * phase.rayleigh +
-                              medium_.aerosol_scattering[k] * fa * phase.aerosol) *
-                             sun[k];
-        gathered[k] += in_front[k] * source * segment_weight(extinction[k], fdt, segment[k]);
-      }
-    }
-    in_front *= segment;
-  };
+  if (!(t1 > t0) || !(max_step_m > 0)) return Spectrum(0.0f);
   const auto steps = [max_step_m](double length) {
     return static_cast<int>(std::clamp(std::ceil(length / max_step_m), 1.0, 1e4));
   };
+  // The air in front only dims; the stretch gathers the sun's single scattering, as
+  // add_segment does without the multiple scattering.
+  ScatteredLight light{Spectrum(0.0f), Spectrum(1.0f)};
   const double front = std::max(t0, 0.0);
   const int n_front = steps(front), n_stretch = steps(t1 - front);
-  for (int k = 0; k < n_front && front > 0; ++k) step(front * k / n_front, front * (k + 1) / n_front, false);
+  for (int k = 0; k < n_front && front > 0; ++k) {
+    const double dt = front / n_front, t = (k + 0.5) * dt;
+    light.transmittance *= transmittance_of(air_at(r, mu, t).extinction * static_cast<float>(dt));
+  }
+  const Phases phase = phases(nu);
   for (int k = 0; k < n_stretch; ++k)
-    step(front + (t1 - front) * k / n_stretch, front + (t1 - front) * (k + 1) / n_stretch, true);
-  return gathered;
+    add_segment(r, mu, mu_sun, nu, front + (t1 - front) * k / n_stretch, front + (t1 - front) * (k + 1) / n_stretch,
+                phase, light, false);
+  return light.radiance;
 }
 
 void ScatteringIntegrator::add_ground(double r, double mu_sun, double nu, double length, ScatteredLight& light) const {

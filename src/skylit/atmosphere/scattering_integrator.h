@@ -84,9 +84,18 @@ class ScatteringIntegrator {
     float rayleigh, aerosol;
   };
   Phases phases(double nu) const;
-  // Adds one segment [t0, t1] of the ray to `light`.
+  // The air at distance t along the ray (r, μ): its radius (rays continued through the
+  // ground see the ground's air), densities and extinction.
+  struct AirAt {
+    double r;
+    double rho_rayleigh, rho_aerosol;
+    Spectrum extinction;
+  };
+  AirAt air_at(double r, double mu, double t) const;
+  // Adds one segment [t0, t1] of the ray to `light`; without `multiple`, the sun's single
+  // scattering alone.
   void add_segment(double r, double mu, double mu_sun, double nu, double t0, double t1, const Phases& phase,
-                   ScatteredLight& light) const;
+                   ScatteredLight& light, bool multiple = true) const;
   void add_ground(double r, double mu_sun, double nu, double length, ScatteredLight& light) const;
 
   const AtmosphereMedium& medium_;
