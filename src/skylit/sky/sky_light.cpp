@@ -156,12 +156,6 @@ Spectrum SkyLight::open_irradiance(const Vec3& normal) const {
                                       (elevation + kPi / 2) / kPi * (kOpenElevations - 1));
 }
 
-Radiance SkyLight::incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const {
-  const Ray ray{origin, direction};
-  const std::optional<Hit> hit = tracer_.intersect(ray);
-  return hit ? obstacle_radiance_(ray, *hit).radiance : sky;
-}
-
 Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, const Vec3& to_viewer,
                                      const Material& material) const {
   if (!has_specular(material)) return Radiance(0.0f);

@@ -138,8 +138,6 @@ class SkyLight {
   const SkyModel& sky_;
   const RayTracer& tracer_;
   ObstacleRadiance obstacle_radiance_;
-  // The light arriving from an element's direction: the sky's, or the obstacle's.
-  Radiance incoming(const Vec3& origin, const Vec3& direction, const Radiance& sky) const;
 
   std::vector<SkyElement> elements_;
   std::vector<Radiance> element_radiance_;
