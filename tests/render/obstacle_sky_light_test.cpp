@@ -86,35 +86,61 @@ TEST(ObstacleSkyLight, HitsOnOnePatchShareItsValueFromItsCentre) {
   EXPECT_FLOAT_EQ(below.spectrum()[2], -1.0f);
 }
 
-// The sun's share of a patch: the part of it that sees the sun, from points spread over
-// it, asked once per patch. Against a shadow edge along y placed through the patch's
-// centre (half lit), an eighth of a metre past it (a quarter), before it (all lit) and
-// past it (none).
+// A patch's sunlit share: of its 4 × 4 jittered lattice's points (one in each quarter-
+// patch cell), asked once per patch, with a ring around it telling whether a shadow edge
+// passes within half a patch. Against a shadow edge along y through the 0.5 m patch's
+// centre (a cell boundary: half lit whatever the jitter), well before it (all lit) and
+// past it (none); and 0.05 m past its side, where the patch is unlit but an element
+// reaching over the edge takes its footprint's share from the sun map.
 TEST(ObstacleSkyLight, APatchsSunlitShareIsThePartOfItTheSunReaches) {
   Ground g;
   const Vec3 p = g.in_frame(20.1, 10.1);
   const Irradiance centre = g.seen_from(p.x, p.y, 2);  // the patch of the test above
   const double cx = centre.spectrum()[0];
   const Ray ray{{p.x, p.y, 2}, {0, 0, -1}};
-  // The 0.5 m patch's lattice columns lie 0.0625 and 0.1875 m either side of its centre.
-  for (const auto& [edge, share] :
-       {std::pair{cx, 0.5f}, std::pair{cx + 0.125, 0.25f}, std::pair{cx - 1.0, 1.0f}, std::pair{cx + 1.0, 0.0f}}) {
-    const double edge_x = edge;  // Clang 14 cannot capture a structured binding in a lambda
+  struct Case {
+    double edge_x;
+    float share;
+    bool edge_near;
+  };
+  for (const Case& c :
+       {Case{cx, 0.5f, true}, Case{cx - 1.0, 1.0f, false}, Case{cx + 1.0, 0.0f, false}, Case{cx + 0.3, 0.0f, true}}) {
     int asked = 0;
     const ObstacleSkyLight patches(
         g.scene, g.tracer, {1024}, [](int, const Vec3&, const Vec3&) { return Irradiance(1.0f); },
         [&](const Vec3& point, const Vec3& normal) {
           ++asked;
           EXPECT_FLOAT_EQ(static_cast<float>(normal.z), 1.0f);
-          return point.x > edge_x;
+          return point.x > c.edge_x;
         });
+    int asked_once = -1;
     for (int repeat = 0; repeat < 3; ++repeat) {
       const std::optional<ObstacleSkyLight::Patch> patch = patches.at(0, ray, *g.tracer.intersect(ray));
       ASSERT_TRUE(patch.has_value());
-      EXPECT_FLOAT_EQ(patch->sunlit, share) << edge_x - cx;
+      EXPECT_FLOAT_EQ(patch->sunlit, c.share) << c.edge_x - cx;
+      EXPECT_EQ(patch->on_plane != 0, c.edge_near) << c.edge_x - cx;
+      if (asked_once < 0) asked_once = asked;
     }
-    EXPECT_EQ(asked, 16);  // a 4 × 4 lattice, once per patch
+    EXPECT_EQ(asked, asked_once);  // once per patch
+    // Without an edge near, the 16 points and the ring's 12: the map is not kept.
+    if (!c.edge_near) EXPECT_EQ(asked, 28);
   }
+  // The element seen from 2 m straight down at 0.2 m past the centre, 0.2 rad wide: its
+  // footprint runs from the centre to 0.4 m past it, a quarter of it past the edge at
+  // 0.3 m; the map's cells are an eighth of a metre, so within one cell's share of the
+  // footprint's 0.4 m (about 0.3).
+  const ObstacleSkyLight patches(
+      g.scene, g.tracer, {1024}, [](int, const Vec3&, const Vec3&) { return Irradiance(1.0f); },
+      [&](const Vec3& point, const Vec3&) { return point.x > cx + 0.3; });
+  const Ray element{{cx + 0.2, p.y, 2}, {0, 0, -1}};
+  const std::optional<Hit> hit = g.tracer.intersect(element);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_FLOAT_EQ(patches.at(0, element, *hit)->sunlit, 0.0f);
+  EXPECT_NEAR(patches.at(0, element, *hit, 0, 0.2)->sunlit, 0.25, 0.3125);
+  EXPECT_GT(patches.at(0, element, *hit, 0, 0.2)->sunlit, 0.0f);
+  // An element wholly before the edge takes none.
+  const Ray before{{cx - 0.1, p.y, 2}, {0, 0, -1}};
+  EXPECT_FLOAT_EQ(patches.at(0, before, *g.tracer.intersect(before), 0, 0.1)->sunlit, 0.0f);
 }
 
 TEST(ObstacleSkyLight, PatchesGrowWithTheDistanceAsTheElements) {

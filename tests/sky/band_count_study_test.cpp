@@ -27,7 +27,7 @@ double worst_canyon_error(const SkyModel& sky, const std::vector<SkyElement>& el
       }
       tracer.commit();
       const SkyLight light(
-          sky, tracer, [](const Ray&, const Hit&) { return Radiance(0.0f); }, elements);
+          sky, tracer, [](const Ray&, const Hit&, double) { return Radiance(0.0f); }, elements);
       // Across the floor, not only on the centre line: the view factor of a point at
       // x from the centre is (sin φ₁ + sin φ₂)/2 with tan φ = (w/2 ∓ x)/h.
       for (double x : {0.0, 3.0, 7.0}) {

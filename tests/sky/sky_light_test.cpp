@@ -48,7 +48,7 @@ struct Fixture {
 };
 
 // Radiance of obstacles for these tests: black, so only the sky counts.
-Radiance black_obstacle(const Ray&, const Hit&) { return Radiance(0.0f); }
+Radiance black_obstacle(const Ray&, const Hit&, double) { return Radiance(0.0f); }
 
 // A street canyon of width w between two walls of height h, `length_m` long, along y
 // (or along x when turned).
@@ -159,7 +159,7 @@ struct OverGreyGround {
     for (const TriangleMesh& mesh : others) tracer.add_mesh(mesh);
     tracer.commit();
     cells = std::make_unique<SkyLight>(
-        sky, tracer, [this](const Ray&, const Hit&) { return ObstacleLight(grey); },
+        sky, tracer, [this](const Ray&, const Hit&, double) { return ObstacleLight(grey); },
         fibonacci_sphere(SkyLight::kDefaultDirections), nullptr, nullptr, SkyLight::Cells::kMeans);
   }
   double error(const Vec3& point, const Vec3& n) const {
@@ -250,7 +250,7 @@ TEST(SkyLight, ObstaclesSendBackTheirLight) {
   f.tracer.add_mesh(make_box({-500, 5, 0}, {500, 15, 1000}));
   f.tracer.commit();
   const Radiance wall_radiance(0.01f);
-  const SkyLight light(f.sky, f.tracer, [&](const Ray&, const Hit&) { return wall_radiance; });
+  const SkyLight light(f.sky, f.tracer, [&](const Ray&, const Hit&, double) { return wall_radiance; });
   const SkyLight dark(f.sky, f.tracer, black_obstacle);
   const Vec3 point{0, 0, 500}, north{0, 1, 0};
   const double lit = illuminance(light.diffuse_irradiance(point, north));
@@ -269,8 +269,9 @@ TEST(SkyLight, ObstaclesLitAsThePointCloseTheBouncesByTheGeometricSeries) {
   add_canyon(f.tracer, 20, 30, 4000, false);
   const SkyLight seen_only(f.sky, f.tracer, black_obstacle);
   for (const float rho : {0.3f, 0.8f}) {
-    const SkyLight closed(f.sky, f.tracer,
-                          [rho](const Ray&, const Hit&) { return ObstacleLight(Radiance(0.0f), Reflectance(rho)); });
+    const SkyLight closed(f.sky, f.tracer, [rho](const Ray&, const Hit&, double) {
+      return ObstacleLight(Radiance(0.0f), Reflectance(rho));
+    });
     const Vec3 point{0, 0, 0}, up{0, 0, 1};
     const double hidden = 1 - seen_only.sky_view_factor(point, up);
     EXPECT_GT(hidden, 0.5);  // the closure matters here

@@ -38,7 +38,7 @@ TEST(SpecularSky, AdaptiveBandSearchMatchesADenseQuadrature) {
   const SkyModel sky(atmosphere, direction_from_altitude_azimuth(30, 150), 1.6);
   RayTracer open_field;
   open_field.commit();
-  const SkyLight light(sky, open_field, [](const Ray&, const Hit&) { return Radiance(0.0f); });
+  const SkyLight light(sky, open_field, [](const Ray&, const Hit&, double) { return Radiance(0.0f); });
   struct Case {
     Vec3 normal;
     double view_from_normal_deg, view_azimuth_deg;

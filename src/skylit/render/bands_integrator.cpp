@@ -92,8 +92,8 @@ std::unique_ptr<SkyLight> BandsIntegrator::sky_light_with(int directions) const 
 
 std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int directions,
                                                                 SkyLight::Cells cells) const {
-  const auto obstacle = [this, level](const Ray& ray, const Hit& hit) {
-    return element_obstacle_light(ray, hit, level);
+  const auto obstacle = [this, level](const Ray& ray, const Hit& hit, double element_width_rad) {
+    return element_obstacle_light(ray, hit, level, element_width_rad);
   };
   // The points' own integrals (level 0) lose the sunlight the fog in the shadows around a
   // shaded point does not scatter; the obstacles' keep the open field's, a correction
@@ -207,14 +207,17 @@ Irradiance BandsIntegrator::obstacle_sky(const Ray& ray, const Hit& hit, const S
   return open_sky_irradiance(point);
 }
 
-ObstacleLight BandsIntegrator::element_obstacle_light(const Ray& ray, const Hit& hit, int level) const {
+ObstacleLight BandsIntegrator::element_obstacle_light(const Ray& ray, const Hit& hit, int level,
+                                                      double element_width_rad) const {
   const SurfacePoint point = scene_.untextured_point(ray, hit);
   const Material& body = obstacle_materials_[point.material];
   if (scene_.scene().render.obstacles_own_sky) {
     // Without a patch of its own (past the last level, or too small), the integral that
     // meets the obstacle lights it as itself (SkyLight::diffuse_irradiance).
-    // The patch's sunlit share stands for the element's hit (obstacle_sky_light.h).
-    if (const std::optional<ObstacleSkyLight::Patch> own = obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin))) {
+    // The patch's sunlit share stands for the element's hit; near a shadow edge, the
+    // share of the element's own footprint (obstacle_sky_light.h).
+    if (const std::optional<ObstacleSkyLight::Patch> own =
+            obstacle_sky_->at(level, ray, hit, resolved_m(ray.origin), element_width_rad)) {
       const Radiance reflected_sun =
           lambertian_radiance(diffuse_albedo(body, dot(point.normal, -ray.direction)), own->reflected_sun);
       return obstacle_radiance(ray, point, body, own->sky, level, own->sunlit) + reflected_sun;

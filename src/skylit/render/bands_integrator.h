@@ -225,8 +225,8 @@ class BandsIntegrator {
   // The same for a ray of a sky-light integral, which stands for a sky element: textures
   // by their means (render/obstacle_materials.h); its sky light the open sky's, or with
   // "own_sky" the obstacle sky light's `level`, or where that has none the integral's own
-  // (ObstacleLight::lit_as_the_point).
-  ObstacleLight element_obstacle_light(const Ray& ray, const Hit& hit, int level) const;
+  // (ObstacleLight::lit_as_the_point). `element_width_rad`: the element's width.
+  ObstacleLight element_obstacle_light(const Ray& ray, const Hit& hit, int level, double element_width_rad) const;
   // `sun`: the direct sun reaching the point, on a plane facing it (sun_reaching).
   Radiance lambertian_obstacle_radiance(const Ray& ray, const SurfacePoint& point, const Material& material,
                                         const Irradiance& sky, const Irradiance& sun) const;

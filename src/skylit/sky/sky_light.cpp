@@ -197,7 +197,7 @@ Radiance SkyLight::specular_radiance(const Vec3& point, const Vec3& normal, cons
   // and the glossy lobe sees obstacles near the mirror direction, mostly at the point's
   // own height.
   auto obstacle_seen = [&](const Ray& ray, const Hit& hit) {
-    const Radiance light = obstacle_radiance_(ray, hit).radiance;
+    const Radiance light = obstacle_radiance_(ray, hit, width).radiance;
     if (!in_fog) return light;
     const Radiance fog = sky_toward(ray.direction);
     return fog + (light - fog) * Transmittance(fog_->transmittance(point, ray.direction, hit.t));
@@ -461,7 +461,8 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
           if (!own_hit->has_value()) continue;
           const double from = r > 0 && outline[r - 1] ? *outline[r - 1] : c.rows[r];
           const double to = r < 2 && outline[r] ? *outline[r] : c.rows[r + 1];
-          const ObstacleLight light = obstacle_radiance_(*own_ray, **own_hit);
+          // (Its width a sub-cell's: a third of the element's.)
+          const ObstacleLight light = obstacle_radiance_(*own_ray, **own_hit, std::sqrt(e.solid_angle) / 3);
           for (size_t row = 0; row < 3; ++row) {
             const double overlap = std::min(to, c.rows[row + 1]) - std::max(from, c.rows[row]);
             const size_t slot = static_cast<size_t>(kSlot[u][row]);
@@ -471,7 +472,7 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
       }
       continue;
     }
-    if (hit) add_hidden(i, ray, *hit, obstacle_radiance_(ray, *hit), w, element_radiance_[i]);
+    if (hit) add_hidden(i, ray, *hit, obstacle_radiance_(ray, *hit, std::sqrt(e.solid_angle)), w, element_radiance_[i]);
   }
   assert(next_crossing == crossings.size());  // every outline found was counted
   // In a building's shadow the fog along many of the point's directions lies in the

@@ -38,7 +38,10 @@ struct ObstacleLight {
   Radiance radiance;
   Reflectance lit_as_the_point;
 };
-using ObstacleRadiance = std::function<ObstacleLight(const Ray& ray, const Hit& hit)>;
+// The callback is told the width (radians) of the element the ray stands for, so that
+// light that changes sharply within it (a shadow edge across a sunlit wall) can be
+// averaged over it rather than taken at its centre.
+using ObstacleRadiance = std::function<ObstacleLight(const Ray& ray, const Hit& hit, double element_width_rad)>;
 
 class SkyLight {
  public:
