@@ -123,7 +123,9 @@ TEST(ObstacleSkyLight, APatchsSunlitShareIsThePartOfItTheSunReaches) {
     }
     EXPECT_EQ(asked, asked_once);  // once per patch
     // Without an edge near, the 16 points and the ring's 12: the map is not kept.
-    if (!c.edge_near) EXPECT_EQ(asked, 28);
+    if (!c.edge_near) {
+      EXPECT_EQ(asked, 28);
+    }
   }
   // The element seen from 2 m straight down at 0.2 m past the centre, 0.2 rad wide: its
   // footprint runs from the centre to 0.4 m past it, a quarter of it past the edge at
