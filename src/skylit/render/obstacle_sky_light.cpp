@@ -72,8 +72,11 @@ namespace {
 // the patch itself is cells 2–5 each way.
 constexpr int kMapCells = 8;
 constexpr double kMapCellsPerPatch = 4;
-constexpr double kMapStart = -0.5;  // in patches
-bool inside_patch(int i, int j) { return i >= 2 && i < 6 && j >= 2 && j < 6; }
+constexpr double kMapStart = -0.5;                     // in patches
+constexpr int kPatchCellsFrom = 2, kPatchCellsTo = 6;  // the patch's own cells, each way
+bool inside_patch(int i, int j) {
+  return i >= kPatchCellsFrom && i < kPatchCellsTo && j >= kPatchCellsFrom && j < kPatchCellsTo;
+}
 uint64_t map_bit(int i, int j) { return uint64_t{1} << (i * kMapCells + j); }
 }  // namespace
 
@@ -98,12 +101,12 @@ float ObstacleSkyLight::footprint_sunlit(const Patch& patch, const PlaneGroups::
   const double du_a = dot(along_across, plane.e1) * scale, dv_a = dot(along_across, plane.e2) * scale;
   const double du_b = dot(along_up, plane.e1) * scale, dv_b = dot(along_up, plane.e2) * scale;
   constexpr int kAcross = 4;
+  auto cell = [](double c) { return std::clamp(static_cast<int>(std::floor(c)), 0, kMapCells - 1); };
   int on = 0, lit = 0;
   for (int a = 0; a < kAcross; ++a)
     for (int b = 0; b < kAcross; ++b) {
       const double alpha = ((a + 0.5) / kAcross - 0.5) * element_width_rad;
       const double beta = ((b + 0.5) / kAcross - 0.5) * element_width_rad;
-      auto cell = [](double c) { return std::clamp(static_cast<int>(std::floor(c)), 0, kMapCells - 1); };
       const uint64_t bit = map_bit(cell(u0 + alpha * du_a + beta * du_b), cell(v0 + alpha * dv_a + beta * dv_b));
       if (!(patch.on_plane & bit)) continue;
       ++on;
@@ -179,13 +182,13 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
   };
   const Vec3 normal = back ? -plane.normal : plane.normal;
   // The points of the sun map's jittered lattice (8 × 8 cells of a quarter patch over
-  // the patch and half a patch around it, a point at a place drawn from the key in
-  // each); those of the patch's own 4 × 4 cells that lie on the plane's triangles (what
-  // the hits meet) give its sunlit share; the point the value is found at: the centre,
-  // or else the first of them. (A 2 × 2 lattice placed a sunlit wall's shadow edge only
-  // to half a patch: with the squares' edges on a canyon's round coordinates, its shaded
-  // wall read 0.93 and 0.91 of the path tracer at h/w 2 and 4, where 4 × 4 reads 0.99
-  // and 0.97.)
+  // the patch and half a patch around it, a point in each at a place drawn from its
+  // plane and square, LatticeJitter); those of the patch's own 4 × 4 cells that lie on
+  // the plane's triangles (what the hits meet) give its sunlit share; the point the
+  // value is found at: the centre, or else the first of them. (A 2 × 2 lattice placed a
+  // sunlit wall's shadow edge only to half a patch: with the squares' edges on a
+  // canyon's round coordinates, its shaded wall read 0.93 and 0.91 of the path tracer
+  // at h/w 2 and 4, where 4 × 4 reads 0.99 and 0.97.)
   LatticeJitter jitter(plane, key, level);
   std::array<Vec3, kMapCells * kMapCells> map_points;
   for (int i = 0; i < kMapCells; ++i)
@@ -194,12 +197,12 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
       const double v = kMapStart + (j + jitter.next()) / kMapCellsPerPatch;
       map_points[static_cast<size_t>(i * kMapCells + j)] = in_plane(u, v);
     }
+  auto map_point = [&map_points](int i, int j) { return map_points[static_cast<size_t>(i * kMapCells + j)]; };
   std::vector<Vec3> lattice;
   uint64_t on_plane_bits = 0;
-  for (int i = 2; i < 6; ++i)
-    for (int j = 2; j < 6; ++j)
-      if (const std::optional<Vec3> p =
-              on_plane(hit.mesh_id, plane_index, map_points[static_cast<size_t>(i * kMapCells + j)], normal)) {
+  for (int i = kPatchCellsFrom; i < kPatchCellsTo; ++i)
+    for (int j = kPatchCellsFrom; j < kPatchCellsTo; ++j)
+      if (const std::optional<Vec3> p = on_plane(hit.mesh_id, plane_index, map_point(i, j), normal)) {
         lattice.push_back(*p);
         on_plane_bits |= map_bit(i, j);
       }
@@ -215,8 +218,8 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
     int sunlit = 0;
     uint64_t sun_bits = 0;
     size_t k = 0;
-    for (int i = 2; i < 6; ++i)
-      for (int j = 2; j < 6; ++j)
+    for (int i = kPatchCellsFrom; i < kPatchCellsTo; ++i)
+      for (int j = kPatchCellsFrom; j < kPatchCellsTo; ++j)
         if (on_plane_bits & map_bit(i, j)) {
           const bool lit = sees_sun_(lattice[k++], normal);
           sunlit += lit ? 1 : 0;
@@ -234,14 +237,13 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
       for (int j = 0; j < kMapCells && !edge_near; j += 2)
         if (!inside_patch(i, j)) {
           const int ii = i + static_cast<int>(jitter.next() * 2), jj = j + static_cast<int>(jitter.next() * 2);
-          edge_near = sees_sun_(map_points[static_cast<size_t>(ii * kMapCells + jj)], normal) != (value.sunlit > 0);
+          edge_near = sees_sun_(map_point(ii, jj), normal) != (value.sunlit > 0);
         }
     if (edge_near && k > 0) {
       for (int i = 0; i < kMapCells; ++i)
         for (int j = 0; j < kMapCells; ++j) {
           if (inside_patch(i, j)) continue;
-          const std::optional<Vec3> p =
-              on_plane(hit.mesh_id, plane_index, map_points[static_cast<size_t>(i * kMapCells + j)], normal);
+          const std::optional<Vec3> p = on_plane(hit.mesh_id, plane_index, map_point(i, j), normal);
           if (!p) continue;
           on_plane_bits |= map_bit(i, j);
           if (sees_sun_(*p, normal)) sun_bits |= map_bit(i, j);
