@@ -46,6 +46,12 @@ Xyz xyz_from_spectrum(const Spectrum& spectrum) {
   return {xyz.x * kMaxLuminousEfficacy, xyz.y * kMaxLuminousEfficacy, xyz.z * kMaxLuminousEfficacy};
 }
 
-double luminance(const Spectrum& radiance) { return xyz_from_spectrum(radiance).y; }
+double luminance(const Spectrum& radiance) {
+  // Y alone (as xyz_from_spectrum sums it): the sky-light integrals ask for it per element.
+  const CmfBinIntegrals& cmf = production_cmf();
+  double y = 0;
+  for (int i = 0; i < kSpectralBins; ++i) y += radiance[i] * cmf.y[static_cast<size_t>(i)];
+  return y * kMaxLuminousEfficacy;
+}
 
 }  // namespace skylit
