@@ -63,28 +63,22 @@ using testing::path_luminance;
 
 // The shaded wall at 10, 30, 50, 70 and 90 % of its height, each seen straight on from
 // 0.3 m: the fast method within `tolerance` plus three standard errors of the reference.
-// Returns the worst |ratio − 1|.
-double compare_shaded_wall(double height_over_width, int paths, double tolerance, double width_m = kWidth,
-                           double foot_tolerance = -1) {
+void compare_shaded_wall(double height_over_width, int paths, double tolerance, double width_m = kWidth) {
   const Scene scene = canyon(height_over_width, 0, width_m);
   const Renderer fast(scene);
   const PathIntegrator path(fast.prepared());
   const double h = height_over_width * width_m;
-  double worst = 0;
   for (double share : {0.1, 0.3, 0.5, 0.7, 0.9}) {
     const Vec3 on_wall{0, -width_m / 2, share * h};
     const Ray ray{on_wall + Vec3{0, 0.3, 0}, {0, -1, 0}};
     const double expected = luminance(fast.radiance(ray));
     const Estimate reference = path_luminance(path, ray, paths, 23);
     const double ratio = expected / reference.mean;
-    worst = std::max(worst, std::abs(ratio - 1));
     std::printf("[Canyon] %4.1f m, h/w %.0f, %2.0f %% up: fast %8.2f path %8.2f ± %5.2f cd/m2, ratio %.3f\n", width_m,
                 height_over_width, 100 * share, expected, reference.mean, reference.standard_error, ratio);
-    const double bound = share < 0.2 && foot_tolerance >= 0 ? foot_tolerance : tolerance;
-    EXPECT_NEAR(expected, reference.mean, bound * reference.mean + 3 * reference.standard_error)
+    EXPECT_NEAR(expected, reference.mean, tolerance * reference.mean + 3 * reference.standard_error)
         << width_m << " m, h/w " << height_over_width << ", " << share << " of the height";
   }
-  return worst;
 }
 
 TEST(CanyonLight, ShadedWallAgainstThePathTracer) {
@@ -99,11 +93,13 @@ TEST(CanyonLight, TheShadedWallHoldsAtOtherWidths) {
   // The canyon has almost no scale of its own, but the obstacles' patches are squares
   // of power-of-two metres: where the sunlit wall's shadow edge fell on them changed with
   // the width, and the h/w 2 wall's middle read 3.8 % too bright at 5 and 20 m where it
-  // held at 12 m (docs/sky-light.md, "At other widths"). The issue's 3 % at those widths
-  // too, 200,000 paths a point, but at the foot (10 % up), which reads 0.946 and 0.948
-  // of the path tracer there (0.969 at 12 m) for a reason not yet found: 6 %, so that
-  // it does not grow, and issue 14 stays open for it. About 7 s.
-  for (double width : {5.0, 20.0}) compare_shaded_wall(2.0, 200000, 0.03, width, 0.06);
+  // held at 12 m (docs/sky-light.md, "At other widths"); and the fixed directions'
+  // misjudgement of the sky slit and the sunlit band at the top of the far wall moved
+  // with where their outlines fell among the directions: the h/w 2 foot read 0.955 and
+  // 0.959 (docs/sky-light.md, "Outlines that matter"). The issue's 3 % at those widths
+  // too, h/w 2 and 4, 200,000 paths a point. About 14 s.
+  for (double h_over_w : {2.0, 4.0})
+    for (double width : {5.0, 20.0}) compare_shaded_wall(h_over_w, 200000, 0.03, width);
 }
 
 TEST(CanyonLight, TheShadedWallDoesNotDependOnHowTheSunlitOneIsCutIntoTriangles) {

@@ -22,7 +22,8 @@ struct Ground {
   std::atomic<int> calls{0};
   ObstacleSkyLight patches;
   Ground()
-      : scene(make_scene()), patches(scene, tracer, {1024, 256}, [this](int, const Vec3& point, const Vec3& normal) {
+      : scene(make_scene()),
+        patches(scene, tracer, {1024, 256}, [this](int, const Vec3& point, const Vec3& normal, uint64_t) {
           ++calls;
           Spectrum s(0.0f);
           s[0] = static_cast<float>(point.x);
@@ -107,7 +108,7 @@ TEST(ObstacleSkyLight, APatchsSunlitShareIsThePartOfItTheSunReaches) {
        {Case{cx, 0.5f, true}, Case{cx - 1.0, 1.0f, false}, Case{cx + 1.0, 0.0f, false}, Case{cx + 0.3, 0.0f, true}}) {
     int asked = 0;
     const ObstacleSkyLight patches(
-        g.scene, g.tracer, {1024}, [](int, const Vec3&, const Vec3&) { return Irradiance(1.0f); },
+        g.scene, g.tracer, {1024}, [](int, const Vec3&, const Vec3&, uint64_t) { return Irradiance(1.0f); },
         [&](const Vec3& point, const Vec3& normal) {
           ++asked;
           EXPECT_FLOAT_EQ(static_cast<float>(normal.z), 1.0f);
@@ -132,7 +133,7 @@ TEST(ObstacleSkyLight, APatchsSunlitShareIsThePartOfItTheSunReaches) {
   // 0.3 m; the map's cells are an eighth of a metre, so within one cell's share of the
   // footprint's 0.4 m (about 0.3).
   const ObstacleSkyLight patches(
-      g.scene, g.tracer, {1024}, [](int, const Vec3&, const Vec3&) { return Irradiance(1.0f); },
+      g.scene, g.tracer, {1024}, [](int, const Vec3&, const Vec3&, uint64_t) { return Irradiance(1.0f); },
       [&](const Vec3& point, const Vec3&) { return point.x > cx + 0.3; });
   const Ray element{{cx + 0.2, p.y, 2}, {0, 0, -1}};
   const std::optional<Hit> hit = g.tracer.intersect(element);
@@ -187,7 +188,7 @@ TEST(ObstacleSkyLight, APatchOverThePlanesEdgeIsEvaluatedOnIt) {
     tracer.commit();
     const PlaneGroups planes(scene.objects[0].mesh);
     const PlaneGroups::Plane& plane = planes.plane(0);
-    const ObstacleSkyLight patches(scene, tracer, {1024}, [&](int, const Vec3& point, const Vec3&) {
+    const ObstacleSkyLight patches(scene, tracer, {1024}, [&](int, const Vec3& point, const Vec3&, uint64_t) {
       Spectrum s(0.0f);
       s[0] = static_cast<float>(point.x);
       s[1] = static_cast<float>(point.y);
@@ -236,7 +237,7 @@ TEST(ObstacleSkyLight, AWallCutIntoStripsHasTheSamePatchesAsAWhole) {
     RayTracer tracer;
     tracer.add_mesh(scene.objects[0].mesh);
     tracer.commit();
-    const ObstacleSkyLight patches(scene, tracer, {1024}, [](int, const Vec3& point, const Vec3& normal) {
+    const ObstacleSkyLight patches(scene, tracer, {1024}, [](int, const Vec3& point, const Vec3& normal, uint64_t) {
       Spectrum s(0.0f);
       s[0] = static_cast<float>(point.x);
       s[1] = static_cast<float>(point.z);
@@ -278,7 +279,7 @@ TEST(ObstacleSkyLight, SmallTrianglesAndThePastTheLastLevelHaveNoPatch) {
   tracer.add_mesh(scene.objects[0].mesh);
   tracer.commit();
   int calls = 0;
-  const ObstacleSkyLight small(scene, tracer, {1024}, [&](int, const Vec3&, const Vec3&) {
+  const ObstacleSkyLight small(scene, tracer, {1024}, [&](int, const Vec3&, const Vec3&, uint64_t) {
     ++calls;
     return Irradiance(1.0f);
   });
@@ -300,7 +301,7 @@ TEST(ObstacleSkyLight, APatchDoesNotDependOnTheLastBitsOfTheHitsNormal) {
   roof.triangles = {{0, 1, 2}};
   scene.objects.push_back({"roof", roof, 0});
   std::vector<Vec3> received;
-  auto record = [&received](int, const Vec3& point, const Vec3& normal) {
+  auto record = [&received](int, const Vec3& point, const Vec3& normal, uint64_t) {
     received.push_back(point);
     received.push_back(normal);
     return Irradiance(Spectrum(1.0f));

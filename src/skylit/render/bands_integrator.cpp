@@ -52,14 +52,15 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
   std::vector<int> lookup_directions{SkyLight::kDefaultDirections};
   for (int level = 0; level < levels; ++level) {
     const int directions = kObstacleLevelDirections[static_cast<size_t>(level)];
-    obstacle_sky_lights_.push_back(sky_light_looking_up(level + 1, directions));
+    obstacle_sky_lights_.push_back(
+        sky_light_looking_up(level + 1, directions, SkyLight::Cells::kCentres, SkyLight::Turning::kPerPoint));
     lookup_directions.push_back(directions);
   }
   lookup_directions.pop_back();
   obstacle_sky_ = std::make_unique<ObstacleSkyLight>(
       scene.scene(), scene.tracer(), lookup_directions,
-      [this](int level, const Vec3& point, const Vec3& normal) {
-        return obstacle_sky_lights_[static_cast<size_t>(level)]->diffuse_irradiance(point, normal);
+      [this](int level, const Vec3& point, const Vec3& normal, uint64_t turn) {
+        return obstacle_sky_lights_[static_cast<size_t>(level)]->diffuse_irradiance(point, normal, nullptr, turn);
       },
       [this](const Vec3& point, const Vec3& normal) {
         // No ray where the sun cannot shine (facing away, or below the point's horizon).
@@ -90,8 +91,8 @@ std::unique_ptr<SkyLight> BandsIntegrator::sky_light_with(int directions) const 
   return sky_light_looking_up(0, directions, SkyLight::Cells::kMeans);
 }
 
-std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int directions,
-                                                                SkyLight::Cells cells) const {
+std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int directions, SkyLight::Cells cells,
+                                                                SkyLight::Turning turning) const {
   const auto obstacle = [this, level](const Ray& ray, const Hit& hit, double element_width_rad) {
     return element_obstacle_light(ray, hit, level, element_width_rad);
   };
@@ -100,7 +101,7 @@ std::unique_ptr<SkyLight> BandsIntegrator::sky_light_looking_up(int level, int d
   // of a correction (docs/fog.md).
   const FogShadowedSunlight* shadowed = level == 0 && scene_.fog() ? scene_.fog()->shadowed_sunlight() : nullptr;
   return std::make_unique<SkyLight>(sky_, scene_.tracer(), obstacle, fibonacci_sphere(directions), fog_light_, shadowed,
-                                    cells);
+                                    cells, turning);
 }
 
 PrimaryHit BandsIntegrator::first_hit(const Ray& ray) const {

@@ -164,7 +164,8 @@ class BandsIntegrator {
   // obstacle sky light's `level` (element_obstacle_light; past the last level, as the
   // point itself).
   std::unique_ptr<SkyLight> sky_light_looking_up(int level, int directions,
-                                                 SkyLight::Cells cells = SkyLight::Cells::kCentres) const;
+                                                 SkyLight::Cells cells = SkyLight::Cells::kCentres,
+                                                 SkyLight::Turning turning = SkyLight::Turning::kNone) const;
   // With the diffuse part from `diffuse_from`, the glossy part from `glossy_from`.
   CachedSkyLight sky_light_at(const SkyLight& diffuse_from, const SkyLight& glossy_from, const SurfacePoint& point,
                               const Vec3& viewer) const;

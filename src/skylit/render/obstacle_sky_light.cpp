@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "skylit/core/angles.h"
+#include "skylit/sky/sky_light.h"
 
 namespace skylit {
 
@@ -212,7 +213,14 @@ std::optional<ObstacleSkyLight::Patch> ObstacleSkyLight::at(int level, const Ray
   // Two threads may compute the same patch at once: both get the same value (it depends
   // on the key alone), and the first to insert it keeps it.
   if (!point) return remember(recent, level, key, patches.insert({key, std::nullopt}).first->second);
-  Patch value{integral_(level, *point, normal)};
+  // The integral's turn (SkyLight::Turning) from the patch's square, whatever its
+  // triangles: every 8 × 8 block of a plane's squares takes each of the 64 turns once, so
+  // that the integrals meeting a wall average over all of them (drawn at random instead,
+  // a deep canyon's foot read 0.960 or 1.032 of the path tracer by the draw,
+  // docs/sky-light.md).
+  static_assert(SkyLight::kTurns == 64);
+  const uint64_t turn = static_cast<uint64_t>(key.a & 7) + 8 * static_cast<uint64_t>(key.b & 7);
+  Patch value{integral_(level, *point, normal, turn)};
   if (sees_sun_) {
     // Over the part of the patch on the plane's triangles.
     int sunlit = 0;

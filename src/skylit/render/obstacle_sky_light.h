@@ -63,8 +63,9 @@ namespace skylit {
 class ObstacleSkyLight {
  public:
   // The diffuse sky irradiance (W m⁻² nm⁻¹) at `point` on a surface facing `normal`,
-  // from the sky-light integral of `level`, whose obstacles are lit through level + 1.
-  using Integral = std::function<Irradiance(int level, const Vec3& point, const Vec3& normal)>;
+  // from the sky-light integral of `level`, whose obstacles are lit through level + 1;
+  // with its directions turned by `turn`, chosen by the patch (SkyLight::Turning).
+  using Integral = std::function<Irradiance(int level, const Vec3& point, const Vec3& normal, uint64_t turn)>;
   // Whether the sun shines on `point`, on a surface facing `normal` (nothing in the way).
   using SeesSun = std::function<bool(const Vec3& point, const Vec3& normal)>;
 

@@ -84,6 +84,18 @@ class SkyLight {
     // (docs/sky-light.md, "The one-pixel level's cells").
     kMeansAcrossTheAureole,
   };
+  // Whether each diffuse integral turns its directions by one of kTurns rotations of the
+  // sphere, the one its caller draws (with Cells::kCentres only). A fixed
+  // set of directions misjudges a narrow slit of sky or a thin sunlit band by the same
+  // amount at every point that sees it alike: every point along a street canyon's wall
+  // at one height. The obstacles' patches (render/obstacle_sky_light.h) are many such
+  // points, averaged by the integrals that meet them: turned, their errors cancel there
+  // instead of adding up (at the foot of a canyon of height/width 4, the light its
+  // opposite wall had of its own sky was 8 % short, docs/sky-light.md). Not for the
+  // points an image shows: neighbouring pixels would differ by those errors.
+  enum class Turning { kNone, kPerPoint };
+  static constexpr int kTurns = 64;
+  //
   // `fog`, when given (a fog layer with multiple scattering), lights the points it
   // covers instead of the sky: the diffuse irradiance there is the fog field's, each
   // hidden direction seen through the fog (media/fog_surface_light.h); it is referred
@@ -95,7 +107,7 @@ class SkyLight {
   SkyLight(const SkyModel& sky, const RayTracer& tracer, ObstacleRadiance obstacle_radiance,
            std::vector<SkyElement> directions = fibonacci_sphere(kDefaultDirections),
            const FogSurfaceLight* fog = nullptr, const FogShadowedSunlight* shadowed_fog_sunlight = nullptr,
-           Cells cells = Cells::kCentres);
+           Cells cells = Cells::kCentres, Turning turning = Turning::kNone);
   static constexpr double kVaryingCell = 1.0;
 
   // Irradiance (W m⁻² nm⁻¹) on a surface at `point` with unit `normal` (facing the side
@@ -112,7 +124,13 @@ class SkyLight {
   // `obstacle_distance_m`, when given, receives the harmonic mean distance to what the
   // directions meet (cos-weighted; open sky counts as infinitely far; +∞ when nothing is
   // hidden): the scale over which the irradiance changes (Ward et al. 1988).
-  Irradiance diffuse_irradiance(const Vec3& point, const Vec3& normal, double* obstacle_distance_m = nullptr) const;
+  //
+  // With Turning::kPerPoint, `turn` (modulo kTurns) picks the rotation the directions
+  // take; 0 is the set as given. The caller draws it from what the point stands for (an
+  // obstacle's patch), not from the point's position, which moves by a millimetre with
+  // how a wall is cut into triangles.
+  Irradiance diffuse_irradiance(const Vec3& point, const Vec3& normal, double* obstacle_distance_m = nullptr,
+                                uint64_t turn = 0) const;
   // Whether diffuse_irradiance at altitude z already holds what the fog above takes and
   // adds (so the caller must not dim it by the fog's share of the sky light).
   bool lights_in_fog(double z_m) const { return fog_ && fog_->covers(z_m); }
@@ -178,6 +196,15 @@ class SkyLight {
   // showed a whole row of sub-cells at once: steps of 2–2.5 % in a wall's sky light
   // every two metres of height on Fig. 7's tower (docs/sky-light.md).
   static constexpr int kOutlineBisections = 3;
+  // With Cells::kMeans, outlines across elements whose sky does not vary are traced
+  // apart, the most consequential first, until the rest could misjudge the irradiance by
+  // at most this share of it (RMS, each element off by kShareErrorRms of its weight
+  // times the step in radiance across its outline). Counted whole, the sunlit top of a
+  // street canyon's far wall (a band of 10°, between a roof's outline and a shadow
+  // edge) was seen 3 % too dark from the shaded wall's foot, its sky slit 6 % too bright
+  // (docs/sky-light.md).
+  static constexpr double kOutlineTolerance = 0.002;
+  static constexpr double kShareErrorRms = 0.29;
   // An outline crossing column `column` (0–2) of an element between the centres of rows
   // `lower_row` and the one above: it lies between v = low and high.
   struct OutlineCrossing {
@@ -187,7 +214,14 @@ class SkyLight {
     double low, high;
   };
   Cells cell_detail_;
+  Turning turning_;
+  // With Turning::kPerPoint: the directions turned by each rotation, and the sky's
+  // radiance toward each (turn 0: elements_ and element_radiance_).
+  std::vector<std::vector<SkyElement>> turned_elements_;
+  std::vector<std::vector<Radiance>> turned_radiance_;
+  void turn_elements();
   std::vector<CellGrid> cells_;
+  std::vector<double> element_cd_;  // with the cells: each element's mean luminance
   void find_cells();
   // Whether an element an outline crosses has its sub-cells traced apart for a surface
   // of `normal`: where they differ by more than kVaryingCell × the sky's mean, and where
@@ -200,6 +234,8 @@ class SkyLight {
   // surface itself: there the centre stands for the element as before. The horizon's
   // elements are refined with Cells::kMeans only.
   bool refined(const CellGrid& c, const Vec3& normal) const;
+  // Whether all of an element's sub-cells lie above the surface's own horizon.
+  static bool above_surface(const CellGrid& c, const Vec3& normal);
   // With the cells' means: the open sky's irradiance Σ max(0, n·ω_i) dω_i L̄_i over normals n, on
   // a grid of elevation × azimuth (world frame), read bilinearly.
   static constexpr int kOpenElevations = 17, kOpenAzimuths = 33;
