@@ -247,12 +247,12 @@ TEST(SkyLight, ARoofEdgeThroughTheHorizonSweepsAcrossSmoothly) {
 TEST(SkyLight, ACanyonWallsSlitOfSkyIsTracedAtItsOutlines) {
   // The shaded wall of a street canyon 12 m wide (h/w 2 and 4, 4 km long, black walls,
   // no ground) sees the sky through a slit between the roofs, a few elements wide; its
-  // outlines cross elements whose sky hardly varies. Against 262,144 directions summed
-  // directly, at 10, 30 and 50 % of the height: each element's centre standing for it
-  // misjudges the slit by up to 11 % (measured 1.6–10.8 %, both signs); with the
-  // outlines that matter traced apart (sky_light.h, kOutlineTolerance) within 1.5 %
-  // (measured: below). The foot of such a wall was 6 % too bright in the render, where
-  // its own sky is the larger part of what little light it has (docs/sky-light.md).
+  // outline crosses elements whose sky hardly varies. Against 262,144 directions summed
+  // directly, at 10, 30 and 50 % of the height: the elements' centres standing for them
+  // misjudge it by 0.4–1.5 % (measured); with the outlines that matter traced apart
+  // (sky_light.h, kOutlineTolerance) within 0.8 % (measured), asserted 1.5 %. In the
+  // render the foot of such a wall read 6 % too bright in its own sky, the larger part
+  // of the little light it has there (docs/sky-light.md).
   Atmosphere atmosphere{AtmosphereSettings{}};
   const SkyModel sky{atmosphere, direction_from_altitude_azimuth(30, 180), 1.6};
   double worst_cells = 0, worst_centres = 0;

@@ -574,6 +574,12 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
       // open or with the centre's ray measured worse on Fig. 7, the cache's 99th
       // percentile against 16,384 directions 2.84 → 3.38 %.)
       const CellGrid& c = cells_[i];
+      // Traced apart for its outline alone (the sky even across it), one obstacle light
+      // stands for all its hidden sub-cells: the centre's where the centre is hidden, else
+      // the first hidden sub-cell's, either over the element's whole footprint.
+      const bool for_the_outline = !refined(c, normal);
+      std::optional<ObstacleLight> shared_light;
+      if (for_the_outline && hit) shared_light = centre_light(i);
       for (size_t u = 0; u < 3; ++u) {
         // The outlines of this column, by the lower of their two rows.
         std::array<std::optional<double>, 2> outline{};
@@ -587,8 +593,11 @@ Irradiance SkyLight::diffuse_irradiance(const Vec3& point, const Vec3& normal, d
           if (!own_hit->has_value()) continue;
           const double from = r > 0 && outline[r - 1] ? *outline[r - 1] : c.rows[r];
           const double to = r < 2 && outline[r] ? *outline[r] : c.rows[r + 1];
+          if (for_the_outline && !shared_light)
+            shared_light = obstacle_radiance_(*own_ray, **own_hit, std::sqrt(e.solid_angle));
           // (Its width a sub-cell's: a third of the element's.)
-          const ObstacleLight light = obstacle_radiance_(*own_ray, **own_hit, std::sqrt(e.solid_angle) / 3);
+          const ObstacleLight light =
+              for_the_outline ? *shared_light : obstacle_radiance_(*own_ray, **own_hit, std::sqrt(e.solid_angle) / 3);
           for (size_t row = 0; row < 3; ++row) {
             const double overlap = std::min(to, c.rows[row + 1]) - std::max(from, c.rows[row]);
             const size_t slot = static_cast<size_t>(kSlot[u][row]);

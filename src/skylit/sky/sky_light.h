@@ -75,7 +75,8 @@ class SkyLight {
     // obstacles hide then come from the same radiances: from the table's 2,048 point
     // samples and the elements' centres, a block whose top passed near a low sun took
     // out whole 6° elements of the aureole, ±3–5 % of a wall's sky light from one metre
-    // to the next (docs/sky-light.md).
+    // to the next (docs/sky-light.md). Elsewhere an outline's elements are traced apart
+    // (their sub-cells, not bisected) as far as they could matter (kOutlineTolerance).
     kMeans,
     // The same means, with sub-cells traced apart only where an outline crosses an
     // element whose sub-cells differ (the aureole), and the outline not bisected: for
