@@ -72,7 +72,7 @@ heavy=(
   FogMultipleScattering.LightsSurfacesInTheFogWithTheFogsOwnLight
   FogMultipleScattering.TheBlocksOfFig8cInTheirOwnShadowAgainstThePathTracer
   CanyonLight.ShadedWallAgainstThePathTracer
-  # the same at 5 and 20 m (7 s in Release, 200,000 paths a point); the obstacles' sun
+  # the same at 5 and 20 m, h/w 2 and 4 (14 s in Release, 200,000 paths a point); the obstacles' sun
   # map runs here in ObstacleSkyLight's tests and every render
   CanyonLight.TheShadedWallHoldsAtOtherWidths
   # the sunlit cloud slab (57 s each in Release under ctest -j2); its spike paths run
