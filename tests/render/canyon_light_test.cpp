@@ -6,7 +6,7 @@
 // whole unobstructed sky, a facade across a narrow street was credited with sky it
 // cannot see.
 //
-// `render.obstacle_light = "own_sky"` (not yet the default, docs/sky-light.md).
+// `render.obstacle_light = "own_sky"`, the default (docs/sky-light.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
