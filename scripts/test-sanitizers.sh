@@ -75,6 +75,8 @@ heavy=(
   # the same at 5 and 20 m, h/w 2 and 4 (14 s in Release, 200,000 paths a point); the obstacles' sun
   # map runs here in ObstacleSkyLight's tests and every render
   CanyonLight.TheShadedWallHoldsAtOtherWidths
+  # the same under an oblique sun (8 s in Release)
+  CanyonLight.TheShadedWallHoldsUnderAnObliqueSun
   # the sunlit cloud slab (57 s each in Release under ctest -j2); its spike paths run
   # here in PathIntegrator's cloud tests and ExtremeScenes
   'CloudSlab.SunAt*'

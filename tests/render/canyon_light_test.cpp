@@ -31,11 +31,11 @@ constexpr double kHalfLength = 150;  // each block runs 300 m along x
 // street from the sunlit one) are in shade. With `strip_m` the north block's sunlit face
 // is cut into vertical strips that wide (as a CAD export cuts a wall around its
 // windows), a separate mesh 1 cm before the block.
-Scene canyon(double height_over_width, double strip_m = 0, double width_m = kWidth) {
+Scene canyon(double height_over_width, double strip_m = 0, double width_m = kWidth, double sun_azimuth_deg = 180) {
   const double h = height_over_width * width_m, half = width_m / 2;
   Scene scene;
   scene.camera = Camera{{0, 0, 1.6}, {0, 100, 1.6}, {0, 0, 1}, 50.0};
-  scene.sun = Sun{30, 180};
+  scene.sun = Sun{30, sun_azimuth_deg};
   scene.render.obstacles_own_sky = true;
   scene.atmosphere.ground_albedo = 0.3;
   scene.materials.push_back({"grey", DiffuseMaterial{Spectrum(0.3f)}});
@@ -63,8 +63,9 @@ using testing::path_luminance;
 
 // The shaded wall at 10, 30, 50, 70 and 90 % of its height, each seen straight on from
 // 0.3 m: the fast method within `tolerance` plus three standard errors of the reference.
-void compare_shaded_wall(double height_over_width, int paths, double tolerance, double width_m = kWidth) {
-  const Scene scene = canyon(height_over_width, 0, width_m);
+void compare_shaded_wall(double height_over_width, int paths, double tolerance, double width_m = kWidth,
+                         double sun_azimuth_deg = 180) {
+  const Scene scene = canyon(height_over_width, 0, width_m, sun_azimuth_deg);
   const Renderer fast(scene);
   const PathIntegrator path(fast.prepared());
   const double h = height_over_width * width_m;
@@ -74,10 +75,13 @@ void compare_shaded_wall(double height_over_width, int paths, double tolerance, 
     const double expected = luminance(fast.radiance(ray));
     const Estimate reference = path_luminance(path, ray, paths, 23);
     const double ratio = expected / reference.mean;
-    std::printf("[Canyon] %4.1f m, h/w %.0f, %2.0f %% up: fast %8.2f path %8.2f ± %5.2f cd/m2, ratio %.3f\n", width_m,
-                height_over_width, 100 * share, expected, reference.mean, reference.standard_error, ratio);
+    std::printf(
+        "[Canyon] %4.1f m, h/w %.0f, sun at %3.0f°, %2.0f %% up: fast %8.2f path %8.2f ± %5.2f cd/m2, ratio %.3f\n",
+        width_m, height_over_width, sun_azimuth_deg, 100 * share, expected, reference.mean, reference.standard_error,
+        ratio);
     EXPECT_NEAR(expected, reference.mean, tolerance * reference.mean + 3 * reference.standard_error)
-        << width_m << " m, h/w " << height_over_width << ", " << share << " of the height";
+        << width_m << " m, h/w " << height_over_width << ", sun at " << sun_azimuth_deg << "°, " << share
+        << " of the height";
   }
 }
 
@@ -100,6 +104,16 @@ TEST(CanyonLight, TheShadedWallHoldsAtOtherWidths) {
   // too, h/w 2 and 4, 200,000 paths a point. About 14 s.
   for (double h_over_w : {2.0, 4.0})
     for (double width : {5.0, 20.0}) compare_shaded_wall(h_over_w, 200000, 0.03, width);
+}
+
+TEST(CanyonLight, TheShadedWallHoldsUnderAnObliqueSun) {
+  // The sun 30° off the street's normal (azimuth 150°): the sunlit band on the far wall
+  // and the shadow on the street are no longer parallel to the walls. Before the
+  // outlines that matter and the turned directions (docs/sky-light.md) the h/w 4 foot
+  // read 1.096 of the path tracer here (300,000 paths), a case the tests above did not
+  // see; measured after: h/w 2 0.978–1.003, h/w 4 0.967–1.003. 3 %, 200,000 paths a
+  // point. About 8 s.
+  for (double h_over_w : {2.0, 4.0}) compare_shaded_wall(h_over_w, 200000, 0.03, kWidth, 150);
 }
 
 TEST(CanyonLight, TheShadedWallDoesNotDependOnHowTheSunlitOneIsCutIntoTriangles) {
