@@ -10,6 +10,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "skylit/core/counter_random.h"
+#include "skylit/geometry/transform.h"
 #include "skylit/material/reflection.h"
 #include "skylit/spectrum/cie.h"
 
@@ -63,24 +65,18 @@ void SkyLight::turn_elements() {
   turned_elements_.assign(kTurns, elements_);
   turned_radiance_.assign(kTurns, element_radiance_);
   tbb::parallel_for(1, kTurns, [&](int k) {
-    uint64_t state = 0x9e3779b97f4a7c15ULL * static_cast<uint64_t>(k);
-    auto uniform = [&state] {
-      state += 0x9e3779b97f4a7c15ULL;
-      uint64_t z = state;
-      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-      return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    // The n-th number of turn k: SplitMix64 of (k + n) golden-ratio steps.
+    auto uniform = [k, n = uint64_t{0}]() mutable {
+      return static_cast<double>(splitmix64(0x9e3779b97f4a7c15ULL * (static_cast<uint64_t>(k) + n++)) >> 11) *
+             0x1.0p-53;
     };
     const double u1 = uniform(), u2 = uniform(), u3 = uniform();
     const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-    const double x = a * std::sin(2 * kPi * u2), y = a * std::cos(2 * kPi * u2), z = b * std::sin(2 * kPi * u3),
-                 w = b * std::cos(2 * kPi * u3);
+    const Transform turn = Transform::rotation_quaternion(a * std::sin(2 * kPi * u2), a * std::cos(2 * kPi * u2),
+                                                          b * std::sin(2 * kPi * u3), b * std::cos(2 * kPi * u3));
     for (size_t i = 0; i < elements_.size(); ++i) {
       Vec3& d = turned_elements_[static_cast<size_t>(k)][i].direction;
-      // d' = q d q*, for the unit quaternion (x, y, z; w).
-      const Vec3 q{x, y, z};
-      const Vec3 t = 2.0 * cross(q, d);
-      d = normalize(d + w * t + cross(q, t));
+      d = normalize(turn.apply_vector(d));
       turned_radiance_[static_cast<size_t>(k)][i] = sky_.sky_radiance_near_ground(d);
     }
   });
