@@ -114,19 +114,21 @@ CacheDeviation cache_deviation(const std::string& example, int width, int height
   return result;
 }
 
-// Bound on the 99th percentile of the per-pixel deviation. The issue asks for 2 %; the
-// 1024-direction integral that the cache interpolates is itself off by more than that
-// from the converged sky light (next test), in steps as obstacle edges cross its
-// directions, which no smooth interpolation follows. Measured (2026-12-03, every 2nd
-// pixel): 5.2 % at 320 × 180 and 5.4 % at 480 × 270 with corners kept within their
-// obstacles' reach (cache_corner_agreement.h); 9.2 % and 7.2 % without, 27.7 % and
-// 25.8 % before corners were refused at all. With the obstacles lit by their own sky
-// and the corners' 15 % spread (2026-12-04): 4.3 % and 5.3 %; with the cells' means
-// (2026-12-05, sky/sky_light.h): 3.1 % and 4.9 %; with a lone corner kept within its
-// obstacles' reach (later that day) 2.3 % and 3.4 % (every pixel: 3.1 % and 3.9 %
-// before it, 2.3 % and 3.0 % after). The exact value and the cached one come from the
-// same quadrature, so the deviation is the cache's against its own points.
-constexpr double kTolerance = 0.045;
+// Bound on the 99th percentile of the per-pixel deviation: the issue's 2 %. The exact
+// value and the cached one come from the same quadrature, so the deviation is the
+// cache's against its own points; the 1024-direction integral is itself off the
+// converged sky light by about as much (next test), in steps as obstacle edges cross its
+// directions, which no smooth interpolation follows. History (every 2nd pixel unless
+// said): 27.7 % and 25.8 % at 320 × 180 and 480 × 270 before corners were refused at
+// all; 9.2 % and 7.2 % with the corners' sky light compared; 5.2 % and 5.4 % with
+// corners kept within their obstacles' reach (2026-12-03, cache_corner_agreement.h);
+// with the obstacles lit by their own sky and the corners' 15 % spread (2026-12-04):
+// 4.3 % and 5.3 %; with the cells' means (2026-12-05, sky/sky_light.h): 3.1 % and 4.9 %;
+// with a lone corner kept within its obstacles' reach 2.3 % and 3.4 %, then refused on
+// the grids 2.1 % and 2.0 %; with every cell checked at its middle (2026-12-07,
+// SurfaceCache::check_cells) 1.65 % and 1.70 % (every pixel: 1.55 % and 1.64 %). The
+// bound leaves 0.3 point.
+constexpr double kTolerance = 0.02;
 
 TEST(SkyLightCacheExamples, Fig7AtSmallSizesStaysNearTheExactSkyLight) {
   for (const auto& [width, height] : {std::pair{320, 180}, std::pair{480, 270}}) {
@@ -148,7 +150,9 @@ TEST(SkyLightCacheExamples, Fig7AtSmallSizesStaysNearTheExactSkyLight) {
 // sky model's table and the elements' centres; 2.84 % and 1.81 % with the cells' means
 // (sky/sky_light.h; the converged value built the same way); 2.88 % and 1.47 % with
 // the outlines across sub-cells bisected; 2.19 % and 1.47 % with a lone corner kept
-// within its obstacles' reach. 4 s.
+// within its obstacles' reach; 1.94 % and 1.34 % with the outlines that matter traced
+// apart (2026-12-07); 1.22 % and 1.34 % with every cell checked at its middle (later
+// that day): the cache now nearer the converged value than its own points are. 4 s.
 TEST(SkyLightCacheExamples, Fig7CacheAddsLittleToTheQuadraturesOwnError) {
   const CacheDeviation d = cache_deviation("fig7.json", 320, 180, 2, true);
   ASSERT_GT(d.pixels, 4000u);
@@ -168,12 +172,17 @@ TEST(SkyLightCacheExamples, Fig7CacheAddsLittleToTheQuadraturesOwnError) {
 // off (the roof's edge had taken a point's value from beside a standing seam). A lone
 // corner no longer stands in at all on the grids (later that day): 10.0 → 7.2 % (the
 // wall under the eaves had taken a corner's value from lower down, 10–20 % too bright;
-// what is left is mostly the pixels beside frames, sills and the roof's seams). The
-// bound leaves 1.3 points. 2 s.
+// what is left is mostly the pixels beside frames, sills and the roof's seams). Every
+// cell checked at its middle (2026-12-07): 7.6 → 5.4 %, what is left the pixels whose
+// centres fall within a few centimetres of the roof's standing seams (each hides a
+// share of the sky there, a dotted line along each seam) and the 1,024-direction
+// integral's own scatter on the lawn beside the house (against 16,384 directions the
+// exact value's 99th percentile is 2.0 %, the cached one's 4.7 %). The bound leaves 1
+// point. 3 s.
 TEST(SkyLightCacheExamples, ALoneCornerDoesNotStandInAcrossARecess) {
   const CacheDeviation d = cache_deviation("house.json", 320, 180, 1);
   ASSERT_GT(d.pixels, 5000u);
-  EXPECT_LT(d.p99, 0.085);
+  EXPECT_LT(d.p99, 0.065);
 }
 
 TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
@@ -195,9 +204,12 @@ TEST(SkyLightCacheExamples, ExamplesAtAllSizesStayNearTheExactSkyLight) {
   // 9.4 %, 12.0 % (at 1920 × 1080 mostly cells with two corners on the glass, frames and
   // sills, docs/sky-light.md). 2026-12-07 (the outlines that matter traced apart, the
   // obstacles' directions turned): Fig. 7 2.0 %, 1.9 %, 2.2 %; building 2.5 %, 3.2 %,
-  // 2.9 %; house 7.4 %, 9.7 %, 12.3 %.
+  // 2.9 %; house 7.4 %, 9.7 %, 12.3 %. Later that day (every cell checked at its
+  // middle, SurfaceCache::check_cells): Fig. 7 1.55 %, 1.64 %, 1.39 %; building 1.93 %,
+  // 1.75 %, 1.44 %; house 5.4 %, 6.4 %, 3.9 % (the pixels beside the roof's seams and the
+  // integral's own scatter beside the house, above). 70 s.
   for (const auto& [example, bound] :
-       {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", 0.035}, std::pair{"house.json", 0.14}})
+       {std::pair{"fig7.json", kTolerance}, std::pair{"building.json", kTolerance}, std::pair{"house.json", 0.075}})
     for (const auto& [width, height] : {std::pair{320, 180}, std::pair{480, 270}, std::pair{1920, 1080}}) {
       const CacheDeviation d = cache_deviation(example, width, height, width > 1000 ? 4 : 1);
       ASSERT_GT(d.pixels, 5000u);

@@ -83,10 +83,38 @@ TEST(SurfaceCache, OneLargeSurfaceNeedsNoPerPixelPoints) {
   // One material over the whole view: the coarse grid covers every pixel.
   const PrimaryHits hits = hits_of_tiled_plane(1000.0, 1);
   const SurfaceCache cache(hits, value_at);
-  EXPECT_EQ(cache.fine_points(), 0);
+  // Only the coarse cells' checks at their middles (a fine point each; the value is
+  // linear, so every cell passes).
+  EXPECT_EQ(cache.cell_checks(), (kWidth / 16) * (kHeight / 16));
+  EXPECT_EQ(cache.fine_points(), cache.cell_checks());
   EXPECT_EQ(cache.pixel_points(), 0);
   const SurfacePoint& p = *hits.surface(20, 30);
   ASSERT_TRUE(cache.interpolate(20.5, 30.5, p));
+}
+
+TEST(SurfaceCache, ADipBetweenCornersThatAgreeIsFoundByTheCellsCheck) {
+  // The sky light dips by 20 % over a few metres around the middle of one coarse cell
+  // (pixel 24, 24; its corners 16 pixels ≈ 31 m away agree to 1e-6), as it does beside
+  // a sill or in a recess: the cell's blend there would be 1.25 times the value. The
+  // check at the middle fails the cell, and the pixel gets the finer levels' value.
+  const PrimaryHits hits = hits_of_tiled_plane(1e5, 1);
+  const Vec3 dip = hits.surface(24, 24)->position;
+  const auto dipped = [&](const SurfacePoint& p, int, int) {
+    CachedSkyLight v = value_at(p);
+    const double d_m = length(p.position - dip);
+    v.diffuse_irradiance = Irradiance(static_cast<float>(1000 * (1 - 0.2 * std::exp(-d_m * d_m / 9))));
+    return v;
+  };
+  const SurfaceCache cache(hits, dipped);
+  const SurfacePoint& middle = *hits.surface(24, 24);
+  const std::optional<CachedSkyLight> at_middle = cache.interpolate(24.5, 24.5, middle);
+  ASSERT_TRUE(at_middle);
+  EXPECT_NEAR(at_middle->diffuse_irradiance[0], dipped(middle, 24, 24).diffuse_irradiance[0], 1.0f);
+  // Only around the dip: the other coarse cells pass and cover their pixels.
+  EXPECT_GT(cache.fine_points() + cache.pixel_points(), cache.cell_checks());
+  EXPECT_LT(cache.fine_points(), 2 * 25 + cache.cell_checks());
+  const SurfaceCache flat(hits, value_at);
+  EXPECT_EQ(flat.fine_points() + flat.pixel_points(), flat.cell_checks());
 }
 
 // Ground seen at a grazing angle from 3 m up.
@@ -154,7 +182,7 @@ TEST(SurfaceCache, SkyLightOutshoneByThePixelsOtherLightNeedsNoFinerLevel) {
   const SurfaceCache alone(hits, stepped([](int) { return 0.0; }));
   EXPECT_GT(alone.fine_points() + alone.pixel_points(), 50);
   const SurfaceCache outshone(hits, stepped([&](int) { return 100 * sky_lx; }));
-  EXPECT_EQ(outshone.fine_points() + outshone.pixel_points(), 0);
+  EXPECT_EQ(outshone.fine_points() + outshone.pixel_points(), outshone.cell_checks());
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       const std::optional<CachedSkyLight> v = outshone.interpolate(x + 0.5, y + 0.5, *hits.surface(x, y));
@@ -171,9 +199,9 @@ TEST(SurfaceCache, SkyLightOutshoneByThePixelsOtherLightNeedsNoFinerLevel) {
   // its grid index); from pixel 17 on, their corners at 16 are dark, and the least other
   // light among a cell's corners counts: refined as without it.
   const SurfaceCache from_16(hits, stepped([&](int x) { return x >= 16 ? 100 * sky_lx : 0.0; }));
-  EXPECT_EQ(from_16.fine_points() + from_16.pixel_points(), 0);
+  EXPECT_EQ(from_16.fine_points() + from_16.pixel_points(), from_16.cell_checks());
   const SurfaceCache from_17(hits, stepped([&](int x) { return x >= 17 ? 100 * sky_lx : 0.0; }));
-  EXPECT_GT(from_17.fine_points() + from_17.pixel_points(), 0);
+  EXPECT_GT(from_17.fine_points() + from_17.pixel_points(), from_17.cell_checks());
 }
 
 // A plane seen from above through a narrow view (0.18 m a pixel), of material 0 but

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include <tbb/parallel_for.h>
 
@@ -27,7 +28,8 @@ SurfaceCache::Grid::Grid(int width, int height, int spacing)
       spacing_(spacing),
       grid_width_((width - 1 + spacing - 1) / spacing + 1),
       grid_height_((height - 1 + spacing - 1) / spacing + 1),
-      slots_(static_cast<size_t>(grid_width_) * grid_height_, kNone) {}
+      slots_(static_cast<size_t>(grid_width_) * grid_height_, kNone),
+      failed_(spacing > 1 ? static_cast<size_t>(grid_width_) * grid_height_ : 0, 0) {}
 
 void SurfaceCache::Grid::cell(double x, double y, int& gx, int& gy, double& tx, double& ty) const {
   // Grid point g stands at the centre of pixel min(g·spacing, size − 1).
@@ -77,6 +79,10 @@ SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double 
   // In a cell that spans much depth, near obstacles, corners farther than their reach
   // must agree closely (cache_corner_agreement.h). The per-pixel level's corners are a
   // pixel apart: nothing finer to go to.
+  if (!failed_.empty() && failed_[index(gx, gy)] && count > 0) {
+    out.refused = true;
+    return out;
+  }
   const std::span<const double> lx(corner_lx.data(), count);
   const bool near_obstacles = spacing_ > 1 && depth_span > kDepthSpan && !all_within_obstacle_reach &&
                               !corners_agree(lx, kCloseSpread, other_lx);
@@ -190,7 +196,9 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
   for (int gy = 0; gy < coarse_.grid_height(); ++gy)
     for (int gx = 0; gx < coarse_.grid_width(); ++gx) coarse_.want(gx, gy);
   coarse_.compute_wanted(hits, compute);
-  // The fine grid around every pixel whose surface the coarse grid does not cover.
+  // Each coarse cell checked at its middle (a fine point), then the fine grid around
+  // every pixel whose surface the coarse grid does not cover.
+  cell_checks_ = check_cells(coarse_, fine_, hits, compute);
   const auto not_by_coarse =
       uncovered_pixels(hits, [&](double x, double y, const SurfacePoint& p) { return coarse_.covers(x, y, p); });
   for (size_t y = 0; y < not_by_coarse.size(); ++y)
@@ -203,12 +211,52 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
           fine_.want(std::min(gx + dx, fine_.grid_width() - 1), std::min(gy + dy, fine_.grid_height() - 1));
     }
   fine_.compute_wanted(hits, compute);
+  // The fine cells checked at their middle pixels, with the full integral: a coarser
+  // value there would fail cells by its own quadrature's error.
+  cell_checks_ += check_cells(fine_, pixel_, hits, compute);
   // The centres of the pixels that neither grid covers.
   const auto not_by_grids = uncovered_pixels(
       hits, [&](double x, double y, const SurfacePoint& p) { return source_in_grids(x, y, p).found(); });
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y]) pixel_.want(x, static_cast<int>(y));
   pixel_.compute_wanted(hits, compute_one_pixel ? compute_one_pixel : compute);
+}
+
+int SurfaceCache::check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, const Compute& compute) {
+  struct Check {
+    int gx, gy, fx, fy;
+  };
+  std::vector<Check> checks;
+  for (int gy = 0; gy + 1 < grid.grid_height(); ++gy)
+    for (int gx = 0; gx + 1 < grid.grid_width(); ++gx) {
+      // The cell's middle pixel, a point of the finer grid (the spacings divide).
+      const int fx = (grid.pixel_x(gx) + grid.pixel_x(gx + 1)) / 2 / finer.spacing();
+      const int fy = (grid.pixel_y(gy) + grid.pixel_y(gy + 1)) / 2 / finer.spacing();
+      const SurfacePoint* p = hits.surface(finer.pixel_x(fx), finer.pixel_y(fy));
+      if (!p) continue;
+      const Grid::Corners corners = grid.usable_corners(finer.pixel_x(fx) + 0.5, finer.pixel_y(fy) + 0.5, *p);
+      if (!corners.usable) continue;  // the finer level is computed there anyway
+      std::array<double, 4> corner_lx{};
+      size_t count = 0;
+      for (const Grid::Stored* s : corners.stored)
+        if (s) corner_lx[count++] = s->diffuse_lx;
+      if (grid.spacing() <= kUncheckedCellPixels &&
+          corners_agree(std::span<const double>(corner_lx.data(), count), kUncheckedSpread))
+        continue;
+      finer.want(fx, fy);
+      checks.push_back({gx, gy, fx, fy});
+    }
+  finer.compute_wanted(hits, compute);
+  for (const Check& c : checks) {
+    const Grid::Stored* exact = finer.at(c.fx, c.fy);
+    if (!exact) continue;
+    const std::optional<CachedSkyLight> blend = grid.interpolate(exact->x + 0.5, exact->y + 0.5, exact->point);
+    if (!blend) continue;
+    if (!corners_agree(std::array{illuminance(blend->diffuse_irradiance), exact->diffuse_lx}, kCellCheck,
+                       exact->value.other_lx))
+      grid.fail(c.gx, c.gy);
+  }
+  return static_cast<int>(checks.size());
 }
 
 SurfaceCache::GridSource SurfaceCache::source_in_grids(double x, double y, const SurfacePoint& point) const {

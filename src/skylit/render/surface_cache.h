@@ -5,9 +5,11 @@
 // small objects), a finer grid is computed there, and where that finds none either, the
 // pixel's centre itself (so the antialiasing samples of a pixel share its centre's value
 // instead of each computing its own: on a model of many small parts nearly every pixel is
-// an edge); a sample that still finds none gets its own exact value from the caller. Sky light changes slowly along a
-// surface, so this costs no visible accuracy, makes no noise, and is deterministic: every value is a function of its
-// surface point alone.
+// an edge); a sample that still finds none gets its own exact value from the caller. A
+// cell serves only where its blend matched the value computed at its middle (the next
+// level's point there); else the next level is computed. Sky light changes slowly along
+// a surface, so this costs no visible accuracy, makes no noise, and is deterministic:
+// every value is a function of its surface point alone.
 #pragma once
 
 #include <array>
@@ -75,6 +77,8 @@ class SurfaceCache {
   int coarse_points() const { return coarse_.computed(); }
   int fine_points() const { return fine_.computed(); }
   int pixel_points() const { return pixel_.computed(); }
+  // Of those, the points computed to check a coarser level's cells (check_cells).
+  int cell_checks() const { return cell_checks_; }
 
  private:
   class Grid {
@@ -101,6 +105,7 @@ class SurfaceCache {
     Grid(int width, int height, int spacing);
     int grid_width() const { return grid_width_; }
     int grid_height() const { return grid_height_; }
+    int spacing() const { return spacing_; }
     int pixel_x(int gx) const { return std::min(gx * spacing_, width_ - 1); }
     int pixel_y(int gy) const { return std::min(gy * spacing_, height_ - 1); }
     // The cell containing image position (x, y) and the position's place in it.
@@ -118,7 +123,15 @@ class SurfaceCache {
     // slivers of a surface next to an edge, which no corner of their own cell sees; null
     // if none.
     const Stored* nearest(double x, double y, const SurfacePoint& point, int cells) const;
-    void want(int gx, int gy) { slots_[index(gx, gy)] = kWanted; }
+    // Asks for grid point (gx, gy), unless it is computed already (a cell's check).
+    void want(int gx, int gy) {
+      if (int32_t& slot = slots_[index(gx, gy)]; slot < 0) slot = kWanted;
+    }
+    // The stored point at grid point (gx, gy), null if none (not wanted, or it sees no surface).
+    const Stored* at(int gx, int gy) const { return stored(gx, gy); }
+    // Marks the cell whose top-left corner is (gx, gy) as failing its check: no point in
+    // it is interpolated from this grid.
+    void fail(int gx, int gy) { failed_[index(gx, gy)] = 1; }
     // Computes the wanted points that see a surface, in parallel.
     void compute_wanted(const PrimaryHits& hits, const Compute& compute);
     int computed() const { return static_cast<int>(stored_.size()); }
@@ -132,6 +145,7 @@ class SurfaceCache {
     }
     int width_, height_, spacing_, grid_width_, grid_height_;
     HugePageVector<int32_t> slots_;  // per cell: as many as the image's pixels at the pixel level
+    std::vector<uint8_t> failed_;    // per cell (by its top-left corner), on the grids only
     HugePageVector<Stored> stored_;  // up to tens of MB (a Stored is about 1.1 KB)
   };
 
@@ -146,9 +160,16 @@ class SurfaceCache {
     bool found() const { return grid != nullptr || nearest != nullptr; }
   };
   GridSource source_in_grids(double x, double y, const SurfacePoint& point) const;
+  // Checks the cells of `grid` at their middles, points of `finer` (where the grid would
+  // interpolate; fine cells only where their corners differ by kUncheckedSpread or more):
+  // computes the value there and fails the cell where its blend departs from it by more
+  // than kCellCheck (render/cache_corner_agreement.h). The points stay in `finer`.
+  // Returns how many were checked.
+  static int check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, const Compute& compute);
   std::optional<CachedSkyLight> from_grids(double x, double y, const SurfacePoint& point) const;
 
   Grid coarse_, fine_, pixel_;
+  int cell_checks_ = 0;
 };
 
 }  // namespace skylit
