@@ -83,11 +83,10 @@ TEST(SurfaceCache, OneLargeSurfaceNeedsNoPerPixelPoints) {
   // One material over the whole view: the coarse grid covers every pixel.
   const PrimaryHits hits = hits_of_tiled_plane(1000.0, 1);
   const SurfaceCache cache(hits, value_at);
-  // Only the coarse cells' checks at their middles (a fine point each; the value is
-  // linear, so every cell passes).
-  EXPECT_EQ(cache.cell_checks(), (kWidth / 16) * (kHeight / 16));
-  EXPECT_EQ(cache.fine_points(), cache.cell_checks());
+  EXPECT_EQ(cache.fine_points(), 0);
   EXPECT_EQ(cache.pixel_points(), 0);
+  // No obstacles (value_at's are infinitely far): no cell needs its check.
+  EXPECT_EQ(cache.cell_checks(), 0);
   const SurfacePoint& p = *hits.surface(20, 30);
   ASSERT_TRUE(cache.interpolate(20.5, 30.5, p));
 }
@@ -95,14 +94,16 @@ TEST(SurfaceCache, OneLargeSurfaceNeedsNoPerPixelPoints) {
 TEST(SurfaceCache, ADipBetweenCornersThatAgreeIsFoundByTheCellsCheck) {
   // The sky light dips by 20 % over a few metres around the middle of one coarse cell
   // (pixel 24, 24; its corners 16 pixels ≈ 31 m away agree to 1e-6), as it does beside
-  // a sill or in a recess: the cell's blend there would be 1.25 times the value. The
-  // check at the middle fails the cell, and the pixel gets the finer levels' value.
+  // a sill or in a recess, its obstacles 20 m from every point: the cell's blend there
+  // would be 1.25 times the value. The check at the middle fails the cell, and the pixel
+  // gets the finer levels' value.
   const PrimaryHits hits = hits_of_tiled_plane(1e5, 1);
   const Vec3 dip = hits.surface(24, 24)->position;
   const auto dipped = [&](const SurfacePoint& p, int, int) {
     CachedSkyLight v = value_at(p);
     const double d_m = length(p.position - dip);
     v.diffuse_irradiance = Irradiance(static_cast<float>(1000 * (1 - 0.2 * std::exp(-d_m * d_m / 9))));
+    v.obstacle_distance_m = 20;
     return v;
   };
   const SurfaceCache cache(hits, dipped);
@@ -113,8 +114,19 @@ TEST(SurfaceCache, ADipBetweenCornersThatAgreeIsFoundByTheCellsCheck) {
   // Only around the dip: the other coarse cells pass and cover their pixels.
   EXPECT_GT(cache.fine_points() + cache.pixel_points(), cache.cell_checks());
   EXPECT_LT(cache.fine_points(), 2 * 25 + cache.cell_checks());
-  const SurfaceCache flat(hits, value_at);
+  // Without the dip, its obstacles as near: every cell is checked and passes.
+  const SurfaceCache flat(hits, [](const SurfacePoint& p, int, int) {
+    CachedSkyLight v = value_at(p);
+    v.diffuse_irradiance = Irradiance(1000.0f);
+    v.obstacle_distance_m = 20;
+    return v;
+  });
+  EXPECT_GT(flat.cell_checks(), 0);
   EXPECT_EQ(flat.fine_points() + flat.pixel_points(), flat.cell_checks());
+  // Obstacles 2 km away: the sky light cannot dip within a 31 m cell, and no cell is
+  // checked (kSmoothReach).
+  const SurfaceCache far(hits, value_at);
+  EXPECT_EQ(far.cell_checks(), 0);
 }
 
 // Ground seen at a grazing angle from 3 m up.
@@ -131,6 +143,16 @@ SurfaceCache::Compute sloped(double per_m, double obstacle_m) {
   };
 }
 
+// Points a cache computed on its finer levels, checks of its cells (SurfaceCache::check_cells) included.
+int finer_points(const SurfaceCache& cache) { return cache.fine_points() + cache.pixel_points(); }
+
+// `checked` refined no more than `unchecked` but for its cells' checks (a check's point
+// may also be one the refinement wants, so it is not simply the sum).
+void expect_refined_alike(const SurfaceCache& checked, const SurfaceCache& unchecked) {
+  EXPECT_GE(finer_points(checked), finer_points(unchecked));
+  EXPECT_LE(finer_points(checked), finer_points(unchecked) + checked.cell_checks());
+}
+
 TEST(SurfaceCache, CornersBeyondTheirObstaclesReachAreRefinedWhereTheyDisagree) {
   // The grazing view of the ground, its value changing along the view by 0.3 % a metre:
   // with the obstacles 20 m away (a corner stands for points within 2 m) rather than
@@ -140,14 +162,13 @@ TEST(SurfaceCache, CornersBeyondTheirObstaclesReachAreRefinedWhereTheyDisagree) 
   const PrimaryHits hits = hits_of_tiled_plane(1e5, 1, kGrazing);
   const SurfaceCache far_away(hits, sloped(3, 5000));
   const SurfaceCache near(hits, sloped(3, 20));
-  EXPECT_GT(near.fine_points() + near.pixel_points(), far_away.fine_points() + far_away.pixel_points() + 50);
+  EXPECT_GT(finer_points(near), finer_points(far_away) + near.cell_checks() + 50);
   const PrimaryHits from_above = hits_of_tiled_plane(1e5, 1, Camera{{0, 0, 100}, {0, 0, 0}, {0, 1, 0}, 20.0});
   const SurfaceCache near_from_above(from_above, sloped(3, 20)), far_from_above(from_above, sloped(3, 5000));
-  EXPECT_EQ(near_from_above.fine_points() + near_from_above.pixel_points(),
-            far_from_above.fine_points() + far_from_above.pixel_points());
+  expect_refined_alike(near_from_above, far_from_above);
   const SurfaceCache uniform_near(hits, sloped(0, 20)), uniform_far(hits, sloped(0, 5000));
-  EXPECT_EQ(uniform_near.fine_points() + uniform_near.pixel_points(),
-            uniform_far.fine_points() + uniform_far.pixel_points());
+  expect_refined_alike(uniform_near, uniform_far);
+  EXPECT_EQ(uniform_far.cell_checks(), 0);  // obstacles 5 km away: no cell checked
 }
 
 TEST(SurfaceCache, DeepCellsBeyondTheirObstaclesReachMustAgreeWithinOnePercent) {

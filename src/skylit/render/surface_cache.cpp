@@ -238,10 +238,14 @@ int SurfaceCache::check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, 
       if (!corners.usable) continue;  // the finer level is computed there anyway
       std::array<double, 4> corner_lx{};
       size_t count = 0;
-      for (const Grid::Stored* s : corners.stored)
-        if (s) corner_lx[count++] = s->diffuse_lx;
-      if (grid.spacing() <= kUncheckedCellPixels &&
-          corners_agree(std::span<const double>(corner_lx.data(), count), kUncheckedSpread))
+      bool smooth = true;  // every corner within kSmoothReach of its obstacles' distance
+      for (const Grid::Stored* s : corners.stored) {
+        if (!s) continue;
+        corner_lx[count++] = s->diffuse_lx;
+        smooth = smooth && length(s->point.position - p->position) < kSmoothReach * s->value.obstacle_distance_m;
+      }
+      if (smooth || (grid.spacing() <= kUncheckedCellPixels &&
+                     corners_agree(std::span<const double>(corner_lx.data(), count), kUncheckedSpread)))
         continue;
       finer.want(fx, fy);
       checks.push_back({gx, gy, fx, fy});
