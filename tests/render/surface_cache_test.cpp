@@ -106,7 +106,13 @@ TEST(SurfaceCache, ADipBetweenCornersThatAgreeIsFoundByTheCellsCheck) {
     v.obstacle_distance_m = 20;
     return v;
   };
-  const SurfaceCache cache(hits, dipped);
+  std::atomic<int> computed{0};
+  const SurfaceCache cache(hits, [&](const SurfacePoint& p, int x, int y) {
+    ++computed;
+    return dipped(p, x, y);
+  });
+  // Each point once: a check's point is kept by its level, not computed again.
+  EXPECT_EQ(computed.load(), cache.coarse_points() + cache.fine_points() + cache.pixel_points());
   const SurfacePoint& middle = *hits.surface(24, 24);
   const std::optional<CachedSkyLight> at_middle = cache.interpolate(24.5, 24.5, middle);
   ASSERT_TRUE(at_middle);

@@ -154,7 +154,8 @@ const SurfaceCache::Grid::Stored* SurfaceCache::Grid::nearest(double x, double y
 void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute) {
   // Slots in scan order, then the values in parallel: deterministic. Room for every
   // wanted point first: growing the store copied it, into new pages each time.
-  stored_.reserve(stored_.size() + static_cast<size_t>(std::count(slots_.begin(), slots_.end(), kWanted)));
+  const size_t first_new = stored_.size();  // points computed before (a cell's checks) keep their values
+  stored_.reserve(first_new + static_cast<size_t>(std::count(slots_.begin(), slots_.end(), kWanted)));
   for (int gy = 0; gy < grid_height_; ++gy)
     for (int gx = 0; gx < grid_width_; ++gx) {
       int32_t& slot = slots_[index(gx, gy)];
@@ -165,7 +166,7 @@ void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& 
         stored_.push_back({*p, {}, 0, false, pixel_x(gx), pixel_y(gy)});
       }
     }
-  tbb::parallel_for(size_t{0}, stored_.size(), [&](size_t i) {
+  tbb::parallel_for(first_new, stored_.size(), [&](size_t i) {
     stored_[i].value = compute(stored_[i].point, stored_[i].x, stored_[i].y);
     stored_[i].diffuse_lx = illuminance(stored_[i].value.diffuse_irradiance);
     stored_[i].fog_hidden = !stored_[i].value.fog_hidden.gain.is_black();
@@ -229,23 +230,31 @@ int SurfaceCache::check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, 
   std::vector<Check> checks;
   for (int gy = 0; gy + 1 < grid.grid_height(); ++gy)
     for (int gx = 0; gx + 1 < grid.grid_width(); ++gx) {
-      // The cell's middle pixel, a point of the finer grid (the spacings divide).
-      const int fx = (grid.pixel_x(gx) + grid.pixel_x(gx + 1)) / 2 / finer.spacing();
-      const int fy = (grid.pixel_y(gy) + grid.pixel_y(gy + 1)) / 2 / finer.spacing();
-      const SurfacePoint* p = hits.surface(finer.pixel_x(fx), finer.pixel_y(fy));
+      // The point of the finer grid nearest the cell's middle (the spacings divide); a
+      // cell too thin to hold one inside it (the last row or column of an image whose
+      // size the spacing does not divide) is not checked: its corners are all it has.
+      const auto middle = [&](int a, int b) { return ((a + b) / 2 + finer.spacing() / 2) / finer.spacing(); };
+      const int fx = middle(grid.pixel_x(gx), grid.pixel_x(gx + 1));
+      const int fy = middle(grid.pixel_y(gy), grid.pixel_y(gy + 1));
+      const int px = finer.pixel_x(fx), py = finer.pixel_y(fy);
+      if (px <= grid.pixel_x(gx) || px >= grid.pixel_x(gx + 1) || py <= grid.pixel_y(gy) || py >= grid.pixel_y(gy + 1))
+        continue;
+      const SurfacePoint* p = hits.surface(px, py);
       if (!p) continue;
-      const Grid::Corners corners = grid.usable_corners(finer.pixel_x(fx) + 0.5, finer.pixel_y(fy) + 0.5, *p);
+      const Grid::Corners corners = grid.usable_corners(px + 0.5, py + 0.5, *p);
       if (!corners.usable) continue;  // the finer level is computed there anyway
       std::array<double, 4> corner_lx{};
       size_t count = 0;
       bool smooth = true;  // every corner within kSmoothReach of its obstacles' distance
+      double other_lx = std::numeric_limits<double>::infinity();  // the least among the corners
       for (const Grid::Stored* s : corners.stored) {
         if (!s) continue;
         corner_lx[count++] = s->diffuse_lx;
+        other_lx = std::min(other_lx, s->value.other_lx);
         smooth = smooth && length(s->point.position - p->position) < kSmoothReach * s->value.obstacle_distance_m;
       }
       if (smooth || (grid.spacing() <= kUncheckedCellPixels &&
-                     corners_agree(std::span<const double>(corner_lx.data(), count), kUncheckedSpread)))
+                     corners_agree(std::span<const double>(corner_lx.data(), count), kUncheckedSpread, other_lx)))
         continue;
       finer.want(fx, fy);
       checks.push_back({gx, gy, fx, fy});
