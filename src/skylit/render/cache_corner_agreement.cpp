@@ -9,8 +9,9 @@ bool within_reach(const SurfacePoint& cached, const SurfacePoint& point) {
   return length(cached.position - point.position) <= kCornerReach * point.distance;
 }
 
-bool within_obstacle_reach(const SurfacePoint& cached, double obstacle_distance_m, const SurfacePoint& point) {
-  return length(cached.position - point.position) <= kObstacleReach * obstacle_distance_m;
+bool within_obstacle_reach(const SurfacePoint& cached, double obstacle_distance_m, const SurfacePoint& point,
+                           double reach) {
+  return length(cached.position - point.position) <= reach * obstacle_distance_m;
 }
 
 bool corners_agree(std::span<const double> corner_illuminance_lx, double spread, double other_lx) {

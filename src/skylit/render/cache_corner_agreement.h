@@ -58,30 +58,30 @@ bool within_reach(const SurfacePoint& cached, const SurfacePoint& point);
 // what lies between them: on examples/building.json at 480 × 270, of the pixels more
 // than 2 % off the exact sky light, two fifths lay in cells whose four corners were on
 // the point's surface and agreed within kCornerSpread (a recess or a sill's shadow
-// between them, a dip in a street beside a wall). Fine cells (kUncheckedCellPixels across) whose corners agree within
-// kUncheckedSpread are not checked: checking them all (with a 1 % check) took the Fig. 7
-// frame's per-pixel points 1.37 times as far for 0.1 point of its 99th percentile. The
-// tolerance sits
-// above the 1,024-direction integral's own scatter from point to point (0.5–1 % beside a
-// detailed facade, where its directions meet other parts of the windows and frames as
-// the point moves by millimetres), which a tighter one would take for a failed cell:
-// at 1 % the Fig. 7 frame's cache needed about 11 % more integrals for 0.1–0.2 point.
-// Measured against the exact sky light (99th percentile at 320 × 180 / 480 × 270,
+// between them, a dip in a street beside a wall). The tolerance sits above the
+// 1,024-direction integral's own scatter from point to point (0.5–1 % beside a detailed
+// facade, where its directions meet other parts of the windows and frames as the point
+// moves by millimetres), which a tighter one would take for a failed cell: at 1 % the
+// Fig. 7 frame's cache needed about 11 % more integrals for 0.1–0.2 point. Measured
+// against the exact sky light (99th percentile at 320 × 180 / 480 × 270,
 // tests/render/sky_light_cache_examples_test.cpp): Fig. 7 2.03 / 1.91 → 1.57 / 1.66 %,
 // building 2.54 / 3.20 → 1.93 / 1.75 %, the house 7.6 / 9.8 → 5.4 / 6.4 %; the frame
 // 1.07–1.16 times as long (docs/sky-light.md, "Every cell checked at its middle").
 inline constexpr double kCellCheck = 0.015;
-// A cell whose corners all lie within this fraction of their harmonic mean distance to
-// their obstacles (CachedSkyLight::obstacle_distance_m) from its middle is not checked:
-// the sky light changes over that distance (Ward et al. 1988), by about this fraction
-// across the cell, nearly linearly, and the blend follows a linear change. It takes out
-// 43 % of the checks on Fig. 7 at 1280 × 720 and 56 % on the default example (the
-// cells far from buildings) for no change of the 99th percentiles within 0.02 point;
-// at 5 % the default example's rose to 1.97 % at 320 × 180.
-inline constexpr double kSmoothReach = 0.03;
+
+// Cells not checked. Fine cells (kUncheckedCellPixels across) whose corners agree within
+// kUncheckedSpread: checking them all (with a 1 % check) took the Fig. 7 frame's
+// per-pixel points 1.37 times as far for 0.1 point of its 99th percentile.
 inline constexpr double kUncheckedSpread = 0.02;
 inline constexpr int kUncheckedCellPixels = 4;
-
+// And a cell whose corners all lie within kSmoothReach of their harmonic mean distance
+// to their obstacles (CachedSkyLight::obstacle_distance_m) from its middle: the sky light
+// changes over that distance (Ward et al. 1988), by about this fraction across the
+// cell, nearly linearly, and the blend follows a linear change. It takes out 43 % of the
+// checks on Fig. 7 at 1280 × 720 and 56 % on the default example (the cells far from
+// buildings) for no change of the 99th percentiles within 0.02 point; at 5 % the
+// default example's rose to 1.97 % at 320 × 180.
+inline constexpr double kSmoothReach = 0.03;
 
 // Near obstacles the sky light changes over the distance to them, and where a cell spans
 // much depth (the ground seen at a grazing angle, tens of metres of it beside a tower in
@@ -106,7 +106,9 @@ inline constexpr double kObstacleReach = 0.1;
 inline constexpr double kCloseSpread = 0.01;
 inline constexpr double kDepthSpan = 0.1;
 
-bool within_obstacle_reach(const SurfacePoint& cached, double obstacle_distance_m, const SurfacePoint& point);
+// Whether `point` lies within `reach` of the cached point's harmonic mean obstacle distance from it.
+bool within_obstacle_reach(const SurfacePoint& cached, double obstacle_distance_m, const SurfacePoint& point,
+                           double reach = kObstacleReach);
 
 // Whether corners of these sky-light illuminances agree within `spread` of the largest
 // plus `other_lx`: the least, among the corners, of their pixels' other light

@@ -226,6 +226,7 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
 int SurfaceCache::check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, const Compute& compute) {
   struct Check {
     int gx, gy, fx, fy;
+    Grid::Corners corners;  // the cell's, for its middle (`grid` is not changed meanwhile)
   };
   std::vector<Check> checks;
   for (int gy = 0; gy + 1 < grid.grid_height(); ++gy)
@@ -251,22 +252,20 @@ int SurfaceCache::check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, 
         if (!s) continue;
         corner_lx[count++] = s->diffuse_lx;
         other_lx = std::min(other_lx, s->value.other_lx);
-        smooth = smooth && length(s->point.position - p->position) < kSmoothReach * s->value.obstacle_distance_m;
+        smooth = smooth && within_obstacle_reach(s->point, s->value.obstacle_distance_m, *p, kSmoothReach);
       }
       if (smooth || (grid.spacing() <= kUncheckedCellPixels &&
                      corners_agree(std::span<const double>(corner_lx.data(), count), kUncheckedSpread, other_lx)))
         continue;
       finer.want(fx, fy);
-      checks.push_back({gx, gy, fx, fy});
+      checks.push_back({gx, gy, fx, fy, corners});
     }
   finer.compute_wanted(hits, compute);
   for (const Check& c : checks) {
     const Grid::Stored* exact = finer.at(c.fx, c.fy);
     if (!exact) continue;
-    const std::optional<CachedSkyLight> blend = grid.interpolate(exact->x + 0.5, exact->y + 0.5, exact->point);
-    if (!blend) continue;
-    if (!corners_agree(std::array{illuminance(blend->diffuse_irradiance), exact->diffuse_lx}, kCellCheck,
-                       exact->value.other_lx))
+    if (!corners_agree(std::array{illuminance(grid.blend(c.corners).diffuse_irradiance), exact->diffuse_lx},
+                       kCellCheck, exact->value.other_lx))
       grid.fail(c.gx, c.gy);
   }
   return static_cast<int>(checks.size());
