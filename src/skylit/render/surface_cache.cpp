@@ -264,8 +264,8 @@ int SurfaceCache::check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, 
   for (const Check& c : checks) {
     const Grid::Stored* exact = finer.at(c.fx, c.fy);
     if (!exact) continue;
-    if (!corners_agree(std::array{illuminance(grid.blend(c.corners).diffuse_irradiance), exact->diffuse_lx},
-                       kCellCheck, exact->value.other_lx))
+    if (!corners_agree(std::array{illuminance(grid.blend(c.corners).diffuse_irradiance), exact->diffuse_lx}, kCellCheck,
+                       exact->value.other_lx))
       grid.fail(c.gx, c.gy);
   }
   return static_cast<int>(checks.size());
