@@ -65,17 +65,24 @@ void BM_SceneSetup(benchmark::State& state) {
 BENCHMARK(BM_SceneSetup)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Frames of one scene on `threads` threads, once its tables are built, with rays per
-// second and the process's peak memory.
+// second, the process's peak memory, and the last frame's parts (FrameBreakdown: the
+// sky-light cache's seconds and points, the two passes' seconds).
 void frames_of(benchmark::State& state, const skylit::Scene& scene, int threads = 2) {
   reset_peak_memory();  // the scene loaded is resident and counts; its loading's transients do not
   const skylit::Renderer renderer(scene);
   skylit::RenderOptions options;
   options.threads = threads;
+  skylit::FrameBreakdown frame;
+  options.breakdown = &frame;
   const uint64_t rays_before = renderer.rays_traced();
   for (auto _ : state) {
     skylit::XyzImage image = renderer.render(options);
     benchmark::DoNotOptimize(image.xyz.data());
   }
+  state.counters["hits_s"] = frame.primary_hits_s;
+  state.counters["cache_s"] = frame.caches_s;
+  state.counters["passes_s"] = frame.centres_pass_s + frame.edges_pass_s;
+  state.counters["cache_points"] = frame.coarse_points + frame.fine_points + frame.cell_checks + frame.pixel_points;
   state.counters["rays_per_s"] =
       benchmark::Counter(static_cast<double>(renderer.rays_traced() - rays_before), benchmark::Counter::kIsRate);
   state.counters["peak_MiB"] = peak_memory_mib();

@@ -79,8 +79,12 @@ int run_render(RenderArguments args) {
   options.on_progress = [&progress](int done, int total) { progress.update(done, total); };
   // Under mpirun the ranks share the image's tiles; the first writes the outputs.
   options.share = image_share_of_processes();
+  FrameBreakdown breakdown;
+  const bool bands = scene.render.integrator != Integrator::path;
+  if (args.verbose && bands) options.breakdown = &breakdown;
   const Renderer::Result result = renderer.render_with_error(options);
   if (!is_first_process()) return 0;
+  if (options.breakdown) std::fprintf(stderr, "%s\n", describe(breakdown).c_str());
   DisplayOptions display;
   display.exposure_ev = scene.render.exposure_ev;
   display.human = scene.render.human_display;
@@ -136,7 +140,8 @@ CommandRunner add_render_command(CLI::App& app) {
                    "Half the width and height (a quarter of the pixels), 1×1 samples per pixel (path: at most 4): "
                    "for framing and iteration");
   render->add_flag("-v,--verbose", args->verbose,
-                   "Say what the scene loads (as skylit info) and check the camera for likely mistakes, on stderr");
+                   "Say what the scene loads (as skylit info), check the camera for likely mistakes, and after the "
+                   "render say where the frame's time went, on stderr");
   return [render, args] {
     if (!render->parsed()) return -1;
     if (args->outputs.empty() && args->reports.empty())

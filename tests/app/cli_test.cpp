@@ -226,3 +226,23 @@ TEST(Cli, PreviewRendersAQuarterOfThePixels) {
 
 }  // namespace
 }  // namespace skylit
+
+namespace skylit {
+namespace {
+
+// --verbose: after the render, one line with the frame's parts (FrameBreakdown).
+TEST(Cli, VerboseSaysWhereTheFramesTimeWent) {
+  TempDir dir;
+  const auto scene = dir.write("scene.json", testing::small_scene_json(48, 32));
+  const auto quiet = run_skylit("render " + quoted(scene) + " --quiet -o " + quoted(dir.path() / "q.pfm"));
+  ASSERT_EQ(quiet.exit_status, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("frame: "), std::string::npos) << quiet.output;
+  const auto r = run_skylit("render " + quoted(scene) + " --quiet --verbose -o " + quoted(dir.path() / "v.pfm"));
+  ASSERT_EQ(r.exit_status, 0) << r.output;
+  EXPECT_NE(r.output.find("frame: first hits "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" grid points, "), std::string::npos) << r.output;
+  EXPECT_EQ(testing::read_file(dir.path() / "q.pfm"), testing::read_file(dir.path() / "v.pfm"));
+}
+
+}  // namespace
+}  // namespace skylit

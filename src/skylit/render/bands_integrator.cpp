@@ -87,6 +87,10 @@ BandsIntegrator::BandsIntegrator(const PreparedScene& scene)
                                                   });
 }
 
+std::vector<size_t> BandsIntegrator::obstacle_patch_counts() const {
+  return obstacle_sky_ ? obstacle_sky_->patch_counts() : std::vector<size_t>{};
+}
+
 std::unique_ptr<SkyLight> BandsIntegrator::sky_light_with(int directions) const {
   return sky_light_looking_up(0, directions, SkyLight::Cells::kMeans);
 }

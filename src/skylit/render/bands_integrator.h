@@ -146,6 +146,8 @@ class BandsIntegrator {
   Irradiance reflected_sun(const SurfacePoint& point, const CachedSkyLight& cached) const;
 
   const SkyLight& sky_light() const { return *sky_light_; }
+  // How many obstacle patches each level holds (none with the open-sky obstacle light).
+  std::vector<size_t> obstacle_patch_counts() const;
   // The sky light as sky_light() finds it, with `directions` directions instead: for
   // checking the quadrature's own convergence (tests/render/sky_light_cache_examples_test.cpp).
   std::unique_ptr<SkyLight> sky_light_with(int directions) const;

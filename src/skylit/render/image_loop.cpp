@@ -1,6 +1,7 @@
 #include "skylit/render/image_loop.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -81,6 +82,24 @@ ImageTile image_tile(int tile, int width, int height) {
   return {x0, y0, std::min(x0 + kImageTileSize, width), std::min(y0 + kImageTileSize, height)};
 }
 
+namespace {
+
+// Seconds since the last call (or since it was made).
+class Stopwatch {
+ public:
+  double lap_s() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
 XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integrator, const RenderOptions& options) {
   const RenderSettings& settings = scene.scene().render;
   const int width = settings.width, height = settings.height, n = settings.samples_per_axis;
@@ -92,9 +111,13 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
   std::unique_ptr<PrimaryHits> hits;
   std::unique_ptr<SurfaceCache> sky_light;
   std::unique_ptr<LampGlowImage> glow;
+  FrameBreakdown unused;
+  FrameBreakdown& breakdown = options.breakdown ? *options.breakdown : unused;
+  Stopwatch stopwatch;
   arena.execute([&] {
     hits =
         std::make_unique<PrimaryHits>(camera, width, height, [&](const Ray& ray) { return integrator.first_hit(ray); });
+    breakdown.primary_hits_s = stopwatch.lap_s();
     const Vec3& eye = scene.scene().camera.position;
     // The glow first: the sky-light cache judges its corners against it.
     if (scene.lamps() && scene.fog()) glow = std::make_unique<LampGlowImage>(camera, *hits, *scene.lamps());
@@ -105,6 +128,13 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
     };
     if (!options.exact_sky_light) sky_light = std::make_unique<SurfaceCache>(*hits, cached(false), cached(true));
   });
+  breakdown.caches_s = stopwatch.lap_s();
+  if (sky_light) {
+    breakdown.coarse_points = sky_light->coarse_points();
+    breakdown.fine_points = sky_light->fine_points();
+    breakdown.cell_checks = sky_light->cell_checks();
+    breakdown.pixel_points = sky_light->pixel_points();
+  }
   const ImageCaches caches{sky_light.get(), glow.get()};
 
   // A pixel's value from a regular grid × grid of samples inside it, averaged with equal
@@ -165,7 +195,9 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
     // The edges of the second pass look at neighbours across tiles: every process
     // needs the whole first pass.
     if (options.share.parts > 1) options.share.exchange((pass == 0 ? centres : *refined).pixels());
+    (pass == 0 ? breakdown.centres_pass_s : breakdown.edges_pass_s) = stopwatch.lap_s();
   }
+  breakdown.obstacle_patches = integrator.obstacle_patch_counts();
   Film& film = refined ? *refined : centres;
   add_seen_lamps(scene, camera, film);
   return film.take();

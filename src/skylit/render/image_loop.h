@@ -10,6 +10,7 @@
 #include <functional>
 
 #include "skylit/render/bands_integrator.h"
+#include "skylit/render/frame_breakdown.h"
 #include "skylit/spectrum/xyz_image.h"
 
 namespace skylit {
@@ -43,6 +44,7 @@ struct RenderOptions {
   // No sky-light cache: every sample computes its sky light exactly (the reference the
   // cache's accuracy is measured against; many times slower).
   bool exact_sky_light = false;
+  FrameBreakdown* breakdown = nullptr;  // filled in when given
 };
 
 XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integrator, const RenderOptions& options);
