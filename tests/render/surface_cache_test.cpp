@@ -135,6 +135,35 @@ TEST(SurfaceCache, ADipBetweenCornersThatAgreeIsFoundByTheCellsCheck) {
   EXPECT_EQ(far.cell_checks(), 0);
 }
 
+TEST(SurfaceCache, APixelBetweenNeighboursThatAgreeTakesTheirMeanAndOneAcrossAStepItsOwn) {
+  // The sky light steps up by 5 % between pixel rows 18 and 19 of a plane seen straight
+  // down (a shadow's edge in the sky light, its obstacles 20 m from every point), and
+  // rises by 0.01 % a row elsewhere. The grids' cells across the step fail their checks
+  // (their blends are 2.5 % off at their middles); the per-pixel level computes every
+  // other pixel there, and the rest from their neighbours above and below where those
+  // agree within kCloseSpread: exactly for a linear rise, never across the step.
+  const PrimaryHits hits = hits_of_tiled_plane(1e5, 1);
+  const auto stepped = [](int y) { return 1000.0 * (1 + 1e-4 * y) * (y >= 19 ? 1.05 : 1.0); };
+  std::atomic<int> computed{0};
+  const SurfaceCache cache(hits, [&](const SurfacePoint& p, int, int y) {
+    ++computed;
+    CachedSkyLight v = value_at(p);
+    v.diffuse_irradiance = Irradiance(static_cast<float>(stepped(y)));
+    v.obstacle_distance_m = 20;
+    return v;
+  });
+  EXPECT_EQ(computed.load(), cache.coarse_points() + cache.fine_points() + cache.pixel_points());
+  EXPECT_GT(cache.pixels_between(), 0);
+  EXPECT_GT(cache.pixel_points(), 0);
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const std::optional<CachedSkyLight> v = cache.interpolate(x + 0.5, y + 0.5, *hits.surface(x, y));
+      ASSERT_TRUE(v) << x << ", " << y;
+      // Half the step (2.5 %) where a value were blended across it; float rounding else.
+      EXPECT_NEAR(v->diffuse_irradiance[0], stepped(y), 1e-4 * stepped(y)) << x << ", " << y;
+    }
+}
+
 // Ground seen at a grazing angle from 3 m up.
 const Camera kGrazing{{0, 0, 3}, {0, 60, 0}, {0, 0, 1}, 50.0};
 

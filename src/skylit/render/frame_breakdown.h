@@ -16,8 +16,9 @@ struct FrameBreakdown {
   double centres_pass_s = 0;  // the first pass: each pixel's centre
   double edges_pass_s = 0;    // the second pass: the full sample grid where edges run
   // The sky-light cache's integrals (surface_cache.h): its 16- and 4-pixel grids' points,
-  // their cells' checks, and the one-pixel level's points (a quarter of the directions).
-  int coarse_points = 0, fine_points = 0, cell_checks = 0, pixel_points = 0;
+  // their cells' checks, and the one-pixel level's points (a quarter of the directions);
+  // and the pixels that level found between their neighbours, without an integral.
+  int coarse_points = 0, fine_points = 0, cell_checks = 0, pixel_points = 0, pixels_between = 0;
   // The obstacles' own sky-light patches per level (obstacle_sky_light.h) that the
   // renderer holds at the frame's end, this frame's and earlier frames'.
   std::vector<size_t> obstacle_patches;

@@ -134,6 +134,7 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
     breakdown.fine_points = sky_light->fine_points();
     breakdown.cell_checks = sky_light->cell_checks();
     breakdown.pixel_points = sky_light->pixel_points();
+    breakdown.pixels_between = sky_light->pixels_between();
   }
   const ImageCaches caches{sky_light.get(), glow.get()};
 

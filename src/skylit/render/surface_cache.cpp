@@ -151,6 +151,12 @@ const SurfaceCache::Grid::Stored* SurfaceCache::Grid::nearest(double x, double y
   return best;
 }
 
+void SurfaceCache::Grid::keep(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value) {
+  slots_[index(gx, gy)] = static_cast<int32_t>(stored_.size());
+  stored_.push_back({point, value, illuminance(value.diffuse_irradiance), !value.fog_hidden.gain.is_black(),
+                     pixel_x(gx), pixel_y(gy)});
+}
+
 void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute) {
   // Slots in scan order, then the values in parallel: deterministic. Room for every
   // wanted point first: growing the store copied it, into new pages each time.
@@ -215,12 +221,60 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
   // The fine cells checked at their middle pixels, with the full integral: a coarser
   // value there would fail cells by its own quadrature's error.
   cell_checks_ += check_cells(fine_, pixel_, hits, compute);
-  // The centres of the pixels that neither grid covers.
+  // The centres of the pixels that neither grid covers: every other one (a
+  // checkerboard's black squares), then each of the others from the neighbours that
+  // bracket it where they agree closely, else its own.
+  const Compute& one_pixel = compute_one_pixel ? compute_one_pixel : compute;
   const auto not_by_grids = uncovered_pixels(
       hits, [&](double x, double y, const SurfacePoint& p) { return source_in_grids(x, y, p).found(); });
   for (size_t y = 0; y < not_by_grids.size(); ++y)
-    for (const int x : not_by_grids[y]) pixel_.want(x, static_cast<int>(y));
-  pixel_.compute_wanted(hits, compute_one_pixel ? compute_one_pixel : compute);
+    for (const int x : not_by_grids[y])
+      if ((x + y) % 2 == 0) pixel_.want(x, static_cast<int>(y));
+  pixel_.compute_wanted(hits, one_pixel);
+  std::vector<std::pair<int, int>> between;  // (x, y), kept after all are found (keep moves the store)
+  std::vector<CachedSkyLight> values;
+  for (size_t y = 0; y < not_by_grids.size(); ++y)
+    for (const int x : not_by_grids[y]) {
+      if ((x + y) % 2 == 0) continue;
+      const int yi = static_cast<int>(y);
+      if (auto value = between_neighbours(x, yi, *hits.surface(x, yi))) {
+        between.emplace_back(x, yi);
+        values.push_back(*value);
+      } else {
+        pixel_.want(x, yi);
+      }
+    }
+  pixels_between_ = static_cast<int>(between.size());
+  for (size_t i = 0; i < between.size(); ++i)
+    pixel_.keep(between[i].first, between[i].second, *hits.surface(between[i].first, between[i].second), values[i]);
+  pixel_.compute_wanted(hits, one_pixel);
+}
+
+std::optional<CachedSkyLight> SurfaceCache::between_neighbours(int x, int y, const SurfacePoint& point) const {
+  Grid::Corners sides;
+  std::array<double, 4> lx{};
+  size_t count = 0;
+  double other_lx = std::numeric_limits<double>::infinity();
+  const std::array<std::array<int, 2>, 4> offsets{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}};
+  for (size_t i = 0; i < 4; ++i) {
+    const int nx = x + offsets[i][0], ny = y + offsets[i][1];
+    if (nx < 0 || ny < 0 || nx >= pixel_.grid_width() || ny >= pixel_.grid_height()) continue;
+    const Grid::Stored* e = pixel_.at(nx, ny);
+    if (!e || !same_surface(e->point, point) || !within_reach(e->point, point)) continue;
+    sides.stored[i] = e;
+    sides.weight[i] = 1;
+    lx[count++] = e->diffuse_lx;
+    other_lx = std::min(other_lx, e->value.other_lx);
+  }
+  const bool bracketed = (sides.stored[0] && sides.stored[1]) || (sides.stored[2] && sides.stored[3]);
+  if (!bracketed || !corners_agree(std::span<const double>(lx.data(), count), kCloseSpread, other_lx))
+    return std::nullopt;
+  CachedSkyLight value = pixel_.blend(sides);
+  value.other_lx = other_lx;
+  value.obstacle_distance_m = std::numeric_limits<double>::infinity();
+  for (const Grid::Stored* e : sides.stored)
+    if (e) value.obstacle_distance_m = std::min(value.obstacle_distance_m, e->value.obstacle_distance_m);
+  return value;
 }
 
 int SurfaceCache::check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, const Compute& compute) {

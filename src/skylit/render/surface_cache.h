@@ -64,7 +64,9 @@ class SurfaceCache {
   // From the surfaces seen at every pixel centre: computes the coarse grid, the fine
   // grid where the coarse one does not cover a pixel's surface, and the pixel's own
   // centre where neither does, the last with `compute_one_pixel` if given (a value that
-  // stands for one pixel may be found more coarsely); in parallel.
+  // stands for one pixel may be found more coarsely); in parallel. Of those pixels every
+  // other one (by (x + y) % 2) is computed first, and each of the rest takes the mean
+  // of its computed neighbours where they bracket it and agree (between_neighbours).
   SurfaceCache(const PrimaryHits& hits, const Compute& compute, const Compute& compute_one_pixel = {});
 
   // The value for a surface point seen at image position (x, y) in pixels: interpolated
@@ -76,7 +78,9 @@ class SurfaceCache {
   // Grid points computed, coarse, fine and per pixel (for the benchmark and tests).
   int coarse_points() const { return coarse_.computed(); }
   int fine_points() const { return fine_.computed(); }
-  int pixel_points() const { return pixel_.computed(); }
+  int pixel_points() const { return pixel_.computed() - pixels_between_; }
+  // Pixels of the per-pixel level found between their neighbours (between_neighbours).
+  int pixels_between() const { return pixels_between_; }
   // Of those, the points computed to check a coarser level's cells (check_cells).
   int cell_checks() const { return cell_checks_; }
 
@@ -132,6 +136,9 @@ class SurfaceCache {
     // Marks the cell whose top-left corner is (gx, gy) as failing its check: no point in
     // it is interpolated from this grid.
     void fail(int gx, int gy) { failed_[index(gx, gy)] = 1; }
+    // Stores `value` for grid point (gx, gy), whose surface is `point`, found without an
+    // integral of its own (a pixel between neighbours that agree).
+    void keep(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value);
     // Computes the wanted points that see a surface, in parallel.
     void compute_wanted(const PrimaryHits& hits, const Compute& compute);
     int computed() const { return static_cast<int>(stored_.size()); }
@@ -167,9 +174,14 @@ class SurfaceCache {
   // Returns how many were checked.
   static int check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, const Compute& compute);
   std::optional<CachedSkyLight> from_grids(double x, double y, const SurfacePoint& point) const;
+  // The value at pixel (x, y), on `point`'s surface, from its four neighbours computed at
+  // the per-pixel level: their mean where two of them lie on opposite sides of it on its
+  // surface and all of them on it agree within kCloseSpread; none otherwise.
+  std::optional<CachedSkyLight> between_neighbours(int x, int y, const SurfacePoint& point) const;
 
   Grid coarse_, fine_, pixel_;
   int cell_checks_ = 0;
+  int pixels_between_ = 0;
 };
 
 }  // namespace skylit
