@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -142,12 +143,21 @@ BENCHMARK(BM_Fig9Frame)->Unit(benchmark::kMillisecond)->UseRealTime();
 // textures) repeated on a 34 × 34 grid 20 m apart as one OBJ (1 024 296 triangles)
 // beside copies of its MTL and textures, written once into the temporary folder; a
 // scene frames it from the south-west on a clear day.
+std::filesystem::path million_triangle_dir() {
+  return std::filesystem::temp_directory_path() / ("skylit_bench_model_" + std::to_string(getpid()));
+}
+
 std::filesystem::path million_triangle_scene() {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("skylit_bench_model_" + std::to_string(getpid()));
+  const fs::path dir = million_triangle_dir();
   const fs::path scene = dir / "city.json";
   if (fs::exists(scene)) return scene;
   fs::create_directories(dir);
+  // 111 MB a run: every run had left its folder behind.
+  std::atexit([] {
+    std::error_code ignored;
+    std::filesystem::remove_all(million_triangle_dir(), ignored);
+  });
   const fs::path models = fs::path(SKYLIT_SOURCE_DIR) / "examples" / "models";
   for (const char* file : {"house.mtl", "brick.png", "render.png"})
     fs::copy_file(models / file, dir / file, fs::copy_options::overwrite_existing);
