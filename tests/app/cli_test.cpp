@@ -240,7 +240,7 @@ TEST(Cli, VerboseSaysWhereTheFramesTimeWent) {
   const auto r = run_skylit("render " + quoted(scene) + " --quiet --verbose -o " + quoted(dir.path() / "v.pfm"));
   ASSERT_EQ(r.exit_status, 0) << r.output;
   EXPECT_NE(r.output.find("frame: first hits "), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(" grid points, "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" grid points and "), std::string::npos) << r.output;
   EXPECT_EQ(testing::read_file(dir.path() / "q.pfm"), testing::read_file(dir.path() / "v.pfm"));
 }
 

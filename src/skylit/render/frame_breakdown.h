@@ -15,12 +15,17 @@ struct FrameBreakdown {
   double caches_s = 0;        // the sky-light cache and the lamps' glow image
   double centres_pass_s = 0;  // the first pass: each pixel's centre
   double edges_pass_s = 0;    // the second pass: the full sample grid where edges run
-  // The sky-light cache's integrals (surface_cache.h): its 16- and 4-pixel grids' points,
-  // their cells' checks, and the one-pixel level's points (a quarter of the directions);
-  // and the pixels that level found between their neighbours, without an integral.
-  int coarse_points = 0, fine_points = 0, cell_checks = 0, pixel_points = 0, pixels_between = 0;
+  // (No second pass with one sample a pixel; in a render split over processes the
+  // passes' times leave out their exchanges.)
+  // The sky-light cache's integrals (surface_cache.h): its 16- and 4-pixel grids' points
+  // and the one-pixel level's (a quarter of the directions), together every integral it
+  // computed; `cell_checks` of them at the 4-pixel and one-pixel levels checked a coarser
+  // cell at its middle (with all the directions). And the pixels that level found
+  // between their neighbours, without an integral.
+  int coarse_points = 0, fine_points = 0, pixel_points = 0, cell_checks = 0, pixels_between = 0;
   // The obstacles' own sky-light patches per level (obstacle_sky_light.h) that the
-  // renderer holds at the frame's end, this frame's and earlier frames'.
+  // renderer holds at the frame's end, this frame's and earlier frames': the places looked
+  // up, each a patch or none where its plane has no triangle there.
   std::vector<size_t> obstacle_patches;
 };
 

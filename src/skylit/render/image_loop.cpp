@@ -113,6 +113,7 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
   std::unique_ptr<LampGlowImage> glow;
   FrameBreakdown unused;
   FrameBreakdown& breakdown = options.breakdown ? *options.breakdown : unused;
+  breakdown = {};
   Stopwatch stopwatch;
   arena.execute([&] {
     hits =
@@ -193,10 +194,11 @@ XyzImage render_image(const PreparedScene& scene, const BandsIntegrator& integra
         for (int tile = range.begin(); tile != range.end(); ++tile) render_tile(tile, pass);
       });
     });
+    (pass == 0 ? breakdown.centres_pass_s : breakdown.edges_pass_s) = stopwatch.lap_s();
     // The edges of the second pass look at neighbours across tiles: every process
     // needs the whole first pass.
     if (options.share.parts > 1) options.share.exchange((pass == 0 ? centres : *refined).pixels());
-    (pass == 0 ? breakdown.centres_pass_s : breakdown.edges_pass_s) = stopwatch.lap_s();
+    stopwatch.lap_s();  // the exchange's time is the processes', not this pass's
   }
   breakdown.obstacle_patches = integrator.obstacle_patch_counts();
   Film& film = refined ? *refined : centres;

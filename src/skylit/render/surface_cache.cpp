@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -152,6 +153,7 @@ const SurfaceCache::Grid::Stored* SurfaceCache::Grid::nearest(double x, double y
 }
 
 void SurfaceCache::Grid::keep(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value) {
+  assert(slots_[index(gx, gy)] < 0);  // a computed value is never replaced
   slots_[index(gx, gy)] = static_cast<int32_t>(stored_.size());
   stored_.push_back({point, value, illuminance(value.diffuse_irradiance), !value.fog_hidden.gain.is_black(),
                      pixel_x(gx), pixel_y(gy)});
@@ -235,8 +237,9 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
   std::vector<CachedSkyLight> values;
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y]) {
-      if ((x + y) % 2 == 0) continue;
       const int yi = static_cast<int>(y);
+      // (A white square may hold a fine cell's check already: kept as computed.)
+      if ((x + y) % 2 == 0 || pixel_.at(x, yi)) continue;
       if (auto value = between_neighbours(x, yi, *hits.surface(x, yi))) {
         between.emplace_back(x, yi);
         values.push_back(*value);
@@ -245,6 +248,7 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
       }
     }
   pixels_between_ = static_cast<int>(between.size());
+  pixel_.reserve_more(between.size());
   for (size_t i = 0; i < between.size(); ++i)
     pixel_.keep(between[i].first, between[i].second, *hits.surface(between[i].first, between[i].second), values[i]);
   pixel_.compute_wanted(hits, one_pixel);
@@ -260,6 +264,12 @@ std::optional<CachedSkyLight> SurfaceCache::between_neighbours(int x, int y, con
     const int nx = x + offsets[i][0], ny = y + offsets[i][1];
     if (nx < 0 || ny < 0 || nx >= pixel_.grid_width() || ny >= pixel_.grid_height()) continue;
     const Grid::Stored* e = pixel_.at(nx, ny);
+    // Only a neighbour within reach (kCornerReach of the distance) stands for the point
+    // and must agree: one beyond it lies much deeper or nearer (a row above or below, seen
+    // at a grazing angle), where the light may differ by its depth alone, which the
+    // bracketing pair at the point's own depth shows. (Holding those to the 1 % as well
+    // found 3,011 of Fig. 7's pixels between neighbours instead of 5,524, and moved no
+    // 99th percentile.)
     if (!e || !same_surface(e->point, point) || !within_reach(e->point, point)) continue;
     sides.stored[i] = e;
     sides.weight[i] = 1;

@@ -9,7 +9,8 @@
 // cell serves only where its blend matched the value computed at its middle (the next
 // level's point there); else the next level is computed. Sky light changes slowly along
 // a surface, so this costs no visible accuracy, makes no noise, and is deterministic:
-// every value is a function of its surface point alone.
+// every value computed is a function of its surface point alone, and every value found
+// between computed ones (the per-pixel level's, between_neighbours) of theirs.
 #pragma once
 
 #include <array>
@@ -71,8 +72,9 @@ class SurfaceCache {
 
   // The value for a surface point seen at image position (x, y) in pixels: interpolated
   // from the coarse grid or else the fine one; else the nearest fine grid point within 8
-  // pixels on the same surface; else interpolated from the pixel centres computed, or
-  // the nearest of them within 2 pixels on the same surface; none if there is none.
+  // pixels on the same surface; else interpolated from the pixel centres' values
+  // (computed, or found between computed ones), or the nearest of them within 2 pixels on
+  // the same surface; none if there is none.
   std::optional<CachedSkyLight> interpolate(double x, double y, const SurfacePoint& point) const;
 
   // Grid points computed, coarse, fine and per pixel (for the benchmark and tests).
@@ -139,6 +141,8 @@ class SurfaceCache {
     // Stores `value` for grid point (gx, gy), whose surface is `point`, found without an
     // integral of its own (a pixel between neighbours that agree).
     void keep(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value);
+    // Room for `n` more points (keep's), so that the store is not copied as it grows.
+    void reserve_more(size_t n) { stored_.reserve(stored_.size() + n); }
     // Computes the wanted points that see a surface, in parallel.
     void compute_wanted(const PrimaryHits& hits, const Compute& compute);
     int computed() const { return static_cast<int>(stored_.size()); }
@@ -175,8 +179,9 @@ class SurfaceCache {
   static int check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, const Compute& compute);
   std::optional<CachedSkyLight> from_grids(double x, double y, const SurfacePoint& point) const;
   // The value at pixel (x, y), on `point`'s surface, from its four neighbours computed at
-  // the per-pixel level: their mean where two of them lie on opposite sides of it on its
-  // surface and all of them on it agree within kCloseSpread; none otherwise.
+  // the per-pixel level: the mean of those on its surface within reach (within_reach)
+  // where two of them lie on opposite sides of it and all of them agree within
+  // kCloseSpread; none otherwise.
   std::optional<CachedSkyLight> between_neighbours(int x, int y, const SurfacePoint& point) const;
 
   Grid coarse_, fine_, pixel_;
