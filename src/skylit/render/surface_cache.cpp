@@ -45,16 +45,35 @@ void SurfaceCache::Grid::cell(double x, double y, int& gx, int& gy, double& tx, 
       y, grid_height_, [this](int g) { return pixel_y(g); }, gy, ty);
 }
 
+void SurfaceCache::Grid::Stored::set(const CachedSkyLight& v) {
+  value = v;
+  diffuse_lx = illuminance(v.diffuse_irradiance);
+  fog_hidden = !v.fog_hidden.gain.is_black();
+}
+
+double SurfaceCache::Grid::Corners::least_other_lx() const {
+  double least = std::numeric_limits<double>::infinity();
+  for (const Stored* e : stored)
+    if (e) least = std::min(least, e->value.other_lx);
+  return least;
+}
+
+bool SurfaceCache::Grid::Corners::agree(double spread) const {
+  std::array<double, 4> lx{};
+  size_t count = 0;
+  for (const Stored* e : stored)
+    if (e) lx[count++] = e->diffuse_lx;
+  return corners_agree(std::span<const double>(lx.data(), count), spread, least_other_lx());
+}
+
 SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double y, const SurfacePoint& point) const {
   int gx, gy;
   double tx, ty;
   cell(x, y, gx, gy, tx, ty);
   Corners out;
-  std::array<double, 4> corner_lx{};
   size_t count = 0;
   bool all_within_reach = true, all_within_obstacle_reach = true;
   double depth_span = 0;
-  double other_lx = std::numeric_limits<double>::infinity();  // the least among the corners
   for (int dy = 0; dy <= 1; ++dy)
     for (int dx = 0; dx <= 1; ++dx) {
       const Stored* e = stored(std::min(gx + dx, grid_width_ - 1), std::min(gy + dy, grid_height_ - 1));
@@ -63,8 +82,7 @@ SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double 
       // Bilinear weights, kept off zero so that a lone compatible corner still counts.
       out.weight[static_cast<size_t>(2 * dy + dx)] =
           std::max(dx ? tx : 1.0 - tx, 1e-3) * std::max(dy ? ty : 1.0 - ty, 1e-3);
-      corner_lx[count++] = e->diffuse_lx;
-      other_lx = std::min(other_lx, e->value.other_lx);
+      ++count;
       all_within_reach = all_within_reach && within_reach(e->point, point);
       all_within_obstacle_reach =
           all_within_obstacle_reach && within_obstacle_reach(e->point, e->value.obstacle_distance_m, point);
@@ -84,13 +102,11 @@ SurfaceCache::Grid::Corners SurfaceCache::Grid::usable_corners(double x, double 
     out.refused = true;
     return out;
   }
-  const std::span<const double> lx(corner_lx.data(), count);
-  const bool near_obstacles = spacing_ > 1 && depth_span > kDepthSpan && !all_within_obstacle_reach &&
-                              !corners_agree(lx, kCloseSpread, other_lx);
+  const bool near_obstacles =
+      spacing_ > 1 && depth_span > kDepthSpan && !all_within_obstacle_reach && !out.agree(kCloseSpread);
   const bool lone_on_a_grid = spacing_ > 1 && count == 1;
   const bool partial_usable = all_within_reach && !lone_on_a_grid;
-  out.refused =
-      count > 0 && (near_obstacles || !(count == 4 || partial_usable) || !corners_agree(lx, kCornerSpread, other_lx));
+  out.refused = count > 0 && (near_obstacles || !(count == 4 || partial_usable) || !out.agree(kCornerSpread));
   out.usable = count > 0 && !out.refused;
   return out;
 }
@@ -155,8 +171,8 @@ const SurfaceCache::Grid::Stored* SurfaceCache::Grid::nearest(double x, double y
 void SurfaceCache::Grid::keep(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value) {
   assert(slots_[index(gx, gy)] < 0);  // a computed value is never replaced
   slots_[index(gx, gy)] = static_cast<int32_t>(stored_.size());
-  stored_.push_back({point, value, illuminance(value.diffuse_irradiance), !value.fog_hidden.gain.is_black(),
-                     pixel_x(gx), pixel_y(gy)});
+  stored_.push_back({point, {}, 0, false, pixel_x(gx), pixel_y(gy)});
+  stored_.back().set(value);
 }
 
 void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute) {
@@ -174,11 +190,8 @@ void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& 
         stored_.push_back({*p, {}, 0, false, pixel_x(gx), pixel_y(gy)});
       }
     }
-  tbb::parallel_for(first_new, stored_.size(), [&](size_t i) {
-    stored_[i].value = compute(stored_[i].point, stored_[i].x, stored_[i].y);
-    stored_[i].diffuse_lx = illuminance(stored_[i].value.diffuse_irradiance);
-    stored_[i].fog_hidden = !stored_[i].value.fog_hidden.gain.is_black();
-  });
+  tbb::parallel_for(first_new, stored_.size(),
+                    [&](size_t i) { stored_[i].set(compute(stored_[i].point, stored_[i].x, stored_[i].y)); });
 }
 
 namespace {
@@ -256,9 +269,6 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
 
 std::optional<CachedSkyLight> SurfaceCache::between_neighbours(int x, int y, const SurfacePoint& point) const {
   Grid::Corners sides;
-  std::array<double, 4> lx{};
-  size_t count = 0;
-  double other_lx = std::numeric_limits<double>::infinity();
   const std::array<std::array<int, 2>, 4> offsets{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}};
   for (size_t i = 0; i < 4; ++i) {
     const int nx = x + offsets[i][0], ny = y + offsets[i][1];
@@ -273,14 +283,11 @@ std::optional<CachedSkyLight> SurfaceCache::between_neighbours(int x, int y, con
     if (!e || !same_surface(e->point, point) || !within_reach(e->point, point)) continue;
     sides.stored[i] = e;
     sides.weight[i] = 1;
-    lx[count++] = e->diffuse_lx;
-    other_lx = std::min(other_lx, e->value.other_lx);
   }
   const bool bracketed = (sides.stored[0] && sides.stored[1]) || (sides.stored[2] && sides.stored[3]);
-  if (!bracketed || !corners_agree(std::span<const double>(lx.data(), count), kCloseSpread, other_lx))
-    return std::nullopt;
+  if (!bracketed || !sides.agree(kCloseSpread)) return std::nullopt;
   CachedSkyLight value = pixel_.blend(sides);
-  value.other_lx = other_lx;
+  value.other_lx = sides.least_other_lx();
   value.obstacle_distance_m = std::numeric_limits<double>::infinity();
   for (const Grid::Stored* e : sides.stored)
     if (e) value.obstacle_distance_m = std::min(value.obstacle_distance_m, e->value.obstacle_distance_m);
@@ -308,19 +315,10 @@ int SurfaceCache::check_cells(Grid& grid, Grid& finer, const PrimaryHits& hits, 
       if (!p) continue;
       const Grid::Corners corners = grid.usable_corners(px + 0.5, py + 0.5, *p);
       if (!corners.usable) continue;  // the finer level is computed there anyway
-      std::array<double, 4> corner_lx{};
-      size_t count = 0;
-      bool smooth = true;  // every corner within kSmoothReach of its obstacles' distance
-      double other_lx = std::numeric_limits<double>::infinity();  // the least among the corners
-      for (const Grid::Stored* s : corners.stored) {
-        if (!s) continue;
-        corner_lx[count++] = s->diffuse_lx;
-        other_lx = std::min(other_lx, s->value.other_lx);
-        smooth = smooth && within_obstacle_reach(s->point, s->value.obstacle_distance_m, *p, kSmoothReach);
-      }
-      if (smooth || (grid.spacing() <= kUncheckedCellPixels &&
-                     corners_agree(std::span<const double>(corner_lx.data(), count), kUncheckedSpread, other_lx)))
-        continue;
+      bool smooth = true;             // every corner within kSmoothReach of its obstacles' distance
+      for (const Grid::Stored* s : corners.stored)
+        smooth = smooth && (!s || within_obstacle_reach(s->point, s->value.obstacle_distance_m, *p, kSmoothReach));
+      if (smooth || (grid.spacing() <= kUncheckedCellPixels && corners.agree(kUncheckedSpread))) continue;
       finer.want(fx, fy);
       checks.push_back({gx, gy, fx, fy, corners});
     }

@@ -97,6 +97,8 @@ class SurfaceCache {
       double diffuse_lx = 0;    // the value's diffuse illuminance, for corners_agree
       bool fog_hidden = false;  // whether value.fog_hidden holds anything (a multiply scattering fog)
       int x = 0, y = 0;         // the pixel
+      // Holds `v`, with the illuminance and fog flag read from it.
+      void set(const CachedSkyLight& v);
     };
     // A cell's corners on a point's surface and their bilinear weights (null where a
     // corner is not on it); `usable` if there are such corners and their sky light
@@ -106,6 +108,12 @@ class SurfaceCache {
       std::array<const Stored*, 4> stored{};
       std::array<double, 4> weight{};
       bool usable = false, refused = false;
+      // The least of the corners' pixels' other light (CachedSkyLight::other_lx);
+      // infinite without corners.
+      double least_other_lx() const;
+      // Whether the corners' sky light agrees within `spread`, against that other light
+      // (corners_agree).
+      bool agree(double spread) const;
     };
 
     Grid(int width, int height, int spacing);
