@@ -246,24 +246,26 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
     for (const int x : not_by_grids[y])
       if ((x + y) % 2 == 0) pixel_.want(x, static_cast<int>(y));
   pixel_.compute_wanted(hits, one_pixel);
-  std::vector<std::pair<int, int>> between;  // (x, y), kept after all are found (keep moves the store)
-  std::vector<CachedSkyLight> values;
+  // A white square's neighbours are black, so a value kept for one never stands in for
+  // another, and it is kept at once (room for all of them first: the store moves as it
+  // grows).
+  size_t white = 0;
+  for (size_t y = 0; y < not_by_grids.size(); ++y)
+    for (const int x : not_by_grids[y]) white += (x + y) % 2;
+  pixel_.reserve_more(white);
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y]) {
       const int yi = static_cast<int>(y);
       // (A white square may hold a fine cell's check already: kept as computed.)
       if ((x + y) % 2 == 0 || pixel_.at(x, yi)) continue;
-      if (auto value = between_neighbours(x, yi, *hits.surface(x, yi))) {
-        between.emplace_back(x, yi);
-        values.push_back(*value);
+      const SurfacePoint& point = *hits.surface(x, yi);
+      if (const std::optional<CachedSkyLight> value = between_neighbours(x, yi, point)) {
+        pixel_.keep(x, yi, point, *value);
+        ++pixels_between_;
       } else {
         pixel_.want(x, yi);
       }
     }
-  pixels_between_ = static_cast<int>(between.size());
-  pixel_.reserve_more(between.size());
-  for (size_t i = 0; i < between.size(); ++i)
-    pixel_.keep(between[i].first, between[i].second, *hits.surface(between[i].first, between[i].second), values[i]);
   pixel_.compute_wanted(hits, one_pixel);
 }
 
