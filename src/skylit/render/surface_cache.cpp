@@ -175,7 +175,8 @@ void SurfaceCache::Grid::keep(int gx, int gy, const SurfacePoint& point, const C
   stored_.back().set(value);
 }
 
-void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute) {
+void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& compute,
+                                        std::initializer_list<const Grid*> coarser) {
   // Slots in scan order, then the values in parallel: deterministic. Room for every
   // wanted point first: growing the store copied it, into new pages each time.
   const size_t first_new = stored_.size();  // points computed before (a cell's checks) keep their values
@@ -190,8 +191,23 @@ void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& 
         stored_.push_back({*p, {}, 0, false, pixel_x(gx), pixel_y(gy)});
       }
     }
-  tbb::parallel_for(first_new, stored_.size(),
-                    [&](size_t i) { stored_[i].set(compute(stored_[i].point, stored_[i].x, stored_[i].y)); });
+  // A point at the pixel of a coarser level's point is that point: its value is copied
+  // (a value is a function of its surface point alone, and a coarser level's has at
+  // least as many directions as this one's).
+  std::vector<uint8_t> copied(stored_.size() - first_new, 0);
+  for (size_t i = first_new; i < stored_.size(); ++i)
+    for (const Grid* grid : coarser)
+      if (const Stored* same = grid->at_pixel(stored_[i].x, stored_[i].y)) {
+        stored_[i].value = same->value;
+        stored_[i].diffuse_lx = same->diffuse_lx;
+        stored_[i].fog_hidden = same->fog_hidden;
+        copied[i - first_new] = 1;
+        ++copied_;
+        break;
+      }
+  tbb::parallel_for(first_new, stored_.size(), [&](size_t i) {
+    if (!copied[i - first_new]) stored_[i].set(compute(stored_[i].point, stored_[i].x, stored_[i].y));
+  });
 }
 
 namespace {
@@ -232,7 +248,7 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
         for (int dx = 0; dx <= 1; ++dx)
           fine_.want(std::min(gx + dx, fine_.grid_width() - 1), std::min(gy + dy, fine_.grid_height() - 1));
     }
-  fine_.compute_wanted(hits, compute);
+  fine_.compute_wanted(hits, compute, {&coarse_});
   // The fine cells checked at their middle pixels, with the full integral: a coarser
   // value there would fail cells by its own quadrature's error.
   cell_checks_ += check_cells(fine_, pixel_, hits, compute);
@@ -245,7 +261,7 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
   for (size_t y = 0; y < not_by_grids.size(); ++y)
     for (const int x : not_by_grids[y])
       if ((x + y) % 2 == 0) pixel_.want(x, static_cast<int>(y));
-  pixel_.compute_wanted(hits, one_pixel);
+  pixel_.compute_wanted(hits, one_pixel, {&fine_, &coarse_});
   // A white square's neighbours are black, so a value kept for one never stands in for
   // another, and it is kept at once (room for all of them first: the store moves as it
   // grows).
@@ -266,7 +282,7 @@ SurfaceCache::SurfaceCache(const PrimaryHits& hits, const Compute& compute, cons
         pixel_.want(x, yi);
       }
     }
-  pixel_.compute_wanted(hits, one_pixel);
+  pixel_.compute_wanted(hits, one_pixel, {&fine_, &coarse_});
 }
 
 std::optional<CachedSkyLight> SurfaceCache::between_neighbours(int x, int y, const SurfacePoint& point) const {

@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -151,9 +152,19 @@ class SurfaceCache {
     void keep(int gx, int gy, const SurfacePoint& point, const CachedSkyLight& value);
     // Room for `n` more points (keep's), so that the store is not copied as it grows.
     void reserve_more(size_t n) { stored_.reserve(stored_.size() + n); }
-    // Computes the wanted points that see a surface, in parallel.
-    void compute_wanted(const PrimaryHits& hits, const Compute& compute);
-    int computed() const { return static_cast<int>(stored_.size()); }
+    // Computes the wanted points that see a surface, in parallel; those at the pixel of a
+    // point of a `coarser` grid take its value.
+    void compute_wanted(const PrimaryHits& hits, const Compute& compute,
+                        std::initializer_list<const Grid*> coarser = {});
+    // Points stored, less those taken from a coarser grid.
+    int computed() const { return static_cast<int>(stored_.size()) - copied_; }
+    // The stored point at pixel (x, y), null if no grid point stands there or none is stored.
+    const Stored* at_pixel(int x, int y) const {
+      // Grid point g stands at pixel min(g·spacing, size − 1).
+      const int gx = std::min(grid_width_ - 1, (x + spacing_ - 1) / spacing_);
+      const int gy = std::min(grid_height_ - 1, (y + spacing_ - 1) / spacing_);
+      return pixel_x(gx) == x && pixel_y(gy) == y ? stored(gx, gy) : nullptr;
+    }
 
    private:
     static constexpr int32_t kNone = -1, kWanted = -2;
@@ -163,6 +174,7 @@ class SurfaceCache {
       return slot >= 0 ? &stored_[static_cast<size_t>(slot)] : nullptr;
     }
     int width_, height_, spacing_, grid_width_, grid_height_;
+    int copied_ = 0;                 // stored points taken from a coarser grid
     HugePageVector<int32_t> slots_;  // per cell: as many as the image's pixels at the pixel level
     std::vector<uint8_t> failed_;    // per cell (by its top-left corner), on the grids only
     HugePageVector<Stored> stored_;  // up to tens of MB (a Stored is about 1.1 KB)
