@@ -30,21 +30,19 @@ class Cloud : public CloudGeometry {
   // the bounding volume if the sun grid is prepared for to_sun, else marched.
   double sun_transmittance(const Vec3& p, const Vec3& to_sun) const;
 
-  // Makes room for t' toward to_sun and the depth away from it (SunLineDepths), whose
+  // Makes room for t' toward to_sun and the depth away from it (SunDepthGrid), whose
   // nodes look-ups march as they need them. Call once per scene / sun direction; not
   // thread-safe against concurrent scatter() calls (look-ups are safe among themselves).
   // A zero or non-finite direction clears the grid.
   void prepare_sun(const Vec3& to_sun) { sun_depths_.prepare(*this, to_sun); }
   void clear_sun() { sun_depths_.clear(); }
   // Whether scatter() with this (unit or not) sun direction will use the grid.
-  bool sun_prepared_for(const Vec3& to_sun) const { return sun_depths_.toward_sun.prepared_for(to_sun); }
+  bool sun_prepared_for(const Vec3& to_sun) const { return sun_depths_.prepared_for(to_sun); }
   // t' at p toward the prepared sun by trilinear interpolation of the grid (p inside the
   // bounding volume or clamped onto it). Only meaningful when a grid is prepared.
-  double interpolated_sun_depth(const Vec3& p) const { return sun_depths_.toward_sun.depth_at(*this, p); }
-  // The sun grids' nodes marched so far, toward and away from the sun (for the tests).
-  int marched_sun_nodes() const {
-    return sun_depths_.toward_sun.marched_nodes() + sun_depths_.away_from_sun.marched_nodes();
-  }
+  double interpolated_sun_depth(const Vec3& p) const { return sun_depths_.depth_at(*this, p); }
+  // The sun grid's depths marched so far, toward and away from the sun (for the tests).
+  int marched_sun_nodes() const { return sun_depths_.marched_nodes(); }
 
   // In-scattered radiance and transmittance of the segment of the viewing ray o + t·d
   // (d unit, from the viewer), t in [t_min, t_max] (Eq. 16 without I_behind;
@@ -58,7 +56,7 @@ class Cloud : public CloudGeometry {
                     const CloudLighting& light) const;
 
  private:
-  SunLineDepths sun_depths_;
+  SunDepthGrid sun_depths_;
 };
 
 }  // namespace skylit

@@ -104,7 +104,7 @@ TwoStreamSources two_stream_sources(const CloudGeometry& cloud, const TwoStreamR
 
 }  // namespace
 
-CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunLineDepths& sun_depths, const Vec3& o,
+CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunDepthGrid& sun_depths, const Vec3& o,
                                       const Vec3& d, double t_min, double t_max, const CloudLighting& light) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   CloudScattering out;
@@ -119,7 +119,7 @@ CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunLineD
   const Spectrum sun_source =
       has_sun ? light.sun * static_cast<float>(shape.albedo * cloud_phase(cos_view_sun)) : Spectrum(0.0f);
   // With no usable sun direction t' is still taken straight up (as before).
-  const bool use_grid = sun_depths.toward_sun.prepared_for(to_sun);
+  const bool use_grid = sun_depths.prepared_for(to_sun);
   const bool two_stream = light.model == CloudLightModel::two_stream;
   // The slab solution is for ω = 1 (every cloud a scene can hold); a darker cloud's
   // multiple scattering is only scaled by ω.
@@ -147,8 +147,12 @@ CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunLineD
     // t' is not needed where the sun lights no cloud (at night, in the earth's shadow)
     // and the two-stream model leaves it out of the sky's light.
     const bool needs_t_sun = has_sun || !two_stream;
+    // The depth away from the sun only for the two-stream light of a sunlit cloud.
+    const bool needs_t_away = two_stream && ray.mu0 > 0;
+    const SunLineDepth from_grid =
+        use_grid && needs_t_sun ? sun_depths.depths_at(cloud, mid, needs_t_away) : SunLineDepth{};
     const double t_sun = !needs_t_sun ? 0.0
-                         : use_grid   ? sun_depths.toward_sun.depth_at(cloud, mid)
+                         : use_grid   ? from_grid.toward_sun
                                       : cloud_optical_depth(cloud, mid, to_sun, 0.0, kInf);
     if (has_sun) sun_weight += weight * std::exp(-t_sun);  // once scattered, Eq. 16
     if (!two_stream) {
@@ -159,9 +163,7 @@ CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunLineD
     scaled_transmittance -= scaled_absorbed;
     const double scaled_weight = many_albedo * scaled_absorbed;
     double t_away = 0;
-    if (ray.mu0 > 0)
-      t_away = use_grid ? sun_depths.away_from_sun.depth_at(cloud, mid)
-                        : cloud_optical_depth(cloud, mid, -to_sun, 0.0, kInf);
+    if (needs_t_away) t_away = use_grid ? from_grid.away_from_sun : cloud_optical_depth(cloud, mid, -to_sun, 0.0, kInf);
     const TwoStreamSources sources = two_stream_sources(cloud, ray, mid, t_sun, t_away);
     many_weight += scaled_weight * sources.sun;
     above_weight += scaled_weight * sources.from_above;

@@ -91,7 +91,7 @@ struct CloudScattering {
 // I_behind). With the sun below the horizon or E_sun black, only the sky's light (or
 // I_a) remains. The depths along the sun's line come from sun_depths if they are
 // prepared for light.to_sun, else are marched.
-CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunLineDepths& sun_depths, const Vec3& o,
+CloudScattering scatter_through_cloud(const CloudGeometry& cloud, const SunDepthGrid& sun_depths, const Vec3& o,
                                       const Vec3& d, double t_min, double t_max, const CloudLighting& light);
 
 }  // namespace skylit

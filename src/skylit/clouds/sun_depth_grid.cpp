@@ -17,19 +17,19 @@ void SunDepthGrid::prepare(const CloudGeometry& cloud, const Vec3& to_sun) {
   const double len = length(to_sun);
   if (cloud.empty() || !(len > 0) || !std::isfinite(len)) return;
   to_sun_ = to_sun / len;
-  depths_.assign(static_cast<std::size_t>(kSunGridU) * kSunGridV * kSunGridZ, kNotMarched);
+  depths_.assign(2 * static_cast<std::size_t>(kSunGridU) * kSunGridV * kSunGridZ, kNotMarched);
 }
 
-double SunDepthGrid::node(const CloudGeometry& cloud, int i, int j, int k) const {
-  std::atomic_ref<float> slot(depths_[(static_cast<std::size_t>(k) * kSunGridV + j) * kSunGridU + i]);
+double SunDepthGrid::node(const CloudGeometry& cloud, int i, int j, int k, int line) const {
+  std::atomic_ref<float> slot(depths_[2 * ((static_cast<std::size_t>(k) * kSunGridV + j) * kSunGridU + i) + line]);
   const float stored = slot.load(std::memory_order_relaxed);
   if (stored != kNotMarched) return stored;
   const CloudShape& shape = cloud.shape();
   const double a = shape.semi_axis_a, b = shape.semi_axis_b, tm = shape.max_thickness;
   const double u = -a + 2 * a * i / (kSunGridU - 1), v = -b + 2 * b * j / (kSunGridV - 1);
   const double z = shape.altitude - 0.5 * tm + tm * k / (kSunGridZ - 1);
-  const auto value = static_cast<float>(
-      cloud_optical_depth(cloud, cloud.world_point(u, v, z), to_sun_, 0.0, std::numeric_limits<double>::infinity()));
+  const auto value = static_cast<float>(cloud_optical_depth(
+      cloud, cloud.world_point(u, v, z), line == 0 ? to_sun_ : -to_sun_, 0.0, std::numeric_limits<double>::infinity()));
   slot.store(value, std::memory_order_relaxed);
   return value;
 }
@@ -48,8 +48,8 @@ int SunDepthGrid::marched_nodes() const {
   }));
 }
 
-double SunDepthGrid::depth_at(const CloudGeometry& cloud, const Vec3& p) const {
-  if (depths_.empty()) return 0.0;
+SunLineDepth SunDepthGrid::depths_at(const CloudGeometry& cloud, const Vec3& p, bool away) const {
+  if (depths_.empty()) return {};
   const CloudShape& shape = cloud.shape();
   const double dx = p.x - shape.center_x, dy = p.y - shape.center_y;
   const double u = cloud.along_u(dx, dy), v = cloud.along_v(dx, dy);
@@ -64,26 +64,28 @@ double SunDepthGrid::depth_at(const CloudGeometry& cloud, const Vec3& p) const {
   cell((u + a) / (2 * a) * (kSunGridU - 1), kSunGridU, i, fu);
   cell((v + b) / (2 * b) * (kSunGridV - 1), kSunGridV, j, fv);
   cell((p.z - shape.altitude + 0.5 * tm) / tm * (kSunGridZ - 1), kSunGridZ, k, fz);
+  const int lines = away ? 2 : 1;
   // The cell's eight nodes, read as they are; those not yet marched (rare once a cloud
   // has been looked at) are marched here.
-  std::array<double, 8> corner{};
-  bool all_marched = true;
+  std::array<std::array<double, 8>, 2> corner{};
   for (int c = 0; c < 8; ++c) {
-    const std::size_t index =
-        (static_cast<std::size_t>(k + (c >> 2)) * kSunGridV + (j + ((c >> 1) & 1))) * kSunGridU + (i + (c & 1));
-    corner[c] = std::atomic_ref<float>(depths_[index]).load(std::memory_order_relaxed);
-    all_marched = all_marched && corner[c] != kNotMarched;
+    const int ci = i + (c & 1), cj = j + ((c >> 1) & 1), ck = k + (c >> 2);
+    const std::size_t index = 2 * ((static_cast<std::size_t>(ck) * kSunGridV + cj) * kSunGridU + ci);
+    for (int line = 0; line < lines; ++line) {
+      const float stored = std::atomic_ref<float>(depths_[index + line]).load(std::memory_order_relaxed);
+      corner[line][c] = stored != kNotMarched ? stored : node(cloud, ci, cj, ck, line);
+    }
   }
-  if (!all_marched)
-    for (int c = 0; c < 8; ++c)
-      if (corner[c] == kNotMarched) corner[c] = node(cloud, i + (c & 1), j + ((c >> 1) & 1), k + (c >> 2));
-  auto plane = [&](int z) {
-    const double c0 = corner[4 * z] + fu * (corner[4 * z + 1] - corner[4 * z]);
-    const double c1 = corner[4 * z + 2] + fu * (corner[4 * z + 3] - corner[4 * z + 2]);
-    return c0 + fv * (c1 - c0);
+  auto interpolate = [&](const std::array<double, 8>& at) {
+    auto plane = [&](int z) {
+      const double c0 = at[4 * z] + fu * (at[4 * z + 1] - at[4 * z]);
+      const double c1 = at[4 * z + 2] + fu * (at[4 * z + 3] - at[4 * z + 2]);
+      return c0 + fv * (c1 - c0);
+    };
+    const double p0 = plane(0), p1 = plane(1);
+    return std::max(0.0, p0 + fz * (p1 - p0));
   };
-  const double p0 = plane(0), p1 = plane(1);
-  return std::max(0.0, p0 + fz * (p1 - p0));
+  return {interpolate(corner[0]), away ? interpolate(corner[1]) : 0.0};
 }
 
 }  // namespace skylit
