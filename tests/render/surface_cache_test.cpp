@@ -79,29 +79,39 @@ TEST(SurfaceCache, PixelsOfSurfacesSmallerThanTheGridsGetTheirCentresValue) {
   EXPECT_FALSE(cache.interpolate(10.5, 10.5, elsewhere));
 }
 
-TEST(SurfaceCache, NoPixelIsComputedTwice) {
+TEST(SurfaceCache, NoPixelIsComputedTwiceByTheSameIntegral) {
   // Tiles of about one pixel: the fine grid and the pixel centres are wanted nearly
   // everywhere, at the coarse and fine points' pixels too, which take those points'
   // values instead of their own (until 2026-12-08 they computed them again: 1 in 16 of
-  // the fine points, 1 in 16 of the pixel centres' at most).
+  // the fine points) where the level computes them the same way.
   const PrimaryHits hits = hits_of_tiled_plane(1.9, 64);
-  std::vector<std::atomic<int>> per_pixel(kWidth * kHeight);
-  std::atomic<int> one_pixel{0};
-  auto count = [&](const SurfacePoint& p, int x, int y) {
-    ++per_pixel[static_cast<size_t>(y * kWidth + x)];
-    return value_at(p);
+  std::vector<std::atomic<int>> full(kWidth * kHeight), one_pixel(kWidth * kHeight);
+  auto counted = [&](std::vector<std::atomic<int>>& count) {
+    return [&](const SurfacePoint& p, int x, int y) {
+      ++count[static_cast<size_t>(y * kWidth + x)];
+      return value_at(p);
+    };
   };
-  const SurfaceCache cache(hits, count, [&](const SurfacePoint& p, int x, int y) {
-    ++one_pixel;
-    return count(p, x, y);
-  });
-  int computed = 0;
-  for (const std::atomic<int>& n : per_pixel) {
-    EXPECT_LE(n.load(), 1);
-    computed += n.load();
-  }
-  EXPECT_EQ(computed, cache.coarse_points() + cache.fine_points() + cache.pixel_points());
-  EXPECT_GT(one_pixel.load(), 0);
+  auto total = [](const std::vector<std::atomic<int>>& count) {
+    int sum = 0;
+    for (const std::atomic<int>& n : count) {
+      EXPECT_LE(n.load(), 1);
+      sum += n.load();
+    }
+    return sum;
+  };
+  // One integral for every level: no pixel twice.
+  const SurfaceCache one_integral(hits, counted(full));
+  EXPECT_EQ(total(full), one_integral.coarse_points() + one_integral.fine_points() + one_integral.pixel_points());
+  // A coarser one for the pixel centres: each integral at most once at a pixel, and the
+  // pixel centres at the grids' points computed with theirs (a value of more directions
+  // would stand out among its neighbours).
+  for (std::atomic<int>& n : full) n = 0;
+  const SurfaceCache two_integrals(hits, counted(full), counted(one_pixel));
+  const int computed_full = total(full), computed_one_pixel = total(one_pixel);
+  EXPECT_EQ(computed_full + computed_one_pixel,
+            two_integrals.coarse_points() + two_integrals.fine_points() + two_integrals.pixel_points());
+  EXPECT_GT(one_pixel[0].load(), 0);  // the coarse point at (0, 0) is on a tile of its own
 }
 
 TEST(SurfaceCache, OneLargeSurfaceNeedsNoPerPixelPoints) {

@@ -16,9 +16,9 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <initializer_list>
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "skylit/core/huge_pages.h"
@@ -153,9 +153,8 @@ class SurfaceCache {
     // Room for `n` more points (keep's), so that the store is not copied as it grows.
     void reserve_more(size_t n) { stored_.reserve(stored_.size() + n); }
     // Computes the wanted points that see a surface, in parallel; those at the pixel of a
-    // point of a `coarser` grid take its value.
-    void compute_wanted(const PrimaryHits& hits, const Compute& compute,
-                        std::initializer_list<const Grid*> coarser = {});
+    // point of a `coarser` grid computed by the same `compute` take its value.
+    void compute_wanted(const PrimaryHits& hits, const Compute& compute, std::span<const Grid* const> coarser = {});
     // Points stored, less those taken from a coarser grid.
     int computed() const { return static_cast<int>(stored_.size()) - copied_; }
     // The stored point at pixel (x, y), null if no grid point stands there or none is stored.
