@@ -191,22 +191,18 @@ void SurfaceCache::Grid::compute_wanted(const PrimaryHits& hits, const Compute& 
         stored_.push_back({*p, {}, 0, false, pixel_x(gx), pixel_y(gy)});
       }
     }
-  // A point at the pixel of a coarser level's point is that point: its value is copied
-  // (a value is a function of its surface point alone, and a coarser level's has at
-  // least as many directions as this one's).
-  std::vector<uint8_t> copied(stored_.size() - first_new, 0);
+  // A point at the pixel of a coarser grid's point is that point, and the same integral
+  // (the caller's `coarser` are computed by `compute` too) gives it the same value.
+  std::vector<const Stored*> same(stored_.size() - first_new, nullptr);
   for (size_t i = first_new; i < stored_.size(); ++i)
     for (const Grid* grid : coarser)
-      if (const Stored* same = grid->at_pixel(stored_[i].x, stored_[i].y)) {
-        stored_[i].value = same->value;
-        stored_[i].diffuse_lx = same->diffuse_lx;
-        stored_[i].fog_hidden = same->fog_hidden;
-        copied[i - first_new] = 1;
+      if ((same[i - first_new] = grid->at_pixel(stored_[i].x, stored_[i].y))) {
         ++copied_;
         break;
       }
   tbb::parallel_for(first_new, stored_.size(), [&](size_t i) {
-    if (!copied[i - first_new]) stored_[i].set(compute(stored_[i].point, stored_[i].x, stored_[i].y));
+    const Stored* from = same[i - first_new];
+    stored_[i].set(from ? from->value : compute(stored_[i].point, stored_[i].x, stored_[i].y));
   });
 }
 
